@@ -1,0 +1,724 @@
+!> Fortran 2008 bindings of mortarcontact (include/mortarcontact.h) on iso_c_binding.
+!>
+!> Every C function has a wrapper of the same name taking a type(mc_model) instead of the
+!> C pointer. Differences from the C API, all in the caller's favour:
+!>  - ids are 1-based: mc_create sets the model's index base to 1 (mc_set_index_base can
+!>    change it back; the wrappers pass ids through unchanged);
+!>  - arrays are assumed-shape, one column per node/cell/edge: xy(2, n_nodes),
+!>    cells(nodes_per_cell, n_cells), edges(2, n_edges), d(3, 3, n_cells), u(2, n_nodes),
+!>    sigma(4, n_cells); the counts come from the shapes, and each shape is checked before
+!>    the C call: a wrong one returns MC_ERROR_ARGUMENT (MC_ERROR_STATE when the body has
+!>    no mesh yet) with a message, and the C library is not called;
+!>  - functions return the status as a default integer (MC_OK = 0); mc_errmsg(model)
+!>    returns the message of the last failed call as a Fortran string ('' after a success);
+!>  - strings (mc_errmsg, mc_status_string, mc_version_string) are Fortran strings;
+!>  - mc_set_option_int and mc_get_info_int accept default (32-bit) or 64-bit integers.
+!> The header's MC_VERSION_NUMBER / MC_VERSION_STRING are MC_HEADER_VERSION_NUMBER /
+!> MC_HEADER_VERSION_STRING here (Fortran names are case-insensitive, and mc_version_number
+!> / mc_version_string are the functions).
+!>
+!> Free a model with mc_destroy (there is no finalizer: a type(mc_model) may be copied).
+!>
+!> Build: gfortran -c mortarcontact.f90, then link the program with -lmortarcontact.
+module mortarcontact
+  use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_associated, c_f_pointer, c_char, &
+       c_int, c_int32_t, c_int64_t, c_double, c_size_t
+  implicit none
+  private
+
+  integer, parameter, public :: mc_int = c_int32_t   !< kind of node, cell and edge ids
+  integer, parameter, public :: mc_int64 = c_int64_t !< kind of 64-bit option values and infos
+  integer, parameter, public :: mc_real = c_double   !< kind of every real
+
+  ! ---- constants of mortarcontact.h (values frozen by the ABI, see docs/abi.md) ----------
+  integer, parameter, public :: MC_VERSION_MAJOR = 0, MC_VERSION_MINOR = 1, MC_VERSION_PATCH = 0
+  integer, parameter, public :: MC_HEADER_VERSION_NUMBER = &
+       MC_VERSION_MAJOR * 10000 + MC_VERSION_MINOR * 100 + MC_VERSION_PATCH
+  character(len=*), parameter, public :: MC_HEADER_VERSION_STRING = "0.1.0"
+
+  integer, parameter, public :: MC_OK = 0, MC_ERROR_ARGUMENT = 1, MC_ERROR_MESH = 2, &
+       MC_ERROR_MATERIAL = 3, MC_ERROR_STATE = 4, MC_ERROR_CONTACT = 5, MC_ERROR_SINGULAR = 6, &
+       MC_ERROR_NOT_CONVERGED = 7, MC_ERROR_MEMORY = 8, MC_ERROR_INTERNAL = 9
+  integer, parameter, public :: MC_PLANE_STRAIN = 0, MC_PLANE_STRESS = 1
+  integer, parameter, public :: MC_X = 1, MC_Y = 2, MC_XY = 3
+  integer, parameter, public :: MC_OPTION_METHOD = 1, MC_OPTION_TOLERANCE = 2, &
+       MC_OPTION_MAX_ITERATIONS = 3, MC_OPTION_ORDERING = 4, MC_OPTION_THREADS = 5, &
+       MC_OPTION_Q1_INTEGRATION = 6
+  integer, parameter, public :: MC_METHOD_MORTAR = 0, MC_METHOD_DUAL_MORTAR = 1, &
+       MC_METHOD_NODE_TO_SEGMENT = 2
+  integer, parameter, public :: MC_ORDERING_AUTO = 0, MC_ORDERING_AMD = 1, MC_ORDERING_METIS = 2
+  integer, parameter, public :: MC_Q1_FULL = 0, MC_Q1_BBAR = 1
+  integer, parameter, public :: MC_INFO_DOFS = 1, MC_INFO_FACTOR_NNZ = 2, MC_INFO_ITERATIONS = 3, &
+       MC_INFO_ACTIVE_NODES = 4, MC_INFO_CONTACT_NODES = 5, MC_INFO_FACTORIZATIONS = 6, &
+       MC_INFO_TIME_ASSEMBLY = 20, MC_INFO_TIME_ANALYSIS = 21, MC_INFO_TIME_FACTORIZATION = 22, &
+       MC_INFO_TIME_SOLVE = 23, MC_INFO_TIME_CONTACT = 24, MC_INFO_TIME_TOTAL = 25, &
+       MC_INFO_STRAIN_ENERGY = 26, MC_INFO_COMPLEMENTARITY = 27, MC_INFO_EQUILIBRIUM = 28
+
+  !> One scene (mc_model). Create with mc_create, free with mc_destroy.
+  type, public :: mc_model
+     private
+     type(c_ptr) :: ptr = c_null_ptr
+     integer(mc_int) :: n_nodes(2) = -1   ! mesh sizes, known from successful mc_set_mesh calls
+     integer(mc_int) :: n_cells(2) = -1
+     character(len=:), allocatable :: msg ! message of the last failed call
+  end type mc_model
+
+  public :: mc_create, mc_destroy, mc_errmsg, mc_status_string, mc_version_string, mc_version_number
+  public :: mc_set_index_base, mc_set_plane, mc_set_mesh, mc_set_material, mc_set_cell_elasticity
+  public :: mc_fix, mc_add_traction, mc_add_pressure, mc_add_nodal_force, mc_set_body_force
+  public :: mc_clear_loads, mc_set_contact, mc_set_option_int, mc_set_option_real, mc_solve
+  public :: mc_get_info_int, mc_get_info_real, mc_get_displacement, mc_get_stress, mc_get_reaction
+  public :: mc_get_contact_count, mc_get_contact_nodes, mc_get_contact_pressure
+  public :: mc_get_contact_force, mc_get_contact_gap, mc_get_contact_initial_gap
+  public :: mc_get_contact_normal
+
+  !> Sets an integer option; value may be a default or a 64-bit integer.
+  interface mc_set_option_int
+     module procedure set_option_int32, set_option_int64
+  end interface mc_set_option_int
+  !> Gets an integer info; value may be a default or a 64-bit integer.
+  interface mc_get_info_int
+     module procedure get_info_int32, get_info_int64
+  end interface mc_get_info_int
+
+  ! ---- the C API, one interface per function of mortarcontact.h ----------------------------
+  interface
+     integer(c_int) function c_mc_create(model) bind(C, name="mc_create")
+       import :: c_ptr, c_int
+       type(c_ptr), intent(out) :: model
+     end function
+     subroutine c_mc_destroy(model) bind(C, name="mc_destroy")
+       import :: c_ptr
+       type(c_ptr), value :: model
+     end subroutine
+     type(c_ptr) function c_mc_errmsg(model) bind(C, name="mc_errmsg")
+       import :: c_ptr
+       type(c_ptr), value :: model
+     end function
+     type(c_ptr) function c_mc_status_string(status) bind(C, name="mc_status_string")
+       import :: c_ptr, c_int
+       integer(c_int), value :: status
+     end function
+     type(c_ptr) function c_mc_version_string() bind(C, name="mc_version_string")
+       import :: c_ptr
+     end function
+     integer(c_int) function c_mc_version_number() bind(C, name="mc_version_number")
+       import :: c_int
+     end function
+     integer(c_int) function c_mc_set_index_base(m, base) bind(C, name="mc_set_index_base")
+       import :: c_ptr, c_int
+       type(c_ptr), value :: m
+       integer(c_int), value :: base
+     end function
+     integer(c_int) function c_mc_set_plane(m, plane, thickness) bind(C, name="mc_set_plane")
+       import :: c_ptr, c_int, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: plane
+       real(c_double), value :: thickness
+     end function
+     integer(c_int) function c_mc_set_mesh(m, body, n_nodes, xy, n_cells, nodes_per_cell, cells) &
+          bind(C, name="mc_set_mesh")
+       import :: c_ptr, c_int, c_int32_t, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: body, nodes_per_cell
+       integer(c_int32_t), value :: n_nodes, n_cells
+       real(c_double), intent(in) :: xy(*)
+       integer(c_int32_t), intent(in) :: cells(*)
+     end function
+     integer(c_int) function c_mc_set_material(m, body, young, poisson) bind(C, name="mc_set_material")
+       import :: c_ptr, c_int, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: body
+       real(c_double), value :: young, poisson
+     end function
+     integer(c_int) function c_mc_set_cell_elasticity(m, body, d) bind(C, name="mc_set_cell_elasticity")
+       import :: c_ptr, c_int, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: body
+       real(c_double), intent(in) :: d(*)
+     end function
+     integer(c_int) function c_mc_fix(m, body, n, nodes, components, values) bind(C, name="mc_fix")
+       import :: c_ptr, c_int, c_int32_t, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: body, components
+       integer(c_int32_t), value :: n
+       integer(c_int32_t), intent(in) :: nodes(*)
+       real(c_double), intent(in), optional :: values(*)  ! absent = NULL = zero
+     end function
+     integer(c_int) function c_mc_add_traction(m, body, n_edges, edges, traction) &
+          bind(C, name="mc_add_traction")
+       import :: c_ptr, c_int, c_int32_t, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: body
+       integer(c_int32_t), value :: n_edges
+       integer(c_int32_t), intent(in) :: edges(*)
+       real(c_double), intent(in) :: traction(*)
+     end function
+     integer(c_int) function c_mc_add_pressure(m, body, n_edges, edges, pressure) &
+          bind(C, name="mc_add_pressure")
+       import :: c_ptr, c_int, c_int32_t, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: body
+       integer(c_int32_t), value :: n_edges
+       integer(c_int32_t), intent(in) :: edges(*)
+       real(c_double), intent(in) :: pressure(*)
+     end function
+     integer(c_int) function c_mc_add_nodal_force(m, body, n, nodes, force) &
+          bind(C, name="mc_add_nodal_force")
+       import :: c_ptr, c_int, c_int32_t, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: body
+       integer(c_int32_t), value :: n
+       integer(c_int32_t), intent(in) :: nodes(*)
+       real(c_double), intent(in) :: force(*)
+     end function
+     integer(c_int) function c_mc_set_body_force(m, body, fx, fy) bind(C, name="mc_set_body_force")
+       import :: c_ptr, c_int, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: body
+       real(c_double), value :: fx, fy
+     end function
+     integer(c_int) function c_mc_clear_loads(m, body) bind(C, name="mc_clear_loads")
+       import :: c_ptr, c_int
+       type(c_ptr), value :: m
+       integer(c_int), value :: body
+     end function
+     integer(c_int) function c_mc_set_contact(m, body, n_edges, edges) bind(C, name="mc_set_contact")
+       import :: c_ptr, c_int, c_int32_t
+       type(c_ptr), value :: m
+       integer(c_int), value :: body
+       integer(c_int32_t), value :: n_edges
+       integer(c_int32_t), intent(in) :: edges(*)
+     end function
+     integer(c_int) function c_mc_set_option_int(m, option, value) bind(C, name="mc_set_option_int")
+       import :: c_ptr, c_int, c_int64_t
+       type(c_ptr), value :: m
+       integer(c_int), value :: option
+       integer(c_int64_t), value :: value
+     end function
+     integer(c_int) function c_mc_set_option_real(m, option, value) bind(C, name="mc_set_option_real")
+       import :: c_ptr, c_int, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: option
+       real(c_double), value :: value
+     end function
+     integer(c_int) function c_mc_solve(m) bind(C, name="mc_solve")
+       import :: c_ptr, c_int
+       type(c_ptr), value :: m
+     end function
+     integer(c_int) function c_mc_get_info_int(m, info, value) bind(C, name="mc_get_info_int")
+       import :: c_ptr, c_int, c_int64_t
+       type(c_ptr), value :: m
+       integer(c_int), value :: info
+       integer(c_int64_t), intent(out) :: value
+     end function
+     integer(c_int) function c_mc_get_info_real(m, info, value) bind(C, name="mc_get_info_real")
+       import :: c_ptr, c_int, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: info
+       real(c_double), intent(out) :: value
+     end function
+     integer(c_int) function c_mc_get_displacement(m, body, u) bind(C, name="mc_get_displacement")
+       import :: c_ptr, c_int, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: body
+       real(c_double), intent(out) :: u(*)
+     end function
+     integer(c_int) function c_mc_get_stress(m, body, sigma) bind(C, name="mc_get_stress")
+       import :: c_ptr, c_int, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: body
+       real(c_double), intent(out) :: sigma(*)
+     end function
+     integer(c_int) function c_mc_get_reaction(m, body, r) bind(C, name="mc_get_reaction")
+       import :: c_ptr, c_int, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: body
+       real(c_double), intent(out) :: r(*)
+     end function
+     integer(c_int) function c_mc_get_contact_count(m, n) bind(C, name="mc_get_contact_count")
+       import :: c_ptr, c_int, c_int32_t
+       type(c_ptr), value :: m
+       integer(c_int32_t), intent(out) :: n
+     end function
+     integer(c_int) function c_mc_get_contact_nodes(m, nodes) bind(C, name="mc_get_contact_nodes")
+       import :: c_ptr, c_int, c_int32_t
+       type(c_ptr), value :: m
+       integer(c_int32_t), intent(out) :: nodes(*)
+     end function
+     integer(c_int) function c_mc_get_contact_pressure(m, p) bind(C, name="mc_get_contact_pressure")
+       import :: c_ptr, c_int, c_double
+       type(c_ptr), value :: m
+       real(c_double), intent(out) :: p(*)
+     end function
+     integer(c_int) function c_mc_get_contact_force(m, f) bind(C, name="mc_get_contact_force")
+       import :: c_ptr, c_int, c_double
+       type(c_ptr), value :: m
+       real(c_double), intent(out) :: f(*)
+     end function
+     integer(c_int) function c_mc_get_contact_gap(m, g) bind(C, name="mc_get_contact_gap")
+       import :: c_ptr, c_int, c_double
+       type(c_ptr), value :: m
+       real(c_double), intent(out) :: g(*)
+     end function
+     integer(c_int) function c_mc_get_contact_initial_gap(m, g0) bind(C, name="mc_get_contact_initial_gap")
+       import :: c_ptr, c_int, c_double
+       type(c_ptr), value :: m
+       real(c_double), intent(out) :: g0(*)
+     end function
+     integer(c_int) function c_mc_get_contact_normal(m, n) bind(C, name="mc_get_contact_normal")
+       import :: c_ptr, c_int, c_double
+       type(c_ptr), value :: m
+       real(c_double), intent(out) :: n(*)
+     end function
+     integer(c_size_t) function c_strlen(s) bind(C, name="strlen")
+       import :: c_ptr, c_size_t
+       type(c_ptr), value :: s
+     end function
+  end interface
+
+contains
+
+  ! ---- helpers ---------------------------------------------------------------------------
+
+  !> A NUL-terminated C string as a Fortran string ('' for NULL).
+  function c_string(p) result(s)
+    type(c_ptr), intent(in) :: p
+    character(len=:), allocatable :: s
+    character(kind=c_char), pointer :: chars(:)
+    integer :: i, n
+    if (.not. c_associated(p)) then
+       s = ''
+       return
+    end if
+    n = int(c_strlen(p))
+    call c_f_pointer(p, chars, [n])
+    allocate(character(len=n) :: s)
+    do i = 1, n
+       s(i:i) = chars(i)
+    end do
+  end function c_string
+
+  !> Records the outcome of a C call on the model and returns its status.
+  integer function finish(model, status)
+    type(mc_model), intent(inout) :: model
+    integer(c_int), intent(in) :: status
+    if (status == MC_OK) then
+       model%msg = ''
+    else
+       model%msg = c_string(c_mc_errmsg(model%ptr))
+    end if
+    finish = int(status)
+  end function finish
+
+  !> A failure detected by the wrapper: the C library is not called.
+  integer function fail(model, status, message)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: status
+    character(len=*), intent(in) :: message
+    model%msg = message
+    fail = status
+  end function fail
+
+  !> '(a, b)' or '(a)' for messages.
+  function shape_str(s) result(r)
+    integer, intent(in) :: s(:)
+    character(len=:), allocatable :: r
+    character(len=24) :: buf
+    integer :: i
+    r = '('
+    do i = 1, size(s)
+       write (buf, '(i0)') s(i)
+       r = r // trim(buf)
+       if (i < size(s)) r = r // ', '
+    end do
+    r = r // ')'
+  end function shape_str
+
+  !> Checks that an array's shape is `want`; else sets the message and returns .false.
+  logical function shape_ok(model, what, got, want, names, status)
+    type(mc_model), intent(inout) :: model
+    character(len=*), intent(in) :: what, names
+    integer, intent(in) :: got(:), want(:)
+    integer, intent(out) :: status
+    shape_ok = all(got == want)
+    status = MC_OK
+    if (.not. shape_ok) status = fail(model, MC_ERROR_ARGUMENT, what // ' must have shape ' // names // &
+         ' = ' // shape_str(want) // ', got ' // shape_str(got))
+  end function shape_ok
+
+  !> Checks that `body` is 1 or 2 and has a mesh known to the wrapper.
+  logical function body_ok(model, what, body, status)
+    type(mc_model), intent(inout) :: model
+    character(len=*), intent(in) :: what
+    integer, intent(in) :: body
+    integer, intent(out) :: status
+    character(len=16) :: buf
+    body_ok = .false.
+    if (body /= 1 .and. body /= 2) then
+       write (buf, '(i0)') body
+       status = fail(model, MC_ERROR_ARGUMENT, what // ': body must be 1 or 2, got ' // trim(buf))
+    else if (model%n_nodes(body) < 0) then
+       write (buf, '(i0)') body
+       status = fail(model, MC_ERROR_STATE, what // ': no mesh set for body ' // trim(buf))
+    else
+       body_ok = .true.
+       status = MC_OK
+    end if
+  end function body_ok
+
+  ! ---- lifecycle, errors, version ----------------------------------------------------------
+
+  !> Creates an empty model with 1-based ids.
+  integer function mc_create(model) result(status)
+    type(mc_model), intent(inout) :: model
+    model%n_nodes = -1
+    model%n_cells = -1
+    status = c_mc_create(model%ptr)
+    if (status /= MC_OK) then
+       model%msg = 'mc_create failed: ' // c_string(c_mc_status_string(int(status, c_int)))
+       return
+    end if
+    status = finish(model, c_mc_set_index_base(model%ptr, 1_c_int))
+  end function mc_create
+
+  !> Frees the model (a model never created is fine).
+  subroutine mc_destroy(model)
+    type(mc_model), intent(inout) :: model
+    call c_mc_destroy(model%ptr)
+    model%ptr = c_null_ptr
+    model%n_nodes = -1
+    model%n_cells = -1
+  end subroutine mc_destroy
+
+  !> The message of the last failed call on this model ('' if it succeeded).
+  function mc_errmsg(model) result(msg)
+    type(mc_model), intent(in) :: model
+    character(len=:), allocatable :: msg
+    if (allocated(model%msg)) then
+       msg = model%msg
+    else
+       msg = ''
+    end if
+  end function mc_errmsg
+
+  !> The English name of a status code ("MC_OK", ...).
+  function mc_status_string(status) result(s)
+    integer, intent(in) :: status
+    character(len=:), allocatable :: s
+    s = c_string(c_mc_status_string(int(status, c_int)))
+  end function mc_status_string
+
+  !> The library's version, "MAJOR.MINOR.PATCH".
+  function mc_version_string() result(s)
+    character(len=:), allocatable :: s
+    s = c_string(c_mc_version_string())
+  end function mc_version_string
+
+  !> The library's version as MAJOR*10000+MINOR*100+PATCH.
+  integer function mc_version_number()
+    mc_version_number = int(c_mc_version_number())
+  end function mc_version_number
+
+  ! ---- the scene -------------------------------------------------------------------------
+
+  !> 0 or 1: the base of all ids (the wrapper's mc_create sets 1).
+  integer function mc_set_index_base(model, base) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: base
+    status = finish(model, c_mc_set_index_base(model%ptr, int(base, c_int)))
+  end function mc_set_index_base
+
+  !> MC_PLANE_STRAIN or MC_PLANE_STRESS, and the thickness.
+  integer function mc_set_plane(model, plane, thickness) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: plane
+    real(mc_real), intent(in) :: thickness
+    status = finish(model, c_mc_set_plane(model%ptr, int(plane, c_int), thickness))
+  end function mc_set_plane
+
+  !> The mesh of a body: xy(2, n_nodes), cells(3 or 4, n_cells), counter-clockwise.
+  integer function mc_set_mesh(model, body, xy, cells) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    real(mc_real), intent(in) :: xy(:, :)
+    integer(mc_int), intent(in) :: cells(:, :)
+    if (.not. shape_ok(model, 'mc_set_mesh: xy', shape(xy), [2, size(xy, 2)], '(2, n_nodes)', status)) return
+    status = finish(model, c_mc_set_mesh(model%ptr, int(body, c_int), int(size(xy, 2), mc_int), xy, &
+         int(size(cells, 2), mc_int), int(size(cells, 1), c_int), cells))
+    if (status == MC_OK .and. (body == 1 .or. body == 2)) then
+       model%n_nodes(body) = size(xy, 2)
+       model%n_cells(body) = size(cells, 2)
+    end if
+  end function mc_set_mesh
+
+  !> Isotropic material of the whole body.
+  integer function mc_set_material(model, body, young, poisson) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    real(mc_real), intent(in) :: young, poisson
+    status = finish(model, c_mc_set_material(model%ptr, int(body, c_int), young, poisson))
+  end function mc_set_material
+
+  !> Per-cell elasticity: d(3, 3, n_cells), symmetric positive definite (Voigt xx, yy, xy).
+  integer function mc_set_cell_elasticity(model, body, d) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    real(mc_real), intent(in) :: d(:, :, :)
+    if (.not. body_ok(model, 'mc_set_cell_elasticity', body, status)) return
+    if (.not. shape_ok(model, 'mc_set_cell_elasticity: d', shape(d), [3, 3, model%n_cells(body)], &
+         '(3, 3, n_cells)', status)) return
+    ! d is symmetric, so its column-major layout is the row-major one the C API reads.
+    status = finish(model, c_mc_set_cell_elasticity(model%ptr, int(body, c_int), d))
+  end function mc_set_cell_elasticity
+
+  !> Prescribes the components (MC_X, MC_Y, MC_XY) of nodes(n); values(2, n), absent = zero.
+  integer function mc_fix(model, body, nodes, components, values) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body, components
+    integer(mc_int), intent(in) :: nodes(:)
+    real(mc_real), intent(in), optional :: values(:, :)
+    if (present(values)) then
+       if (.not. shape_ok(model, 'mc_fix: values', shape(values), [2, size(nodes)], '(2, size(nodes))', &
+            status)) return
+       status = finish(model, c_mc_fix(model%ptr, int(body, c_int), int(size(nodes), mc_int), nodes, &
+            int(components, c_int), values))
+    else
+       status = finish(model, c_mc_fix(model%ptr, int(body, c_int), int(size(nodes), mc_int), nodes, &
+            int(components, c_int)))
+    end if
+  end function mc_fix
+
+  !> Adds a uniform traction(2, n_edges) on boundary edges(2, n_edges).
+  integer function mc_add_traction(model, body, edges, traction) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    integer(mc_int), intent(in) :: edges(:, :)
+    real(mc_real), intent(in) :: traction(:, :)
+    if (.not. shape_ok(model, 'mc_add_traction: edges', shape(edges), [2, size(edges, 2)], '(2, n_edges)', &
+         status)) return
+    if (.not. shape_ok(model, 'mc_add_traction: traction', shape(traction), [2, size(edges, 2)], &
+         '(2, n_edges)', status)) return
+    status = finish(model, c_mc_add_traction(model%ptr, int(body, c_int), int(size(edges, 2), mc_int), &
+         edges, traction))
+  end function mc_add_traction
+
+  !> Adds a normal pressure(n_edges) (> 0 pushes in) on boundary edges(2, n_edges).
+  integer function mc_add_pressure(model, body, edges, pressure) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    integer(mc_int), intent(in) :: edges(:, :)
+    real(mc_real), intent(in) :: pressure(:)
+    if (.not. shape_ok(model, 'mc_add_pressure: edges', shape(edges), [2, size(edges, 2)], '(2, n_edges)', &
+         status)) return
+    if (.not. shape_ok(model, 'mc_add_pressure: pressure', shape(pressure), [size(edges, 2)], '(n_edges)', &
+         status)) return
+    status = finish(model, c_mc_add_pressure(model%ptr, int(body, c_int), int(size(edges, 2), mc_int), &
+         edges, pressure))
+  end function mc_add_pressure
+
+  !> Adds point forces force(2, n) at nodes(n).
+  integer function mc_add_nodal_force(model, body, nodes, force) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    integer(mc_int), intent(in) :: nodes(:)
+    real(mc_real), intent(in) :: force(:, :)
+    if (.not. shape_ok(model, 'mc_add_nodal_force: force', shape(force), [2, size(nodes)], &
+         '(2, size(nodes))', status)) return
+    status = finish(model, c_mc_add_nodal_force(model%ptr, int(body, c_int), int(size(nodes), mc_int), &
+         nodes, force))
+  end function mc_add_nodal_force
+
+  !> Sets (replaces) a uniform body force per unit area.
+  integer function mc_set_body_force(model, body, fx, fy) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    real(mc_real), intent(in) :: fx, fy
+    status = finish(model, c_mc_set_body_force(model%ptr, int(body, c_int), fx, fy))
+  end function mc_set_body_force
+
+  !> Removes every load of a body (supports stay).
+  integer function mc_clear_loads(model, body) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    status = finish(model, c_mc_clear_loads(model%ptr, int(body, c_int)))
+  end function mc_clear_loads
+
+  !> Candidate contact surface: boundary edges(2, n_edges). Body 1 non-mortar, body 2 mortar.
+  integer function mc_set_contact(model, body, edges) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    integer(mc_int), intent(in) :: edges(:, :)
+    if (.not. shape_ok(model, 'mc_set_contact: edges', shape(edges), [2, size(edges, 2)], '(2, n_edges)', &
+         status)) return
+    status = finish(model, c_mc_set_contact(model%ptr, int(body, c_int), int(size(edges, 2), mc_int), edges))
+  end function mc_set_contact
+
+  ! ---- options and solving -----------------------------------------------------------------
+
+  integer function set_option_int32(model, option, value) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: option
+    integer(c_int32_t), intent(in) :: value
+    status = finish(model, c_mc_set_option_int(model%ptr, int(option, c_int), int(value, c_int64_t)))
+  end function set_option_int32
+
+  integer function set_option_int64(model, option, value) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: option
+    integer(c_int64_t), intent(in) :: value
+    status = finish(model, c_mc_set_option_int(model%ptr, int(option, c_int), value))
+  end function set_option_int64
+
+  !> Sets a real option (MC_OPTION_TOLERANCE).
+  integer function mc_set_option_real(model, option, value) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: option
+    real(mc_real), intent(in) :: value
+    status = finish(model, c_mc_set_option_real(model%ptr, int(option, c_int), value))
+  end function mc_set_option_real
+
+  !> Solves the scene.
+  integer function mc_solve(model) result(status)
+    type(mc_model), intent(inout) :: model
+    status = finish(model, c_mc_solve(model%ptr))
+  end function mc_solve
+
+  ! ---- results -------------------------------------------------------------------------------
+
+  integer function get_info_int64(model, info, value) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: info
+    integer(c_int64_t), intent(out) :: value
+    status = finish(model, c_mc_get_info_int(model%ptr, int(info, c_int), value))
+  end function get_info_int64
+
+  integer function get_info_int32(model, info, value) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: info
+    integer(c_int32_t), intent(out) :: value
+    integer(c_int64_t) :: v
+    v = 0
+    status = finish(model, c_mc_get_info_int(model%ptr, int(info, c_int), v))
+    if (status == MC_OK .and. (v > huge(value) .or. v < -huge(value))) then
+       status = fail(model, MC_ERROR_ARGUMENT, 'mc_get_info_int: the value does not fit in 32 bits; ' // &
+            'pass an integer(mc_int64)')
+    end if
+    value = int(v, c_int32_t)
+  end function get_info_int32
+
+  !> A real info (MC_INFO_TIME_*, MC_INFO_STRAIN_ENERGY, ...).
+  integer function mc_get_info_real(model, info, value) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: info
+    real(mc_real), intent(out) :: value
+    status = finish(model, c_mc_get_info_real(model%ptr, int(info, c_int), value))
+  end function mc_get_info_real
+
+  !> Displacements u(2, n_nodes) of a body.
+  integer function mc_get_displacement(model, body, u) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    real(mc_real), intent(out) :: u(:, :)
+    if (.not. body_ok(model, 'mc_get_displacement', body, status)) return
+    if (.not. shape_ok(model, 'mc_get_displacement: u', shape(u), [2, model%n_nodes(body)], &
+         '(2, n_nodes)', status)) return
+    status = finish(model, c_mc_get_displacement(model%ptr, int(body, c_int), u))
+  end function mc_get_displacement
+
+  !> Cell-averaged stresses sigma(4, n_cells): xx, yy, xy, zz.
+  integer function mc_get_stress(model, body, sigma) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    real(mc_real), intent(out) :: sigma(:, :)
+    if (.not. body_ok(model, 'mc_get_stress', body, status)) return
+    if (.not. shape_ok(model, 'mc_get_stress: sigma', shape(sigma), [4, model%n_cells(body)], &
+         '(4, n_cells)', status)) return
+    status = finish(model, c_mc_get_stress(model%ptr, int(body, c_int), sigma))
+  end function mc_get_stress
+
+  !> Support reactions r(2, n_nodes).
+  integer function mc_get_reaction(model, body, r) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    real(mc_real), intent(out) :: r(:, :)
+    if (.not. body_ok(model, 'mc_get_reaction', body, status)) return
+    if (.not. shape_ok(model, 'mc_get_reaction: r', shape(r), [2, model%n_nodes(body)], &
+         '(2, n_nodes)', status)) return
+    status = finish(model, c_mc_get_reaction(model%ptr, int(body, c_int), r))
+  end function mc_get_reaction
+
+  !> Number of body-1 contact nodes (the size of the contact arrays).
+  integer function mc_get_contact_count(model, n) result(status)
+    type(mc_model), intent(inout) :: model
+    integer(mc_int), intent(out) :: n
+    n = 0
+    status = finish(model, c_mc_get_contact_count(model%ptr, n))
+  end function mc_get_contact_count
+
+  !> The contact count, checked against the size of a caller's array (rows values per node).
+  logical function contact_ok(model, what, got, rows, status)
+    type(mc_model), intent(inout) :: model
+    character(len=*), intent(in) :: what
+    integer, intent(in) :: got(:), rows
+    integer, intent(out) :: status
+    integer(mc_int) :: n
+    contact_ok = .false.
+    status = mc_get_contact_count(model, n)
+    if (status /= MC_OK) return
+    if (rows == 1) then
+       contact_ok = shape_ok(model, what, got, [int(n)], '(n_contact)', status)
+    else
+       contact_ok = shape_ok(model, what, got, [rows, int(n)], '(2, n_contact)', status)
+    end if
+  end function contact_ok
+
+  !> Ids of the body-1 contact nodes, nodes(n_contact), in order along each chain.
+  integer function mc_get_contact_nodes(model, nodes) result(status)
+    type(mc_model), intent(inout) :: model
+    integer(mc_int), intent(out) :: nodes(:)
+    if (.not. contact_ok(model, 'mc_get_contact_nodes: nodes', shape(nodes), 1, status)) return
+    status = finish(model, c_mc_get_contact_nodes(model%ptr, nodes))
+  end function mc_get_contact_nodes
+
+  !> Contact pressure p(n_contact) >= 0 (lumped recovery).
+  integer function mc_get_contact_pressure(model, p) result(status)
+    type(mc_model), intent(inout) :: model
+    real(mc_real), intent(out) :: p(:)
+    if (.not. contact_ok(model, 'mc_get_contact_pressure: p', shape(p), 1, status)) return
+    status = finish(model, c_mc_get_contact_pressure(model%ptr, p))
+  end function mc_get_contact_pressure
+
+  !> Nodal contact forces f(n_contact) >= 0 (the multipliers lambda_j).
+  integer function mc_get_contact_force(model, f) result(status)
+    type(mc_model), intent(inout) :: model
+    real(mc_real), intent(out) :: f(:)
+    if (.not. contact_ok(model, 'mc_get_contact_force: f', shape(f), 1, status)) return
+    status = finish(model, c_mc_get_contact_force(model%ptr, f))
+  end function mc_get_contact_force
+
+  !> Discrete gap g(n_contact) after the solve (+infinity where no mortar surface is seen).
+  integer function mc_get_contact_gap(model, g) result(status)
+    type(mc_model), intent(inout) :: model
+    real(mc_real), intent(out) :: g(:)
+    if (.not. contact_ok(model, 'mc_get_contact_gap: g', shape(g), 1, status)) return
+    status = finish(model, c_mc_get_contact_gap(model%ptr, g))
+  end function mc_get_contact_gap
+
+  !> Initial normal gap g0(n_contact) (negative: interference).
+  integer function mc_get_contact_initial_gap(model, g0) result(status)
+    type(mc_model), intent(inout) :: model
+    real(mc_real), intent(out) :: g0(:)
+    if (.not. contact_ok(model, 'mc_get_contact_initial_gap: g0', shape(g0), 1, status)) return
+    status = finish(model, c_mc_get_contact_initial_gap(model%ptr, g0))
+  end function mc_get_contact_initial_gap
+
+  !> Unit outward normals n(2, n_contact) of body 1 at the contact nodes.
+  integer function mc_get_contact_normal(model, n) result(status)
+    type(mc_model), intent(inout) :: model
+    real(mc_real), intent(out) :: n(:, :)
+    if (.not. contact_ok(model, 'mc_get_contact_normal: n', shape(n), 2, status)) return
+    status = finish(model, c_mc_get_contact_normal(model%ptr, n))
+  end function mc_get_contact_normal
+
+end module mortarcontact

@@ -1,0 +1,379 @@
+"""The :class:`Model` class: one contact scene, a thin wrapper of ``mc_model``."""
+
+import ctypes
+
+import numpy as np
+
+from . import _library
+from .constants import (INT_INFOS, INT_OPTIONS, MC_ERROR_ARGUMENT, MC_ERROR_STATE, MC_OK, MC_XY)
+
+_lib = None
+_lib_path = None
+
+
+def _get_lib():
+    """The loaded library (loaded on first use)."""
+    global _lib, _lib_path
+    if _lib is None:
+        _lib, _lib_path = _library.load()
+    return _lib
+
+
+def library_path():
+    """The path (or soname) the shared library was loaded from; loads it if needed."""
+    _get_lib()
+    return _lib_path
+
+
+def status_string(status):
+    """The library's English name of a status code, e.g. ``"MC_ERROR_MESH"``."""
+    return _get_lib().mc_status_string(int(status)).decode()
+
+
+def version_string():
+    """The loaded library's version, ``"MAJOR.MINOR.PATCH"``."""
+    return _get_lib().mc_version_string().decode()
+
+
+def version_number():
+    """The loaded library's version as ``MAJOR*10000 + MINOR*100 + PATCH``."""
+    return int(_get_lib().mc_version_number())
+
+
+class MortarContactError(Exception):
+    """A failed call. ``status`` is the ``mc_status`` code (an ``MC_ERROR_*`` constant) and
+    ``message`` the library's message (``mc_errmsg``) or the binding's own."""
+
+    def __init__(self, status, message):
+        self.status = int(status)
+        self.message = message
+        try:
+            name = status_string(self.status)
+        except OSError:
+            name = "status %d" % self.status
+        super().__init__("%s: %s" % (name, message))
+
+
+class ArgumentError(MortarContactError, ValueError):
+    """An argument the binding rejected before calling the library (wrong dtype, shape or
+    body); ``status`` is ``MC_ERROR_ARGUMENT``. Also a ``ValueError``."""
+
+    def __init__(self, message):
+        super().__init__(MC_ERROR_ARGUMENT, message)
+
+
+_PD = ctypes.POINTER(ctypes.c_double)
+_PI32 = ctypes.POINTER(ctypes.c_int32)
+_I32 = np.iinfo(np.int32)
+
+
+def _reals(a, shape, name):
+    """``a`` as a C-contiguous float64 array of ``shape`` (None = any length; a trailing
+    dimension may be broadcast from a single row). Copies only when needed."""
+    arr = np.asarray(a)
+    if arr.dtype.kind not in "iuf":
+        raise ArgumentError("%s must hold real numbers, got dtype %s" % (name, arr.dtype))
+    if arr.ndim != len(shape) or any(w is not None and w != s for w, s in zip(shape, arr.shape)):
+        raise ArgumentError("%s must have shape %s, got %s" % (name, _fmt(shape), arr.shape))
+    return np.ascontiguousarray(arr, dtype=np.float64)
+
+
+def _reals_rows(a, n, width, name):
+    """``a`` as a C-contiguous float64 array of shape (n, width) (or (n,) if width is None);
+    a single row (shape (width,) or a scalar) is repeated n times."""
+    arr = np.asarray(a)
+    row = () if width is None else (width,)
+    if arr.dtype.kind in "iuf" and arr.shape == row:
+        arr = np.broadcast_to(arr, (n,) + row)
+    return _reals(arr, (n,) + row, name)
+
+
+def _ids(a, shape, name):
+    """``a`` as a C-contiguous int32 array of ``shape``; rejects non-integer dtypes and ids
+    that do not fit in 32 bits."""
+    arr = np.asarray(a)
+    if arr.size == 0 and arr.dtype.kind == "f":
+        arr = arr.astype(np.int32)  # np.asarray([]) is float64
+    if arr.dtype.kind not in "iu":
+        raise ArgumentError("%s must hold integer ids, got dtype %s" % (name, arr.dtype))
+    if arr.size == 0 and None not in shape[1:]:
+        arr = arr.reshape((0,) + tuple(shape[1:]))  # [] for "no edges"
+    if arr.ndim != len(shape) or any(w is not None and w != s for w, s in zip(shape, arr.shape)):
+        raise ArgumentError("%s must have shape %s, got %s" % (name, _fmt(shape), arr.shape))
+    if arr.size and (arr.min() < _I32.min or arr.max() > _I32.max):
+        raise ArgumentError("%s holds ids outside the 32-bit range" % name)
+    return np.ascontiguousarray(arr, dtype=np.int32)
+
+
+def _fmt(shape):
+    return "(" + ", ".join("n" if s is None else str(s) for s in shape) + ("," if len(shape) == 1 else "") + ")"
+
+
+def _dp(arr):
+    return arr.ctypes.data_as(_PD)
+
+
+def _ip(arr):
+    return arr.ctypes.data_as(_PI32)
+
+
+class Model:
+    """One contact scene (``mc_model``): two 2D bodies, numbered 1 (the non-mortar side) and 2.
+
+    Use it as a context manager, or call :meth:`close`; it is also freed when garbage
+    collected. Every method raises :class:`MortarContactError` on failure; the model stays
+    usable after a failed call. Arrays are numpy arrays, one row per node, cell or edge:
+    coordinates ``(n, 2)``, cells ``(n_cells, 3 or 4)``, edges ``(n_edges, 2)``; ids use the
+    model's index base (0 unless ``index_base=1``).
+
+    >>> with Model() as m:
+    ...     m.set_mesh(1, xy, cells)
+    """
+
+    def __init__(self, index_base=0):
+        """Creates an empty model; ``index_base`` (0 or 1) is the base of all ids in and out."""
+        self._handle = None
+        self._lib = _get_lib()
+        handle = ctypes.c_void_p()
+        status = self._lib.mc_create(ctypes.byref(handle))
+        if status != MC_OK:
+            raise MortarContactError(status, "mc_create failed")
+        self._handle = handle
+        self._n_nodes = {}
+        self._n_cells = {}
+        if index_base != 0:
+            self.set_index_base(index_base)
+
+    # ---- lifecycle -------------------------------------------------------------------
+
+    def close(self):
+        """Frees the model (``mc_destroy``). Further calls raise MC_ERROR_STATE. Idempotent."""
+        if self._handle is not None:
+            self._lib.mc_destroy(self._handle)
+            self._handle = None
+
+    @property
+    def closed(self):
+        """True after :meth:`close`."""
+        return self._handle is None
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
+
+    def __del__(self):
+        try:
+            self.close()
+        except Exception:  # interpreter shutdown: never raise from __del__
+            pass
+
+    def _h(self):
+        if self._handle is None:
+            raise MortarContactError(MC_ERROR_STATE, "the model is closed")
+        return self._handle
+
+    def _check(self, status):
+        if status != MC_OK:
+            raise MortarContactError(status, self._lib.mc_errmsg(self._handle).decode())
+
+    @property
+    def errmsg(self):
+        """The library's message of the last call on this model (``""`` after a success)."""
+        return self._lib.mc_errmsg(self._h()).decode()
+
+    def _body(self, body, what):
+        if body not in (1, 2):
+            raise ArgumentError("body must be 1 or 2, got %r" % (body,))
+        if body not in self._n_nodes:
+            raise MortarContactError(MC_ERROR_STATE, "%s: no mesh set for body %d" % (what, body))
+
+    # ---- the scene -----------------------------------------------------------------
+
+    def set_index_base(self, base):
+        """Sets the base (0 or 1) of all node, cell and edge ids, in and out."""
+        self._check(self._lib.mc_set_index_base(self._h(), int(base)))
+
+    def set_plane(self, plane, thickness=1.0):
+        """``MC_PLANE_STRAIN`` (default) or ``MC_PLANE_STRESS``, and the thickness (> 0)."""
+        self._check(self._lib.mc_set_plane(self._h(), int(plane), float(thickness)))
+
+    def set_mesh(self, body, xy, cells):
+        """Sets the mesh of ``body``: ``xy`` (n_nodes, 2) coordinates and ``cells``
+        (n_cells, 3) P1 triangles or (n_cells, 4) Q1 quadrilaterals, counter-clockwise.
+        Clears that body's materials, supports, loads and contact surface."""
+        xy = _reals(xy, (None, 2), "xy")
+        cells = _ids(cells, (None, None), "cells")
+        n, nc = xy.shape[0], cells.shape[0]
+        self._check(self._lib.mc_set_mesh(self._h(), int(body), n, _dp(xy), nc, cells.shape[1], _ip(cells)))
+        self._n_nodes[body] = n
+        self._n_cells[body] = nc
+
+    def n_nodes(self, body):
+        """Number of nodes of ``body``'s mesh."""
+        self._body(body, "n_nodes")
+        return self._n_nodes[body]
+
+    def n_cells(self, body):
+        """Number of cells of ``body``'s mesh."""
+        self._body(body, "n_cells")
+        return self._n_cells[body]
+
+    def set_material(self, body, young, poisson):
+        """Isotropic material of the whole body: Young's modulus > 0, Poisson's ratio in (-1, 1/2)."""
+        self._check(self._lib.mc_set_material(self._h(), int(body), float(young), float(poisson)))
+
+    def set_cell_elasticity(self, body, d):
+        """Per-cell in-plane elasticity matrices (Voigt xx, yy, engineering xy): ``d`` of shape
+        (n_cells, 3, 3) or (n_cells, 9), symmetric positive definite. Overrides set_material."""
+        self._body(body, "set_cell_elasticity")
+        nc = self._n_cells[body]
+        arr = np.asarray(d)
+        if arr.ndim == 3:
+            arr = _reals(arr, (nc, 3, 3), "d")
+        else:
+            arr = _reals(arr, (nc, 9), "d")
+        self._check(self._lib.mc_set_cell_elasticity(self._h(), int(body), _dp(arr)))
+
+    def fix(self, body, nodes, components=MC_XY, values=None):
+        """Prescribes displacements of ``nodes`` in the components of the mask ``components``
+        (``MC_X``, ``MC_Y``, ``MC_XY``). ``values``: (n, 2) or one (2,) row for all nodes;
+        None means zero."""
+        nodes = _ids(nodes, (None,), "nodes")
+        n = nodes.shape[0]
+        vals = None if values is None else _reals_rows(values, n, 2, "values")
+        self._check(self._lib.mc_fix(self._h(), int(body), n, _ip(nodes), int(components),
+                                     None if vals is None else _dp(vals)))
+
+    def add_traction(self, body, edges, traction):
+        """Adds a uniform traction (force per unit length, global axes) on boundary ``edges``
+        (n_edges, 2); ``traction`` is (n_edges, 2) or one (2,) row for all edges."""
+        edges = _ids(edges, (None, 2), "edges")
+        t = _reals_rows(traction, edges.shape[0], 2, "traction")
+        self._check(self._lib.mc_add_traction(self._h(), int(body), edges.shape[0], _ip(edges), _dp(t)))
+
+    def add_pressure(self, body, edges, pressure):
+        """Adds a normal pressure (> 0 pushes into the body) on boundary ``edges`` (n_edges, 2);
+        ``pressure`` is (n_edges,) or a scalar for all edges."""
+        edges = _ids(edges, (None, 2), "edges")
+        p = _reals_rows(pressure, edges.shape[0], None, "pressure")
+        self._check(self._lib.mc_add_pressure(self._h(), int(body), edges.shape[0], _ip(edges), _dp(p)))
+
+    def add_nodal_force(self, body, nodes, force):
+        """Adds point forces: ``force`` (n, 2) or one (2,) row for all ``nodes``."""
+        nodes = _ids(nodes, (None,), "nodes")
+        f = _reals_rows(force, nodes.shape[0], 2, "force")
+        self._check(self._lib.mc_add_nodal_force(self._h(), int(body), nodes.shape[0], _ip(nodes), _dp(f)))
+
+    def set_body_force(self, body, fx, fy):
+        """Sets (replaces) a uniform body force per unit area."""
+        self._check(self._lib.mc_set_body_force(self._h(), int(body), float(fx), float(fy)))
+
+    def clear_loads(self, body):
+        """Removes every load of ``body`` (supports stay); the next solve reuses the factorization."""
+        self._check(self._lib.mc_clear_loads(self._h(), int(body)))
+
+    def set_contact(self, body, edges):
+        """Candidate contact surface of ``body``: boundary ``edges`` (n_edges, 2). Body 1 is the
+        non-mortar side, body 2 the mortar side; both need one for a contact solve."""
+        edges = _ids(edges, (None, 2), "edges")
+        self._check(self._lib.mc_set_contact(self._h(), int(body), edges.shape[0], _ip(edges)))
+
+    # ---- options and solving ---------------------------------------------------------
+
+    def set_option_int(self, option, value):
+        """Sets an integer option (``MC_OPTION_METHOD``, ``..._MAX_ITERATIONS``, ...)."""
+        self._check(self._lib.mc_set_option_int(self._h(), int(option), int(value)))
+
+    def set_option_real(self, option, value):
+        """Sets a real option (``MC_OPTION_TOLERANCE``)."""
+        self._check(self._lib.mc_set_option_real(self._h(), int(option), float(value)))
+
+    def set_option(self, option, value):
+        """Sets an option with the integer or real call, as the option's type requires."""
+        if option in INT_OPTIONS:
+            self.set_option_int(option, value)
+        else:
+            self.set_option_real(option, value)
+
+    def solve(self):
+        """Solves the scene (``mc_solve``)."""
+        self._check(self._lib.mc_solve(self._h()))
+
+    # ---- results ---------------------------------------------------------------------
+
+    def get_info_int(self, info):
+        """An integer info (``MC_INFO_DOFS``, ``MC_INFO_ITERATIONS``, ...) of the last solve."""
+        v = ctypes.c_int64()
+        self._check(self._lib.mc_get_info_int(self._h(), int(info), ctypes.byref(v)))
+        return v.value
+
+    def get_info_real(self, info):
+        """A real info (``MC_INFO_TIME_*``, ``MC_INFO_STRAIN_ENERGY``, ...) of the last solve."""
+        v = ctypes.c_double()
+        self._check(self._lib.mc_get_info_real(self._h(), int(info), ctypes.byref(v)))
+        return v.value
+
+    def get_info(self, info):
+        """An info with the integer or real call, as the info's type requires."""
+        return self.get_info_int(info) if info in INT_INFOS else self.get_info_real(info)
+
+    def _per_body(self, fn, body, per_node, width, what):
+        self._body(body, what)
+        n = self._n_nodes[body] if per_node else self._n_cells[body]
+        out = np.empty((n, width), dtype=np.float64)
+        self._check(fn(self._h(), int(body), _dp(out)))
+        return out
+
+    def get_displacement(self, body):
+        """Displacements of ``body``: (n_nodes, 2)."""
+        return self._per_body(self._lib.mc_get_displacement, body, True, 2, "get_displacement")
+
+    def get_stress(self, body):
+        """Cell-averaged stresses of ``body``: (n_cells, 4) as xx, yy, xy, zz."""
+        return self._per_body(self._lib.mc_get_stress, body, False, 4, "get_stress")
+
+    def get_reaction(self, body):
+        """Support reactions of ``body``: (n_nodes, 2), zero at free components."""
+        return self._per_body(self._lib.mc_get_reaction, body, True, 2, "get_reaction")
+
+    def get_contact_count(self):
+        """Number of body-1 contact-surface nodes (the length of the contact arrays)."""
+        n = ctypes.c_int32()
+        self._check(self._lib.mc_get_contact_count(self._h(), ctypes.byref(n)))
+        return n.value
+
+    def _contact(self, fn, width):
+        m = self.get_contact_count()
+        out = np.empty((m,) if width == 1 else (m, width), dtype=np.float64)
+        self._check(fn(self._h(), _dp(out)))
+        return out
+
+    def get_contact_nodes(self):
+        """Ids of the body-1 contact nodes, in order along each chain: (m,) int32."""
+        m = self.get_contact_count()
+        out = np.empty(m, dtype=np.int32)
+        self._check(self._lib.mc_get_contact_nodes(self._h(), _ip(out)))
+        return out
+
+    def get_contact_pressure(self):
+        """Contact pressure (>= 0) at the contact nodes, lumped recovery: (m,)."""
+        return self._contact(self._lib.mc_get_contact_pressure, 1)
+
+    def get_contact_force(self):
+        """Nodal multipliers lambda_j >= 0, total normal force at each contact node: (m,)."""
+        return self._contact(self._lib.mc_get_contact_force, 1)
+
+    def get_contact_gap(self):
+        """Discrete gap after the solve (>= 0; +inf where no mortar surface is seen): (m,)."""
+        return self._contact(self._lib.mc_get_contact_gap, 1)
+
+    def get_contact_initial_gap(self):
+        """Initial normal gap g0 (negative: interference; +inf where no mortar surface): (m,)."""
+        return self._contact(self._lib.mc_get_contact_initial_gap, 1)
+
+    def get_contact_normal(self):
+        """Unit outward normals of body 1 at the contact nodes: (m, 2)."""
+        return self._contact(self._lib.mc_get_contact_normal, 2)

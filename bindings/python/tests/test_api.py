@@ -1,0 +1,170 @@
+"""Tests of the Python binding itself: loading, constants, argument checking, errors and the
+model's life cycle. None of them needs a working contact solve."""
+import gc
+import os
+import re
+import unittest
+
+import numpy as np
+
+import _paths
+import mortarcontact as mc
+
+SQUARE_XY = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+SQUARE_TRI = np.array([[0, 1, 2], [0, 2, 3]])
+
+
+class TestLibrary(unittest.TestCase):
+    def test_version(self):
+        self.assertEqual(mc.version_string(), mc.MC_VERSION_STRING)
+        self.assertEqual(mc.version_number(), mc.MC_VERSION_NUMBER)
+        self.assertEqual(mc.__version__, mc.MC_VERSION_STRING)
+        self.assertTrue(os.path.exists(mc.library_path()) or "/" not in mc.library_path())
+
+    def test_status_string(self):
+        self.assertEqual(mc.status_string(mc.MC_OK), "MC_OK")
+        self.assertEqual(mc.status_string(mc.MC_ERROR_MESH), "MC_ERROR_MESH")
+        self.assertEqual(mc.status_string(12345), "unknown status")
+
+    def test_constants_match_header(self):
+        """Every MC_ constant of the header is mirrored with the same value, and vice versa."""
+        with open(_paths.HEADER) as f:
+            text = re.sub(r"/\*.*?\*/", "", f.read(), flags=re.S)
+        header = {}
+        for name, value in re.findall(r"\b(MC_[A-Z0-9_]+)\s*=\s*(-?\d+)", text):
+            header[name] = int(value)
+        for name in ("MAJOR", "MINOR", "PATCH"):
+            header["MC_VERSION_" + name] = int(re.search(r"#define MC_VERSION_%s (\d+)" % name, text).group(1))
+        header["MC_VERSION_STRING"] = re.search(r'#define MC_VERSION_STRING "([^"]+)"', text).group(1)
+        self.assertGreater(len(header), 40)
+        mirrored = {k: getattr(mc.constants, k) for k in dir(mc.constants) if k.startswith("MC_")}
+        mirrored.pop("MC_VERSION_NUMBER")  # a macro expression in the header; checked in test_version
+        self.assertEqual(mirrored, header)
+        for k in mc.constants.INT_OPTIONS | mc.constants.INT_INFOS:
+            self.assertIn(k, header.values())
+
+    def test_prototypes_cover_header(self):
+        """The ctypes prototypes name exactly the header's functions."""
+        with open(_paths.HEADER) as f:
+            names = set(re.findall(r"MC_API[^;(]*?\b(mc_\w+)\s*\(", f.read()))
+        self.assertEqual(set(mc._library.PROTOTYPES), names)
+
+
+class TestModel(unittest.TestCase):
+    def test_context_manager_closes(self):
+        with mc.Model() as m:
+            self.assertFalse(m.closed)
+        self.assertTrue(m.closed)
+        with self.assertRaises(mc.MortarContactError) as cm:
+            m.set_material(1, 1.0, 0.3)
+        self.assertEqual(cm.exception.status, mc.MC_ERROR_STATE)
+        m.close()  # idempotent
+
+    def test_del_closes(self):
+        m = mc.Model()
+        m.set_mesh(1, SQUARE_XY, SQUARE_TRI)
+        del m
+        gc.collect()  # no crash, no leak report under ASan
+
+    def test_library_error_carries_status_and_message(self):
+        with mc.Model() as m:
+            m.set_mesh(1, SQUARE_XY, SQUARE_TRI)
+            with self.assertRaises(mc.MortarContactError) as cm:
+                m.set_material(1, -1.0, 0.3)
+            self.assertEqual(cm.exception.status, mc.MC_ERROR_MATERIAL)
+            self.assertTrue(cm.exception.message)
+            self.assertIn(cm.exception.message, str(cm.exception))
+            self.assertIn("MC_ERROR_MATERIAL", str(cm.exception))
+            m.set_material(1, 1.0, 0.3)  # the model stays usable
+            self.assertEqual(m.errmsg, "")
+
+    def test_bad_body(self):
+        with mc.Model() as m:
+            with self.assertRaises(mc.MortarContactError) as cm:
+                m.set_material(3, 1.0, 0.3)
+            self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
+            with self.assertRaises(mc.ArgumentError):
+                m.get_displacement(0)
+
+    def test_bad_mesh_id(self):
+        with mc.Model() as m:
+            with self.assertRaises(mc.MortarContactError) as cm:
+                m.set_mesh(1, SQUARE_XY, [[0, 1, 2], [0, 2, 4]])
+            self.assertIn(cm.exception.status, (mc.MC_ERROR_ARGUMENT, mc.MC_ERROR_MESH))
+
+    def test_shape_and_dtype_checks(self):
+        with mc.Model() as m:
+            for xy, cells in ((SQUARE_XY.T, SQUARE_TRI),              # (2, n)
+                              (SQUARE_XY.ravel(), SQUARE_TRI),        # flat
+                              (SQUARE_XY.astype(complex), SQUARE_TRI),
+                              (SQUARE_XY, SQUARE_TRI.astype(float)),  # float ids
+                              (SQUARE_XY, SQUARE_TRI.ravel()),
+                              (SQUARE_XY, SQUARE_TRI + 2 ** 40)):
+                with self.assertRaises(mc.ArgumentError) as cm:
+                    m.set_mesh(1, xy, cells)
+                self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
+                self.assertIsInstance(cm.exception, ValueError)
+            m.set_mesh(1, SQUARE_XY, SQUARE_TRI)
+            with self.assertRaises(mc.ArgumentError):
+                m.add_traction(1, [[2, 3]], [[0.0, 1.0], [0.0, 1.0]])  # 1 edge, 2 tractions
+            with self.assertRaises(mc.ArgumentError):
+                m.set_cell_elasticity(1, np.eye(3)[None].repeat(3, axis=0))  # 3 cells, mesh has 2
+            with self.assertRaises(mc.ArgumentError):
+                m.fix(1, [0, 1], mc.MC_XY, np.zeros((3, 2)))
+
+    def test_conversion_and_noncontiguous_input(self):
+        """int coordinates, int64 ids, Fortran-ordered and strided arrays are converted."""
+        with mc.Model() as m:
+            xy = np.asfortranarray(np.array([[0, 0], [2, 0], [2, 2], [0, 2], [9, 9]])[:4])
+            cells = np.array([[0, 1, 2, 9], [0, 2, 3, 9]], dtype=np.int64)[:, :3]
+            self.assertFalse(cells.flags.c_contiguous)
+            m.set_mesh(1, xy, cells)
+            self.assertEqual(m.n_nodes(1), 4)
+            self.assertEqual(m.n_cells(1), 2)
+            m.set_cell_elasticity(1, np.tile(np.diag([2.0, 2.0, 1.0]).ravel(), (2, 1)))
+            m.set_cell_elasticity(1, np.tile(np.diag([2.0, 2.0, 1.0]), (2, 1, 1)))
+
+    def test_state_errors(self):
+        with mc.Model() as m:
+            with self.assertRaises(mc.MortarContactError) as cm:
+                m.get_displacement(1)  # no mesh
+            self.assertEqual(cm.exception.status, mc.MC_ERROR_STATE)
+            m.set_mesh(1, SQUARE_XY, SQUARE_TRI)
+            with self.assertRaises(mc.MortarContactError) as cm:
+                m.get_displacement(1)  # no solve yet
+            self.assertEqual(cm.exception.status, mc.MC_ERROR_STATE)
+            with self.assertRaises(mc.MortarContactError) as cm:
+                m.get_info_int(mc.MC_INFO_DOFS)
+            self.assertEqual(cm.exception.status, mc.MC_ERROR_STATE)
+
+    def test_options(self):
+        with mc.Model() as m:
+            m.set_option(mc.MC_OPTION_METHOD, mc.MC_METHOD_DUAL_MORTAR)
+            m.set_option(mc.MC_OPTION_TOLERANCE, 1e-12)
+            m.set_option_int(mc.MC_OPTION_MAX_ITERATIONS, 50)
+            with self.assertRaises(mc.MortarContactError) as cm:
+                m.set_option_int(9999, 1)
+            self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
+
+    def test_single_body_solve_one_based(self):
+        """A unit square, bottom clamped, pulled up on top; ids 1-based. No contact."""
+        with mc.Model(index_base=1) as m:
+            m.set_mesh(1, SQUARE_XY, SQUARE_TRI + 1)
+            m.set_material(1, 1.0, 0.3)
+            m.fix(1, [1, 2], mc.MC_XY)
+            m.add_traction(1, [[3, 4]], (0.0, 1e-3))
+            m.solve()
+            u = m.get_displacement(1)
+            self.assertEqual(u.shape, (4, 2))
+            self.assertTrue(np.all(u[2:, 1] > 0))
+            np.testing.assert_array_equal(u[:2], 0.0)
+            r = m.get_reaction(1)
+            self.assertAlmostEqual(r[:, 1].sum(), -1e-3, delta=1e-12)  # reactions balance the load
+            s = m.get_stress(1)
+            self.assertEqual(s.shape, (2, 4))
+            self.assertGreater(m.get_info(mc.MC_INFO_DOFS), 0)
+            self.assertGreater(m.get_info(mc.MC_INFO_STRAIN_ENERGY), 0.0)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,118 @@
+# Install rules: shared + static library, header, pkg-config file, CMake package, and the
+# language bindings' sources. Included from the top-level CMakeLists.txt after lib/.
+#
+#   cmake --install <build> --prefix <prefix>
+#
+# installs (libdir = CMAKE_INSTALL_LIBDIR, e.g. lib or lib/x86_64-linux-gnu):
+#   <libdir>/libmortarcontact.so.0.1.0, .so.0, .so      shared library (soname .so.0)
+#   <libdir>/libmortarcontact.a                           static library
+#   include/mortarcontact.h
+#   <libdir>/pkgconfig/mortarcontact.pc
+#   <libdir>/cmake/mortarcontact/mortarcontact{Config,ConfigVersion,Targets*}.cmake
+#   share/mortarcontact/{python,fortran,julia}/...        binding sources
+#   share/doc/mortarcontact/{abi,bindings}.md
+include(CMakePackageConfigHelpers)
+
+set(MC_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/mortarcontact"
+    CACHE STRING "Where the CMake package files of mortarcontact are installed")
+set(MC_INSTALL_DATADIR "${CMAKE_INSTALL_DATADIR}/mortarcontact")
+
+# ---- the static library's link interface, as seen by an installed consumer ----------
+# lib/ links mortarcontact_static PUBLIC to ${CHOLMOD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY}
+# (absolute paths of this machine) and PkgConfig::LAPACK / PkgConfig::OPENBLAS (imported
+# targets that only exist in this build). Exported as they are, they would either pin the
+# build machine's paths or name targets a consumer does not have. So the build keeps them
+# ($<BUILD_INTERFACE:...>) and the installed package sees its own imported targets
+# mortarcontact::deps_*, which mortarcontactConfig.cmake creates by finding the
+# dependencies again on the consumer's machine.
+get_target_property(_mc_static_iface mortarcontact_static INTERFACE_LINK_LIBRARIES)
+set(_mc_static_new_iface "")
+foreach(_mc_item IN LISTS _mc_static_iface)
+  if(_mc_item STREQUAL "${CHOLMOD_LIBRARY}")
+    list(APPEND _mc_static_new_iface "$<BUILD_INTERFACE:${_mc_item}>" "$<INSTALL_INTERFACE:mortarcontact::deps_cholmod>")
+  elseif(_mc_item STREQUAL "${SUITESPARSECONFIG_LIBRARY}")
+    list(APPEND _mc_static_new_iface "$<BUILD_INTERFACE:${_mc_item}>" "$<INSTALL_INTERFACE:mortarcontact::deps_suitesparseconfig>")
+  elseif(_mc_item STREQUAL "PkgConfig::OPENBLAS")
+    list(APPEND _mc_static_new_iface "$<BUILD_INTERFACE:${_mc_item}>" "$<INSTALL_INTERFACE:mortarcontact::deps_openblas>")
+  elseif(_mc_item STREQUAL "PkgConfig::LAPACK")
+    list(APPEND _mc_static_new_iface "$<BUILD_INTERFACE:${_mc_item}>" "$<INSTALL_INTERFACE:mortarcontact::deps_lapack>")
+  elseif(_mc_item MATCHES "^PkgConfig::" OR IS_ABSOLUTE "${_mc_item}")
+    message(FATAL_ERROR "cmake/Install.cmake: mortarcontact_static links to '${_mc_item}', which the "
+                        "installed CMake package does not know how to find; add it to cmake/Install.cmake "
+                        "and cmake/mortarcontactConfig.cmake.in (and to Libs.private in mortarcontact.pc).")
+  else()
+    list(APPEND _mc_static_new_iface "${_mc_item}")   # stdc++, m, generator expressions
+  endif()
+endforeach()
+set_property(TARGET mortarcontact_static PROPERTY INTERFACE_LINK_LIBRARIES "${_mc_static_new_iface}")
+
+# ---- libraries and header --------------------------------------------------------------
+install(TARGETS mortarcontact mortarcontact_static
+  EXPORT mortarcontactTargets
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} NAMELINK_COMPONENT Development
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(FILES ${PROJECT_SOURCE_DIR}/include/mortarcontact.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+
+# ---- CMake package -------------------------------------------------------------------
+install(EXPORT mortarcontactTargets
+  NAMESPACE mortarcontact::
+  DESTINATION ${MC_INSTALL_CMAKEDIR})
+configure_package_config_file(
+  ${CMAKE_CURRENT_LIST_DIR}/mortarcontactConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/cmake/mortarcontactConfig.cmake
+  INSTALL_DESTINATION ${MC_INSTALL_CMAKEDIR})
+# The ABI promise (docs/abi.md) holds within a major version.
+write_basic_package_version_file(
+  ${PROJECT_BINARY_DIR}/cmake/mortarcontactConfigVersion.cmake
+  VERSION ${PROJECT_VERSION}
+  COMPATIBILITY SameMajorVersion)
+install(FILES
+  ${PROJECT_BINARY_DIR}/cmake/mortarcontactConfig.cmake
+  ${PROJECT_BINARY_DIR}/cmake/mortarcontactConfigVersion.cmake
+  DESTINATION ${MC_INSTALL_CMAKEDIR})
+
+# ---- pkg-config ----------------------------------------------------------------------
+# Written at install time, so that `cmake --install --prefix P` gets P (not the configure-time
+# CMAKE_INSTALL_PREFIX) in the file.
+set(MC_PC_IN "${CMAKE_CURRENT_LIST_DIR}/mortarcontact.pc.in")
+install(CODE "
+  set(_mc_prefix \"\${CMAKE_INSTALL_PREFIX}\")
+  set(_mc_libdir \"${CMAKE_INSTALL_LIBDIR}\")
+  set(_mc_includedir \"${CMAKE_INSTALL_INCLUDEDIR}\")
+  if(NOT IS_ABSOLUTE \"\${_mc_libdir}\")
+    set(_mc_libdir \"\\\${exec_prefix}/\${_mc_libdir}\")
+  endif()
+  if(NOT IS_ABSOLUTE \"\${_mc_includedir}\")
+    set(_mc_includedir \"\\\${prefix}/\${_mc_includedir}\")
+  endif()
+  set(MC_PC_PREFIX \"\${_mc_prefix}\")
+  set(MC_PC_LIBDIR \"\${_mc_libdir}\")
+  set(MC_PC_INCLUDEDIR \"\${_mc_includedir}\")
+  set(MC_PC_VERSION \"${PROJECT_VERSION}\")
+  configure_file(\"${MC_PC_IN}\" \"${PROJECT_BINARY_DIR}/cmake/mortarcontact.pc\" @ONLY)
+  file(INSTALL DESTINATION \"\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_LIBDIR}/pkgconfig\"
+       TYPE FILE FILES \"${PROJECT_BINARY_DIR}/cmake/mortarcontact.pc\")
+")
+
+# ---- binding sources and docs -----------------------------------------------------------
+if(EXISTS ${PROJECT_SOURCE_DIR}/bindings/python/mortarcontact)
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/bindings/python/mortarcontact
+          DESTINATION ${MC_INSTALL_DATADIR}/python
+          FILES_MATCHING PATTERN "*.py"
+          PATTERN "__pycache__" EXCLUDE)
+endif()
+if(EXISTS ${PROJECT_SOURCE_DIR}/bindings/fortran/mortarcontact.f90)
+  install(FILES ${PROJECT_SOURCE_DIR}/bindings/fortran/mortarcontact.f90
+          DESTINATION ${MC_INSTALL_DATADIR}/fortran)
+endif()
+if(EXISTS ${PROJECT_SOURCE_DIR}/bindings/julia/MortarContact.jl)
+  install(FILES ${PROJECT_SOURCE_DIR}/bindings/julia/MortarContact.jl
+          DESTINATION ${MC_INSTALL_DATADIR}/julia)
+endif()
+foreach(_mc_doc abi.md bindings.md)
+  if(EXISTS ${PROJECT_SOURCE_DIR}/docs/${_mc_doc})
+    install(FILES ${PROJECT_SOURCE_DIR}/docs/${_mc_doc} DESTINATION ${CMAKE_INSTALL_DOCDIR})
+  endif()
+endforeach()

@@ -1,0 +1,46 @@
+/*
+ * hertz_scene.h - meshes of the shared Hertz benchmark scene (docs: method.md,
+ * "Shared benchmark scenes"): body 1 = lower half-disc of radius 1 centred at
+ * (0,1), flat top at y = 1, touching the origin; body 2 = block [-4,4]x[-4,0]
+ * clamped at y = -4. Both meshes are graded: fine and uniform near the contact
+ * point, growing geometrically (factor 1.15) away from it.
+ *
+ * Plain C99, libc/libm only, no global state: usable from the examples, the
+ * tests and the benchmarks alike. bench/getfem_hertz.py re-implements exactly
+ * the same construction in numpy, so any change here must be mirrored there.
+ */
+#ifndef HERTZ_SCENE_H
+#define HERTZ_SCENE_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct hertz_mesh {
+  int n_nodes;
+  double *xy;         /* 2 per node */
+  int n_cells;
+  int nodes_per_cell; /* 3 = P1 triangles, 4 = Q1 quadrilaterals; counter-clockwise */
+  int *cells;         /* nodes_per_cell per cell, 0-based */
+} hertz_mesh;
+
+typedef struct hertz_scene {
+  hertz_mesh body[2];                    /* body[0] = body 1 (half-disc), body[1] = body 2 (block) */
+  int n_contact_edges[2]; int *contact_edges[2]; /* 2 node ids each, 0-based */
+  int n_top_edges; int *top_edges;       /* body-1 flat top edges y == 1 (the load goes here) */
+  int n_axis_nodes; int *axis_nodes;     /* body-1 nodes with x == 0 exactly (u_x = 0 there) */
+  int n_bottom_nodes; int *bottom_nodes; /* body-2 nodes with y == -4 (clamped) */
+} hertz_scene;
+
+/* h1: body-1 fine spacing near the contact point (physical); h2: body-2 fine spacing.
+   quads: 0 = P1 triangles (each quad split along the lower-left/upper-right diagonal), 1 = Q1.
+   Returns 0 on success, nonzero on bad arguments or allocation failure. */
+int hertz_scene_build(hertz_scene *s, double h1, double h2, int quads);
+void hertz_scene_free(hertz_scene *s); /* NULL-safe, frees everything */
+/* analytic Hertz values for this scene (R=1, E=1, nu=0.3 both, plane strain, P=0.01) */
+void hertz_analytic(double *a, double *p0);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* HERTZ_SCENE_H */

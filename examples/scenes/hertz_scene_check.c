@@ -1,0 +1,250 @@
+/*
+ * hertz_scene_check.c - self-check of the Hertz scene generator. Not part of
+ * any build; compile by hand:
+ *   gcc -std=c99 -O2 -Wall -Wextra hertz_scene_check.c hertz_scene.c -lm -o hertz_scene_check
+ *   ./hertz_scene_check            # default size list
+ *   ./hertz_scene_check h1 h2 ...  # pairs of sizes
+ * Exits nonzero if any check fails.
+ */
+#include "hertz_scene.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#define PI 3.14159265358979323846
+
+static int failures = 0;
+#define CHECK(cond, ...)                                    \
+  do {                                                      \
+    if (!(cond)) {                                          \
+      ++failures;                                           \
+      printf("  FAIL %s:%d: ", __FILE__, __LINE__);         \
+      printf(__VA_ARGS__);                                  \
+      printf("\n");                                         \
+    }                                                       \
+  } while (0)
+
+static const double *g_xy; /* qsort has no context argument in C99 */
+static int cmp_node(const void *a, const void *b)
+{
+  const double *p = g_xy + 2 * *(const int *)a, *q = g_xy + 2 * *(const int *)b;
+  if (p[0] != q[0]) return p[0] < q[0] ? -1 : 1;
+  if (p[1] != q[1]) return p[1] < q[1] ? -1 : 1;
+  return 0;
+}
+static int cmp_edge(const void *a, const void *b)
+{
+  const long long x = *(const long long *)a, y = *(const long long *)b;
+  return x < y ? -1 : x > y;
+}
+static long long edge_key(int a, int b, int n)
+{
+  return a < b ? (long long)a * n + b : (long long)b * n + a;
+}
+
+/* 2 x signed area of triangle (a,b,c) */
+static double cross(const double *xy, int a, int b, int c)
+{
+  return (xy[2 * b] - xy[2 * a]) * (xy[2 * c + 1] - xy[2 * a + 1]) -
+         (xy[2 * b + 1] - xy[2 * a + 1]) * (xy[2 * c] - xy[2 * a]);
+}
+
+/* Boundary edges (appearing in exactly one cell), sorted keys; returns count. */
+static long long *boundary_edges(const hertz_mesh *m, int *nb)
+{
+  const int npc = m->nodes_per_cell, ne = m->n_cells * npc;
+  long long *k = malloc((size_t)ne * sizeof *k);
+  for (int c = 0; c < m->n_cells; ++c)
+    for (int v = 0; v < npc; ++v)
+      k[c * npc + v] = edge_key(m->cells[c * npc + v], m->cells[c * npc + (v + 1) % npc], m->n_nodes);
+  qsort(k, (size_t)ne, sizeof *k, cmp_edge);
+  int n = 0;
+  for (int i = 0; i < ne;) {
+    int j = i;
+    while (j < ne && k[j] == k[i]) ++j;
+    if (j - i == 1) k[n++] = k[i];
+    i = j;
+  }
+  *nb = n;
+  return k;
+}
+
+static int is_boundary(const long long *b, int nb, int u, int v, int n)
+{
+  const long long key = edge_key(u, v, n);
+  return bsearch(&key, b, (size_t)nb, sizeof key, cmp_edge) != NULL;
+}
+
+/* Checks that hold for both bodies; returns the area, prints the worst cell. */
+static double check_mesh(const hertz_mesh *m, const char *name)
+{
+  const int npc = m->nodes_per_cell;
+  double area = 0.0, min_rel = INFINITY, min_sin = INFINITY;
+  int *used = calloc((size_t)m->n_nodes, sizeof *used);
+  for (int c = 0; c < m->n_cells; ++c) {
+    const int *v = m->cells + c * npc;
+    double a = 0.0, lmax = 0.0;
+    for (int k = 0; k < npc; ++k) {
+      const int p = v[k], q = v[(k + 1) % npc], r = v[(k + npc - 1) % npc];
+      const double l = hypot(m->xy[2 * q] - m->xy[2 * p], m->xy[2 * q + 1] - m->xy[2 * p + 1]);
+      const double l2 = hypot(m->xy[2 * r] - m->xy[2 * p], m->xy[2 * r + 1] - m->xy[2 * p + 1]);
+      if (l > lmax) lmax = l;
+      /* corner cross products: all > 0 means a convex quad, i.e. a bilinear
+         map with positive Jacobian everywhere; for triangles it is the area */
+      const double cr = cross(m->xy, p, q, r);
+      CHECK(cr > 0.0, "%s cell %d corner %d: cross product %.3e <= 0", name, c, k, cr);
+      if (cr / (l * l2) < min_sin) min_sin = cr / (l * l2);
+      used[p] = 1;
+    }
+    for (int k = 1; k + 1 < npc; ++k) a += 0.5 * cross(m->xy, v[0], v[k], v[k + 1]);
+    if (a / (lmax * lmax) < min_rel) min_rel = a / (lmax * lmax);
+    area += a;
+  }
+  for (int i = 0; i < m->n_nodes; ++i) CHECK(used[i], "%s node %d unused", name, i);
+  free(used);
+
+  /* duplicates and mirror symmetry: sort nodes lexicographically */
+  int *idx = malloc((size_t)m->n_nodes * sizeof *idx);
+  for (int i = 0; i < m->n_nodes; ++i) idx[i] = i;
+  g_xy = m->xy;
+  qsort(idx, (size_t)m->n_nodes, sizeof *idx, cmp_node);
+  double dmin = INFINITY;
+  for (int i = 0; i + 1 < m->n_nodes; ++i) {
+    const double *p = m->xy + 2 * idx[i], *q = m->xy + 2 * idx[i + 1];
+    const double d = hypot(q[0] - p[0], q[1] - p[1]);
+    if (d < dmin) dmin = d;
+  }
+  CHECK(dmin > 1e-9, "%s: duplicate nodes (min distance %.3e)", name, dmin);
+  int asym = 0;
+  for (int i = 0; i < m->n_nodes; ++i) {
+    /* the mirror image must exist bit for bit */
+    double mir[2] = {-m->xy[2 * i], m->xy[2 * i + 1]};
+    if (mir[0] == 0.0) continue;
+    int lo = 0, hi = m->n_nodes - 1, found = 0;
+    while (lo <= hi) {
+      const int mid = (lo + hi) / 2;
+      const double *p = m->xy + 2 * idx[mid];
+      const int c = p[0] != mir[0] ? (p[0] < mir[0] ? -1 : 1) : p[1] != mir[1] ? (p[1] < mir[1] ? -1 : 1) : 0;
+      if (c == 0) { found = 1; break; }
+      if (c < 0) lo = mid + 1; else hi = mid - 1;
+    }
+    asym += !found;
+  }
+  CHECK(asym == 0, "%s: %d nodes without an exact mirror image", name, asym);
+  free(idx);
+  printf("  %s: %7d nodes %8d cells  area %.10f  min area/h^2 %.3f  min |sin angle| %.3f\n",
+         name, m->n_nodes, m->n_cells, area, min_rel, min_sin);
+  return area;
+}
+
+static void check_scene(double h1, double h2, int quads)
+{
+  hertz_scene s;
+  printf("h1 = %g, h2 = %g, %s\n", h1, h2, quads ? "Q1" : "P1");
+  if (hertz_scene_build(&s, h1, h2, quads)) {
+    CHECK(0, "build failed");
+    return;
+  }
+  const hertz_mesh *b1 = &s.body[0], *b2 = &s.body[1];
+  const double area1 = check_mesh(b1, "body 1"), area2 = check_mesh(b2, "body 2");
+  int nb1, nb2;
+  long long *bd1 = boundary_edges(b1, &nb1), *bd2 = boundary_edges(b2, &nb2);
+  /* Body 1 is the polygon inscribed in the half-disc: it misses one circular
+     segment (theta - sin theta)/2 per arc chord, O(h^3) each and O(h^2) in all
+     (h the coarsest chord, in the graded tail). Adding them back must give
+     pi/2 to rounding, which checks the arc nodes and the cell cover at once. */
+  double segments = 0.0, chord_max = 0.0;
+  for (int e = 0; e < nb1; ++e) {
+    const int u = (int)(bd1[e] / b1->n_nodes), v = (int)(bd1[e] % b1->n_nodes);
+    if (b1->xy[2 * u + 1] == 1.0 && b1->xy[2 * v + 1] == 1.0) continue; /* flat top */
+    const double c = hypot(b1->xy[2 * u] - b1->xy[2 * v], b1->xy[2 * u + 1] - b1->xy[2 * v + 1]);
+    const double theta = 2.0 * asin(0.5 * c);
+    segments += 0.5 * (theta - sin(theta));
+    if (c > chord_max) chord_max = c;
+  }
+  const double tol = 1e-15 * (b1->n_cells + b2->n_cells) + 1e-13; /* summation rounding */
+  CHECK(area1 < PI / 2 && fabs(area1 + segments - PI / 2) < tol,
+        "body 1 area %.15f + segments %.3e vs pi/2", area1, segments);
+  CHECK(fabs(area2 - 32.0) < 32.0 * tol, "body 2 area %.15f vs 32", area2);
+  printf("  body 1: pi/2 - area = %.3e (coarsest arc chord %.4f), body 2: area - 32 = %.1e\n",
+         PI / 2 - area1, chord_max, area2 - 32.0);
+  double len_top = 0.0, len_c1 = 0.0;
+  for (int e = 0; e < s.n_top_edges; ++e) {
+    const int u = s.top_edges[2 * e], v = s.top_edges[2 * e + 1];
+    CHECK(b1->xy[2 * u + 1] == 1.0 && b1->xy[2 * v + 1] == 1.0, "top edge %d not at y == 1", e);
+    CHECK(is_boundary(bd1, nb1, u, v, b1->n_nodes), "top edge %d not a boundary edge", e);
+    len_top += fabs(b1->xy[2 * u] - b1->xy[2 * v]);
+  }
+  CHECK(fabs(len_top - 2.0) < 1e-15 * s.n_top_edges + 1e-15, "top length %.16f", len_top);
+  int n_arc_c = 0;
+  for (int e = 0; e < s.n_contact_edges[0]; ++e) {
+    const int u = s.contact_edges[0][2 * e], v = s.contact_edges[0][2 * e + 1];
+    for (int k = 0; k < 2; ++k) {
+      const int p = k ? v : u;
+      CHECK(fabs(hypot(b1->xy[2 * p], b1->xy[2 * p + 1] - 1.0) - 1.0) < 1e-15, "contact node %d off the circle", p);
+      CHECK(fabs(b1->xy[2 * p]) <= 0.5, "contact node %d: |x| > 0.5", p);
+    }
+    CHECK(is_boundary(bd1, nb1, u, v, b1->n_nodes), "body-1 contact edge %d not a boundary edge", e);
+    len_c1 += hypot(b1->xy[2 * u] - b1->xy[2 * v], b1->xy[2 * u + 1] - b1->xy[2 * v + 1]);
+    ++n_arc_c;
+  }
+  for (int e = 0; e < s.n_contact_edges[1]; ++e) {
+    const int u = s.contact_edges[1][2 * e], v = s.contact_edges[1][2 * e + 1];
+    CHECK(b2->xy[2 * u + 1] == 0.0 && b2->xy[2 * v + 1] == 0.0, "body-2 contact edge %d not at y == 0", e);
+    CHECK(fabs(b2->xy[2 * u]) <= 1.0 && fabs(b2->xy[2 * v]) <= 1.0, "body-2 contact edge %d: |x| > 1", e);
+    CHECK(is_boundary(bd2, nb2, u, v, b2->n_nodes), "body-2 contact edge %d not a boundary edge", e);
+  }
+  int n_axis = 0, n_bottom = 0, has_origin1 = 0, has_origin2 = 0;
+  for (int i = 0; i < b1->n_nodes; ++i) {
+    n_axis += b1->xy[2 * i] == 0.0;
+    has_origin1 |= b1->xy[2 * i] == 0.0 && b1->xy[2 * i + 1] == 0.0;
+  }
+  for (int i = 0; i < b2->n_nodes; ++i) {
+    n_bottom += b2->xy[2 * i + 1] == -4.0;
+    has_origin2 |= b2->xy[2 * i] == 0.0 && b2->xy[2 * i + 1] == 0.0;
+  }
+  CHECK(n_axis == s.n_axis_nodes, "axis: %d nodes with x == 0, %d listed", n_axis, s.n_axis_nodes);
+  for (int k = 0; k < s.n_axis_nodes; ++k) CHECK(b1->xy[2 * s.axis_nodes[k]] == 0.0, "axis node %d x != 0", k);
+  CHECK(n_bottom == s.n_bottom_nodes, "bottom: %d nodes with y == -4, %d listed", n_bottom, s.n_bottom_nodes);
+  for (int k = 0; k < s.n_bottom_nodes; ++k)
+    CHECK(b2->xy[2 * s.bottom_nodes[k] + 1] == -4.0, "bottom node %d y != -4", k);
+  CHECK(has_origin1 && has_origin2, "the contact point (0,0) is not a node of both bodies");
+  /* the arc length of |x| <= x_max is 2 asin(x_max); chords are a little shorter */
+  printf("  contact edges %d (arc length %.6f, |x| <= %.4f) / %d, top edges %d, axis nodes %d, bottom nodes %d\n",
+         n_arc_c, len_c1, 0.5, s.n_contact_edges[1], s.n_top_edges, s.n_axis_nodes, s.n_bottom_nodes);
+  const long dofs1 = 2L * b1->n_nodes, dofs2 = 2L * b2->n_nodes;
+  printf("  DOFs: body 1 %ld + body 2 %ld = %ld\n", dofs1, dofs2, dofs1 + dofs2);
+  free(bd1);
+  free(bd2);
+  hertz_scene_free(&s);
+}
+
+int main(int argc, char **argv)
+{
+  hertz_scene s;
+  /* argument validation and NULL-safety */
+  CHECK(hertz_scene_build(&s, 0.0, 0.02, 0) != 0, "h1 = 0 accepted");
+  CHECK(hertz_scene_build(&s, 0.02, NAN, 0) != 0, "h2 = NaN accepted");
+  CHECK(hertz_scene_build(&s, 0.02, 0.02, 2) != 0, "quads = 2 accepted");
+  CHECK(hertz_scene_build(NULL, 0.02, 0.02, 0) != 0, "NULL scene accepted");
+  hertz_scene_free(NULL);
+
+  double a, p0;
+  hertz_analytic(&a, &p0);
+  printf("Hertz: a = %.10f, p0 = %.10f\n", a, p0);
+
+  if (argc > 2) {
+    for (int i = 1; i + 1 < argc; i += 2) {
+      check_scene(atof(argv[i]), atof(argv[i + 1]), 0);
+      check_scene(atof(argv[i]), atof(argv[i + 1]), 1);
+    }
+  } else {
+    const double h[][2] = {{0.2, 0.2}, {0.1, 0.137}, {0.05, 0.05}, {0.02, 0.02}, {0.02, 0.0274},
+                           {0.01, 0.0137}, {0.005, 0.00685}, {0.0008, 0.0008}, {0.0008, 0.001096}};
+    for (size_t i = 0; i < sizeof h / sizeof h[0]; ++i)
+      for (int quads = 0; quads < 2; ++quads) check_scene(h[i][0], h[i][1], quads);
+  }
+  printf(failures ? "%d FAILURES\n" : "all checks passed\n", failures);
+  return failures != 0;
+}

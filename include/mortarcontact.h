@@ -1,0 +1,227 @@
+/*
+ * mortarcontact.h - frictionless unilateral contact between two linear-elastic
+ * 2D bodies meshed independently, by the mortar finite element method of
+ * Ben Belgacem, Hild and Laborde (M3AS 9(2), 1999).
+ *
+ * The C ABI of this header is stable within a major version: see docs/abi.md.
+ *
+ * Conventions that hold for every entry point
+ * -------------------------------------------
+ * - Status: every call that can fail returns an mc_status; MC_OK is 0. After a
+ *   failure mc_errmsg(model) names the argument and, where there is one, the
+ *   offending index. A failed call leaves the model as it was before the call:
+ *   the model stays usable.
+ * - Threading: a model is used by one thread at a time; distinct models are
+ *   fully independent (the library keeps no global mutable state), so two
+ *   threads may solve two models at once.
+ * - Ownership: every input array is copied before the call returns. Outputs go
+ *   into caller-allocated arrays whose required size each comment states; the
+ *   library never writes beyond that size.
+ * - Ids: node, cell and edge ids are 0-based by default, 1-based after
+ *   mc_set_index_base(m, 1); this applies to ids passed in and returned. The
+ *   body number is always 1 or 2 (the paper's Omega^1 and Omega^2).
+ * - Units: any consistent system. Forces per unit length of edge (tractions)
+ *   and per unit area (body forces) are per unit thickness times the thickness
+ *   set by mc_set_plane, as in a 2D model of a slab.
+ * - The library never aborts and no C++ exception crosses this interface.
+ */
+#ifndef MORTARCONTACT_H
+#define MORTARCONTACT_H
+
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(_WIN32)
+#define MC_API
+#elif defined(__GNUC__)
+#define MC_API __attribute__((visibility("default")))
+#else
+#define MC_API
+#endif
+
+#define MC_VERSION_MAJOR 0
+#define MC_VERSION_MINOR 1
+#define MC_VERSION_PATCH 0
+#define MC_VERSION_NUMBER (MC_VERSION_MAJOR * 10000 + MC_VERSION_MINOR * 100 + MC_VERSION_PATCH)
+#define MC_VERSION_STRING "0.1.0"
+
+typedef struct mc_model mc_model; /* opaque; one per scene, no global state */
+typedef int32_t mc_int;           /* node, cell and edge ids, counts */
+
+/* Status codes. Values are frozen; new codes are only ever appended. */
+typedef enum mc_status {
+  MC_OK = 0,
+  MC_ERROR_ARGUMENT = 1,       /* a NULL pointer, a bad body, an id or value out of range */
+  MC_ERROR_MESH = 2,           /* degenerate, inverted or duplicated cells; edges not on the boundary */
+  MC_ERROR_MATERIAL = 3,       /* E <= 0, nu outside (-1, 1/2), elasticity matrix not SPD */
+  MC_ERROR_STATE = 4,          /* call out of order (no mesh yet, results before a solve) */
+  MC_ERROR_CONTACT = 5,        /* contact surfaces that do not face each other, bad contact edges */
+  MC_ERROR_SINGULAR = 6,       /* rigid motion not prevented by supports or by contact */
+  MC_ERROR_NOT_CONVERGED = 7,  /* the active-set iteration did not reach complementarity */
+  MC_ERROR_MEMORY = 8,         /* allocation failed */
+  MC_ERROR_INTERNAL = 9        /* a bug: please report with the message */
+} mc_status;
+
+enum { MC_PLANE_STRAIN = 0, MC_PLANE_STRESS = 1 };
+enum { MC_X = 1, MC_Y = 2, MC_XY = 3 }; /* component masks for mc_fix */
+
+/* Options (mc_set_option_int / mc_set_option_real). Values are frozen. */
+enum {
+  MC_OPTION_METHOD = 1,         /* int: MC_METHOD_*; default MC_METHOD_MORTAR */
+  MC_OPTION_TOLERANCE = 2,      /* real: relative complementarity/equilibrium tolerance; default 1e-10 */
+  MC_OPTION_MAX_ITERATIONS = 3, /* int: active-set iterations before MC_ERROR_NOT_CONVERGED; default 200 */
+  MC_OPTION_ORDERING = 4,       /* int: MC_ORDERING_*; fill-reducing ordering; default MC_ORDERING_AUTO */
+  MC_OPTION_Q1_INTEGRATION = 6  /* int: MC_Q1_*; default MC_Q1_FULL */
+};
+
+/* Values of MC_OPTION_METHOD: how the non-penetration condition is discretized. */
+enum {
+  MC_METHOD_MORTAR = 0,          /* the paper's cone K_h: nodal values of u1.n + pi_h^1(u2.n) (3.2) */
+  MC_METHOD_DUAL_MORTAR = 1,     /* same, with Wohlmuth's biorthogonal multiplier basis (diagonal D) */
+  MC_METHOD_NODE_TO_SEGMENT = 2  /* pointwise: each body-1 node against the body-2 point it projects to */
+};
+
+/* Values of MC_OPTION_ORDERING. */
+enum { MC_ORDERING_AUTO = 0, MC_ORDERING_AMD = 1, MC_ORDERING_METIS = 2 };
+
+/* Values of MC_OPTION_Q1_INTEGRATION (quadrilaterals only). */
+enum {
+  MC_Q1_FULL = 0, /* 2x2 Gauss */
+  MC_Q1_BBAR = 1  /* B-bar: volumetric strain averaged per cell, locking-free for nu -> 1/2 */
+};
+
+/* Infos (mc_get_info_int / mc_get_info_real): what the last mc_solve did. */
+enum {
+  MC_INFO_DOFS = 1,                /* int: unknowns after eliminating supports, both bodies */
+  MC_INFO_FACTOR_NNZ = 2,          /* int: nonzeros of the Cholesky factors */
+  MC_INFO_ITERATIONS = 3,          /* int: active-set iterations of the last solve */
+  MC_INFO_ACTIVE_NODES = 4,        /* int: body-1 contact nodes with a positive force */
+  MC_INFO_CONTACT_NODES = 5,       /* int: body-1 contact nodes that see body 2 (constraint rows) */
+  MC_INFO_FACTORIZATIONS = 6,      /* int: numeric factorizations done by the last solve (0 on reuse) */
+  MC_INFO_TIME_ASSEMBLY = 20,      /* real, seconds */
+  MC_INFO_TIME_ANALYSIS = 21,      /* real, seconds: ordering and symbolic factorization */
+  MC_INFO_TIME_FACTORIZATION = 22, /* real, seconds: numeric factorization */
+  MC_INFO_TIME_SOLVE = 23,         /* real, seconds: triangular solves */
+  MC_INFO_TIME_CONTACT = 24,       /* real, seconds: geometry, mortar operators, interface operator, QP */
+  MC_INFO_TIME_TOTAL = 25,         /* real, seconds: the whole mc_solve */
+  MC_INFO_STRAIN_ENERGY = 26,      /* real: 1/2 u^T K u over both bodies */
+  MC_INFO_COMPLEMENTARITY = 27,    /* real: largest relative violation of lambda>=0, gap>=0, lambda*gap=0 */
+  MC_INFO_EQUILIBRIUM = 28         /* real: ||K u + B^T lambda - f|| / ||f|| on the free unknowns */
+};
+
+/* ---- lifecycle, errors, version ---------------------------------------- */
+
+/* Creates an empty model in *model. Returns MC_ERROR_ARGUMENT if model is NULL. */
+MC_API mc_status mc_create(mc_model **model);
+/* Frees the model and everything it owns. NULL is fine. */
+MC_API void mc_destroy(mc_model *model);
+/* The message of the last failed call on this model, "" if the last call succeeded.
+   Valid until the next call on the model. A NULL model gives a static message. */
+MC_API const char *mc_errmsg(const mc_model *model);
+/* A static English name of a status code ("MC_OK", ...); unknown codes give "unknown status". */
+MC_API const char *mc_status_string(mc_status status);
+/* The library's version as "MAJOR.MINOR.PATCH" (static storage). */
+MC_API const char *mc_version_string(void);
+/* The library's version as MAJOR*10000+MINOR*100+PATCH; equals MC_VERSION_NUMBER of a matching header. */
+MC_API int mc_version_number(void);
+
+/* ---- the scene ----------------------------------------------------------- */
+
+/* 0 (default) or 1: the base of all node, cell and edge ids, in and out. */
+MC_API mc_status mc_set_index_base(mc_model *m, int base);
+/* MC_PLANE_STRAIN (default) or MC_PLANE_STRESS, and the thickness (> 0, default 1)
+   that multiplies every stiffness and load. */
+MC_API mc_status mc_set_plane(mc_model *m, int plane, double thickness);
+/* The mesh of a body (1 or 2). xy: 2 per node. cells: nodes_per_cell ids each,
+   counter-clockwise; 3 = P1 triangle, 4 = Q1 quadrilateral. Every node must be used by a cell.
+   Setting a mesh again clears that body's materials, supports, loads and contact surface. */
+MC_API mc_status mc_set_mesh(mc_model *m, int body, mc_int n_nodes, const double *xy,
+                             mc_int n_cells, int nodes_per_cell, const mc_int *cells);
+/* Isotropic material of the whole body: Young's modulus > 0, Poisson's ratio in (-1, 1/2). */
+MC_API mc_status mc_set_material(mc_model *m, int body, double young, double poisson);
+/* The paper's A(x) per cell: 9 per cell, a row-major symmetric positive definite 3x3 matrix in
+   Voigt notation (xx, yy, engineering xy) giving the in-plane stress from the in-plane strain.
+   Overrides mc_set_material for this body (mc_set_plane's thickness still applies; the
+   plane-strain/plane-stress choice does not, as the matrix already is the in-plane law;
+   mc_get_stress then reports sigma_zz = 0). */
+MC_API mc_status mc_set_cell_elasticity(mc_model *m, int body, const double *d);
+/* Prescribes displacements: for each of the n nodes, the components in the mask (MC_X, MC_Y,
+   MC_XY) take the given values. values: 2 per node (x, y); components not in the mask are
+   ignored; NULL means zero. A later call on the same node and component overrides. */
+MC_API mc_status mc_fix(mc_model *m, int body, mc_int n, const mc_int *nodes, int components,
+                        const double *values);
+/* Adds a traction on boundary edges. edges: 2 node ids each, an edge of a cell on the boundary;
+   traction: 2 per edge, force per unit length, global axes, uniform along the edge. */
+MC_API mc_status mc_add_traction(mc_model *m, int body, mc_int n_edges, const mc_int *edges,
+                                 const double *traction);
+/* Adds a normal pressure on boundary edges: 1 per edge, > 0 pushes into the body. */
+MC_API mc_status mc_add_pressure(mc_model *m, int body, mc_int n_edges, const mc_int *edges,
+                                 const double *pressure);
+/* Adds point forces: force has 2 per node. */
+MC_API mc_status mc_add_nodal_force(mc_model *m, int body, mc_int n, const mc_int *nodes,
+                                    const double *force);
+/* Sets (replaces) a uniform body force per unit area (per unit volume times thickness 1). */
+MC_API mc_status mc_set_body_force(mc_model *m, int body, double fx, double fy);
+/* Removes every load (tractions, pressures, nodal and body forces) of a body; supports stay.
+   Use it with the add_ calls to step loads: the next solve reuses the factorization. */
+MC_API mc_status mc_clear_loads(mc_model *m, int body);
+
+/* Candidate contact surface of a body: boundary edges, 2 node ids each. Body 1 is the
+   non-mortar side (the paper's Omega^1: its trace carries the constraint and the
+   multipliers); body 2 is the mortar side. Both bodies need one for a contact solve.
+   The surface may be open chains or closed loops. Body-1 nodes whose normal line does
+   not meet body 2's surface "see no mortar surface": they drop out of the constraint set
+   (zero force, zero pressure, gap reported as +infinity). */
+MC_API mc_status mc_set_contact(mc_model *m, int body, mc_int n_edges, const mc_int *edges);
+
+/* ---- options and solving ------------------------------------------------ */
+
+/* Sets an integer option (MC_OPTION_*). */
+MC_API mc_status mc_set_option_int(mc_model *m, int option, int64_t value);
+/* Sets a real option (MC_OPTION_*). */
+MC_API mc_status mc_set_option_real(mc_model *m, int option, double value);
+/* Solves the scene. Without contact surfaces: two independent elasticity problems, each
+   needing supports that prevent rigid motion (else MC_ERROR_SINGULAR). With contact
+   surfaces: the discrete variational inequality (3.5); a body may then be held by contact
+   alone (Corollary 4.1). A solve after changing only loads, prescribed values or nothing
+   reuses the factorizations and the interface operator. */
+MC_API mc_status mc_solve(mc_model *m);
+
+/* ---- results ------------------------------------------------------------ */
+
+MC_API mc_status mc_get_info_int(const mc_model *m, int info, int64_t *value);
+MC_API mc_status mc_get_info_real(const mc_model *m, int info, double *value);
+/* Displacements of a body: 2 per node (n_nodes of that body). */
+MC_API mc_status mc_get_displacement(const mc_model *m, int body, double *u);
+/* Stresses of a body: 4 per cell: xx yy xy zz, averaged over the cell (exact for P1). */
+MC_API mc_status mc_get_stress(const mc_model *m, int body, double *sigma);
+/* Support reactions of a body: 2 per node; the force the supports exert on the body at
+   prescribed components, 0 at the others. Reactions + applied loads + contact forces = 0. */
+MC_API mc_status mc_get_reaction(const mc_model *m, int body, double *r);
+
+/* Number of body-1 contact-surface nodes (the length of the arrays below). */
+MC_API mc_status mc_get_contact_count(const mc_model *m, mc_int *n);
+/* Their ids (index base applies), in order along each chain of Gamma_c. */
+MC_API mc_status mc_get_contact_nodes(const mc_model *m, mc_int *nodes);
+/* Contact pressure at those nodes, >= 0, force per unit area (per unit length of Gamma_c per
+   unit thickness). Recovered by lumping: p_j = lambda_j / (t * integral of phi_j over
+   Gamma_c), which is exact for uniform pressure. */
+MC_API mc_status mc_get_contact_pressure(const mc_model *m, double *p);
+/* Nodal multipliers lambda_j >= 0: the normal contact force on body-1 node j (total force,
+   thickness included), pushing body 1 along -n_j. */
+MC_API mc_status mc_get_contact_force(const mc_model *m, double *f);
+/* Discrete gap after the solve: g0_j - (u1_j - pi(u2)_j).n_j >= 0 (the row of the cone K_h);
+   +infinity for nodes that see no mortar surface. */
+MC_API mc_status mc_get_contact_gap(const mc_model *m, double *g);
+/* Initial gap g0_j along the normal (negative: interference); +infinity where no mortar surface. */
+MC_API mc_status mc_get_contact_initial_gap(const mc_model *m, double *g0);
+/* Unit outward normals n_j of body 1 at the contact nodes: 2 per node. */
+MC_API mc_status mc_get_contact_normal(const mc_model *m, double *n);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* MORTARCONTACT_H */

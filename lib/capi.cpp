@@ -1,0 +1,515 @@
+// The C API: argument checks with messages naming the argument and index, the index base,
+// and the boundary no C++ exception crosses. Every entry point follows one pattern: run the
+// body inside guard(), which turns an mc::Error (or any other exception) into a status and
+// the model's message.
+#include "error.hpp"
+#include "model.hpp"
+#include "mortarcontact.h"
+#include <cmath>
+#include <cstring>
+#include <new>
+#include <string>
+
+struct mc_model {
+  mc::Model model;
+  std::string message;
+};
+
+namespace {
+
+using mc::fail;
+
+template <class F>
+mc_status guard(mc_model *m, F &&body) {
+  if (!m) return MC_ERROR_ARGUMENT;
+  try {
+    body(m->model);
+    m->message.clear();
+    return MC_OK;
+  } catch (const mc::Error &e) {
+    m->message = e.what();
+    return e.status();
+  } catch (const std::bad_alloc &) {
+    m->message = "out of memory";
+    return MC_ERROR_MEMORY;
+  } catch (const std::exception &e) {
+    m->message = std::string("internal error: ") + e.what();
+    return MC_ERROR_INTERNAL;
+  } catch (...) {
+    m->message = "internal error: unknown exception";
+    return MC_ERROR_INTERNAL;
+  }
+}
+
+// Getters take a const model but still record their error message.
+template <class F>
+mc_status guard_const(const mc_model *m, F &&body) {
+  return guard(const_cast<mc_model *>(m), [&](mc::Model &model) { body(static_cast<const mc::Model &>(model)); });
+}
+
+int body_index(int body) {
+  if (body != 1 && body != 2) fail(MC_ERROR_ARGUMENT, "body = %d: must be 1 or 2", body);
+  return body - 1;
+}
+
+mc::Body &meshed_body(mc::Model &model, int body) {
+  mc::Body &b = model.body[body_index(body)];
+  if (!b.has_mesh) fail(MC_ERROR_STATE, "body %d has no mesh: call mc_set_mesh first", body);
+  return b;
+}
+
+const mc::Body &solved_body(const mc::Model &model, int body) {
+  const mc::Body &b = model.body[body_index(body)];
+  if (!b.has_mesh) fail(MC_ERROR_STATE, "body %d has no mesh: call mc_set_mesh first", body);
+  if (!model.solved) fail(MC_ERROR_STATE, "no solution: call mc_solve first (or again, after changing the scene)");
+  return b;
+}
+
+void require_pointer(const void *p, const char *name) {
+  if (!p) fail(MC_ERROR_ARGUMENT, "%s is NULL", name);
+}
+
+void require_count(mc_int n, const char *name) {
+  if (n < 0) fail(MC_ERROR_ARGUMENT, "%s = %d: must not be negative", name, int(n));
+}
+
+void require_finite(const double *values, size_t count, const char *name) {
+  for (size_t i = 0; i < count; ++i)
+    if (!std::isfinite(values[i])) fail(MC_ERROR_ARGUMENT, "%s[%zu] is not finite", name, i);
+}
+
+// A node id given by the caller, checked and made 0-based.
+int node_id(const mc::Model &model, const mc::Mesh &mesh, mc_int id, const char *name, size_t index) {
+  int local = int(id) - model.index_base;
+  if (local < 0 || local >= mesh.n_nodes())
+    fail(MC_ERROR_ARGUMENT, "%s[%zu] = %d: node id out of range [%d, %d] (index base %d)", name, index, int(id),
+         model.index_base, mesh.n_nodes() - 1 + model.index_base, model.index_base);
+  return local;
+}
+
+// Edges for loads: boundary edges, returned oriented as their cells.
+std::vector<mc::SurfaceSegment> load_edges(const mc::Model &model, const mc::Mesh &mesh, mc_int n, const mc_int *edges) {
+  std::vector<mc::SurfaceSegment> out;
+  for (mc_int e = 0; e < n; ++e) {
+    int a = node_id(model, mesh, edges[2 * e], "edges", 2 * size_t(e));
+    int b = node_id(model, mesh, edges[2 * e + 1], "edges", 2 * size_t(e) + 1);
+    const mc::BoundaryEdge *edge = mesh.boundary_edge(a, b);
+    if (!edge)
+      fail(MC_ERROR_MESH, "edges[%d..%d] = (%d, %d) is not an edge on the boundary of the mesh", 2 * int(e),
+           2 * int(e) + 1, int(edges[2 * e]), int(edges[2 * e + 1]));
+    out.push_back({edge->from, edge->to});
+  }
+  return out;
+}
+
+// A symmetric positive definite 3x3 matrix (Cholesky succeeds with positive pivots).
+bool symmetric_positive_definite(const double *d) {
+  double scale = 0;
+  for (int i = 0; i < 9; ++i) scale = std::max(scale, std::fabs(d[i]));
+  for (int i = 0; i < 3; ++i)
+    for (int j = i + 1; j < 3; ++j)
+      if (std::fabs(d[3 * i + j] - d[3 * j + i]) > 1e-12 * scale) return false;
+  double l00 = d[0];
+  if (!(l00 > 1e-14 * scale)) return false;
+  double l10 = d[3] / std::sqrt(l00), l20 = d[6] / std::sqrt(l00);
+  double l11sq = d[4] - l10 * l10;
+  if (!(l11sq > 1e-14 * scale)) return false;
+  double l21 = (d[7] - l20 * l10) / std::sqrt(l11sq);
+  return d[8] - l20 * l20 - l21 * l21 > 1e-14 * scale;
+}
+
+}  // namespace
+
+extern "C" {
+
+mc_status mc_create(mc_model **model) {
+  if (!model) return MC_ERROR_ARGUMENT;
+  *model = nullptr;
+  try {
+    *model = new mc_model();
+  } catch (...) {
+    return MC_ERROR_MEMORY;
+  }
+  return MC_OK;
+}
+
+void mc_destroy(mc_model *model) { delete model; }
+
+const char *mc_errmsg(const mc_model *model) {
+  if (!model) return "model is NULL";
+  return model->message.c_str();
+}
+
+const char *mc_status_string(mc_status status) {
+  switch (status) {
+    case MC_OK: return "MC_OK";
+    case MC_ERROR_ARGUMENT: return "MC_ERROR_ARGUMENT";
+    case MC_ERROR_MESH: return "MC_ERROR_MESH";
+    case MC_ERROR_MATERIAL: return "MC_ERROR_MATERIAL";
+    case MC_ERROR_STATE: return "MC_ERROR_STATE";
+    case MC_ERROR_CONTACT: return "MC_ERROR_CONTACT";
+    case MC_ERROR_SINGULAR: return "MC_ERROR_SINGULAR";
+    case MC_ERROR_NOT_CONVERGED: return "MC_ERROR_NOT_CONVERGED";
+    case MC_ERROR_MEMORY: return "MC_ERROR_MEMORY";
+    case MC_ERROR_INTERNAL: return "MC_ERROR_INTERNAL";
+  }
+  return "unknown status";
+}
+
+const char *mc_version_string(void) { return MC_VERSION_STRING; }
+int mc_version_number(void) { return MC_VERSION_NUMBER; }
+
+mc_status mc_set_index_base(mc_model *m, int base) {
+  return guard(m, [&](mc::Model &model) {
+    if (base != 0 && base != 1) fail(MC_ERROR_ARGUMENT, "base = %d: must be 0 or 1", base);
+    model.index_base = base;
+  });
+}
+
+mc_status mc_set_plane(mc_model *m, int plane, double thickness) {
+  return guard(m, [&](mc::Model &model) {
+    if (plane != MC_PLANE_STRAIN && plane != MC_PLANE_STRESS)
+      fail(MC_ERROR_ARGUMENT, "plane = %d: must be MC_PLANE_STRAIN (0) or MC_PLANE_STRESS (1)", plane);
+    if (!(thickness > 0) || !std::isfinite(thickness))
+      fail(MC_ERROR_ARGUMENT, "thickness = %g: must be positive and finite", thickness);
+    model.plane_stress = plane == MC_PLANE_STRESS;
+    model.thickness = thickness;
+    model.structure_changed();
+  });
+}
+
+mc_status mc_set_mesh(mc_model *m, int body, mc_int n_nodes, const double *xy, mc_int n_cells, int nodes_per_cell,
+                      const mc_int *cells) {
+  return guard(m, [&](mc::Model &model) {
+    int b = body_index(body);
+    require_pointer(xy, "xy");
+    require_pointer(cells, "cells");
+    require_count(n_nodes, "n_nodes");
+    require_count(n_cells, "n_cells");
+    if (nodes_per_cell != 3 && nodes_per_cell != 4)
+      fail(MC_ERROR_ARGUMENT, "nodes_per_cell = %d: must be 3 (P1 triangle) or 4 (Q1 quadrilateral)", nodes_per_cell);
+    std::vector<int> local(size_t(n_cells) * nodes_per_cell);
+    for (size_t k = 0; k < local.size(); ++k) local[k] = int(cells[k]) - model.index_base;
+    mc::Body fresh;
+    fresh.mesh = mc::Mesh(n_nodes, xy, n_cells, nodes_per_cell, local.data(), model.index_base);
+    fresh.has_mesh = true;
+    fresh.prescribed.assign(2 * size_t(n_nodes), 0);
+    fresh.prescribed_value.assign(2 * size_t(n_nodes), 0.0);
+    fresh.nodal_force.assign(2 * size_t(n_nodes), 0.0);
+    model.body[b] = std::move(fresh);
+    model.structure_changed();
+  });
+}
+
+mc_status mc_set_material(mc_model *m, int body, double young, double poisson) {
+  return guard(m, [&](mc::Model &model) {
+    mc::Body &b = meshed_body(model, body);
+    if (!(young > 0) || !std::isfinite(young))
+      fail(MC_ERROR_MATERIAL, "young = %g (body %d): Young's modulus must be positive and finite", young, body);
+    if (!(poisson > -1 && poisson < 0.5))
+      fail(MC_ERROR_MATERIAL, "poisson = %g (body %d): Poisson's ratio must lie in (-1, 1/2)", poisson, body);
+    b.young = young, b.poisson = poisson, b.has_material = true;
+    b.cell_elasticity.clear();
+    model.structure_changed();
+  });
+}
+
+mc_status mc_set_cell_elasticity(mc_model *m, int body, const double *d) {
+  return guard(m, [&](mc::Model &model) {
+    mc::Body &b = meshed_body(model, body);
+    require_pointer(d, "d");
+    const size_t n = 9 * size_t(b.mesh.n_cells());
+    require_finite(d, n, "d");
+    for (int c = 0; c < b.mesh.n_cells(); ++c)
+      if (!symmetric_positive_definite(d + 9 * size_t(c)))
+        fail(MC_ERROR_MATERIAL, "d[%d..%d] (cell %d of body %d): the elasticity matrix must be symmetric positive definite",
+             9 * c, 9 * c + 8, c + model.index_base, body);
+    b.cell_elasticity.assign(d, d + n);
+    b.has_material = true;
+    model.structure_changed();
+  });
+}
+
+mc_status mc_fix(mc_model *m, int body, mc_int n, const mc_int *nodes, int components, const double *values) {
+  return guard(m, [&](mc::Model &model) {
+    mc::Body &b = meshed_body(model, body);
+    require_count(n, "n");
+    if (n > 0) require_pointer(nodes, "nodes");
+    if (components < MC_X || components > MC_XY)
+      fail(MC_ERROR_ARGUMENT, "components = %d: must be MC_X (1), MC_Y (2) or MC_XY (3)", components);
+    if (values) require_finite(values, 2 * size_t(n), "values");
+    std::vector<int> local(n);
+    for (mc_int i = 0; i < n; ++i) local[i] = node_id(model, b.mesh, nodes[i], "nodes", size_t(i));
+    bool new_support = false;
+    for (mc_int i = 0; i < n; ++i)
+      for (int c = 0; c < 2; ++c) {
+        if (!(components & (1 << c))) continue;
+        int dof = 2 * local[i] + c;
+        new_support = new_support || !b.prescribed[dof];
+        b.prescribed[dof] = 1;
+        b.prescribed_value[dof] = values ? values[2 * size_t(i) + c] : 0.0;
+      }
+    if (new_support) model.structure_changed();
+    else model.values_changed();
+  });
+}
+
+mc_status mc_add_traction(mc_model *m, int body, mc_int n_edges, const mc_int *edges, const double *traction) {
+  return guard(m, [&](mc::Model &model) {
+    mc::Body &b = meshed_body(model, body);
+    require_count(n_edges, "n_edges");
+    if (n_edges > 0) require_pointer(edges, "edges"), require_pointer(traction, "traction");
+    if (n_edges > 0) require_finite(traction, 2 * size_t(n_edges), "traction");
+    std::vector<mc::SurfaceSegment> oriented = load_edges(model, b.mesh, n_edges, edges);
+    for (mc_int e = 0; e < n_edges; ++e)
+      b.edge_loads.push_back({oriented[e].a, oriented[e].b, traction[2 * e], traction[2 * e + 1], false});
+    model.values_changed();
+  });
+}
+
+mc_status mc_add_pressure(mc_model *m, int body, mc_int n_edges, const mc_int *edges, const double *pressure) {
+  return guard(m, [&](mc::Model &model) {
+    mc::Body &b = meshed_body(model, body);
+    require_count(n_edges, "n_edges");
+    if (n_edges > 0) require_pointer(edges, "edges"), require_pointer(pressure, "pressure");
+    if (n_edges > 0) require_finite(pressure, size_t(n_edges), "pressure");
+    std::vector<mc::SurfaceSegment> oriented = load_edges(model, b.mesh, n_edges, edges);
+    for (mc_int e = 0; e < n_edges; ++e) b.edge_loads.push_back({oriented[e].a, oriented[e].b, pressure[e], 0, true});
+    model.values_changed();
+  });
+}
+
+mc_status mc_add_nodal_force(mc_model *m, int body, mc_int n, const mc_int *nodes, const double *force) {
+  return guard(m, [&](mc::Model &model) {
+    mc::Body &b = meshed_body(model, body);
+    require_count(n, "n");
+    if (n > 0) require_pointer(nodes, "nodes"), require_pointer(force, "force");
+    if (n > 0) require_finite(force, 2 * size_t(n), "force");
+    std::vector<int> local(n);
+    for (mc_int i = 0; i < n; ++i) local[i] = node_id(model, b.mesh, nodes[i], "nodes", size_t(i));
+    for (mc_int i = 0; i < n; ++i)
+      b.nodal_force[2 * local[i]] += force[2 * i], b.nodal_force[2 * local[i] + 1] += force[2 * i + 1];
+    model.values_changed();
+  });
+}
+
+mc_status mc_set_body_force(mc_model *m, int body, double fx, double fy) {
+  return guard(m, [&](mc::Model &model) {
+    mc::Body &b = meshed_body(model, body);
+    if (!std::isfinite(fx)) fail(MC_ERROR_ARGUMENT, "fx = %g: must be finite", fx);
+    if (!std::isfinite(fy)) fail(MC_ERROR_ARGUMENT, "fy = %g: must be finite", fy);
+    b.body_force[0] = fx, b.body_force[1] = fy;
+    model.values_changed();
+  });
+}
+
+mc_status mc_clear_loads(mc_model *m, int body) {
+  return guard(m, [&](mc::Model &model) {
+    mc::Body &b = meshed_body(model, body);
+    std::fill(b.nodal_force.begin(), b.nodal_force.end(), 0.0);
+    b.edge_loads.clear();
+    b.body_force[0] = b.body_force[1] = 0;
+    model.values_changed();
+  });
+}
+
+mc_status mc_set_contact(mc_model *m, int body, mc_int n_edges, const mc_int *edges) {
+  return guard(m, [&](mc::Model &model) {
+    mc::Body &b = meshed_body(model, body);
+    if (n_edges < 1) fail(MC_ERROR_ARGUMENT, "n_edges = %d: a contact surface needs at least one edge", int(n_edges));
+    require_pointer(edges, "edges");
+    std::vector<int> local(2 * size_t(n_edges));
+    for (size_t k = 0; k < local.size(); ++k) local[k] = int(edges[k]) - model.index_base;
+    b.contact = mc::oriented_surface(b.mesh, local.data(), n_edges, model.index_base);
+    b.has_contact = true;
+    model.structure_changed();
+  });
+}
+
+mc_status mc_set_option_int(mc_model *m, int option, int64_t value) {
+  return guard(m, [&](mc::Model &model) {
+    switch (option) {
+      case MC_OPTION_METHOD:
+        if (value < MC_METHOD_MORTAR || value > MC_METHOD_NODE_TO_SEGMENT)
+          fail(MC_ERROR_ARGUMENT, "value = %lld: MC_OPTION_METHOD takes MC_METHOD_MORTAR (0), MC_METHOD_DUAL_MORTAR (1) "
+               "or MC_METHOD_NODE_TO_SEGMENT (2)", (long long)value);
+        model.options.method = int(value);
+        model.structure_changed();
+        break;
+      case MC_OPTION_MAX_ITERATIONS:
+        if (value < 1 || value > 1000000)
+          fail(MC_ERROR_ARGUMENT, "value = %lld: MC_OPTION_MAX_ITERATIONS takes 1 to 1000000", (long long)value);
+        model.options.max_iterations = int(value);
+        model.values_changed();
+        break;
+      case MC_OPTION_ORDERING:
+        if (value < MC_ORDERING_AUTO || value > MC_ORDERING_METIS)
+          fail(MC_ERROR_ARGUMENT, "value = %lld: MC_OPTION_ORDERING takes MC_ORDERING_AUTO (0), MC_ORDERING_AMD (1) "
+               "or MC_ORDERING_METIS (2)", (long long)value);
+        model.options.ordering = int(value);
+        model.structure_changed();
+        break;
+      case MC_OPTION_Q1_INTEGRATION:
+        if (value != MC_Q1_FULL && value != MC_Q1_BBAR)
+          fail(MC_ERROR_ARGUMENT, "value = %lld: MC_OPTION_Q1_INTEGRATION takes MC_Q1_FULL (0) or MC_Q1_BBAR (1)",
+               (long long)value);
+        model.options.q1_integration = int(value);
+        model.structure_changed();
+        break;
+      case MC_OPTION_TOLERANCE:
+        fail(MC_ERROR_ARGUMENT, "option = %d (MC_OPTION_TOLERANCE) is real-valued: use mc_set_option_real", option);
+      default:
+        fail(MC_ERROR_ARGUMENT, "option = %d: not an integer option", option);
+    }
+  });
+}
+
+mc_status mc_set_option_real(mc_model *m, int option, double value) {
+  return guard(m, [&](mc::Model &model) {
+    if (option != MC_OPTION_TOLERANCE) {
+      if (option == MC_OPTION_METHOD || option == MC_OPTION_MAX_ITERATIONS || option == MC_OPTION_ORDERING ||
+          option == MC_OPTION_Q1_INTEGRATION)
+        fail(MC_ERROR_ARGUMENT, "option = %d is integer-valued: use mc_set_option_int", option);
+      fail(MC_ERROR_ARGUMENT, "option = %d: not a real option", option);
+    }
+    if (!(value > 0 && value < 1))
+      fail(MC_ERROR_ARGUMENT, "value = %g: MC_OPTION_TOLERANCE must lie in (0, 1)", value);
+    model.options.tolerance = value;
+    model.values_changed();
+  });
+}
+
+mc_status mc_solve(mc_model *m) {
+  return guard(m, [&](mc::Model &model) { model.solve(); });
+}
+
+mc_status mc_get_info_int(const mc_model *m, int info, int64_t *value) {
+  return guard_const(m, [&](const mc::Model &model) {
+    require_pointer(value, "value");
+    const mc::Infos &i = model.infos;
+    switch (info) {
+      case MC_INFO_DOFS: *value = i.dofs; break;
+      case MC_INFO_FACTOR_NNZ: *value = i.factor_nnz; break;
+      case MC_INFO_ITERATIONS: *value = i.iterations; break;
+      case MC_INFO_ACTIVE_NODES: *value = i.active; break;
+      case MC_INFO_CONTACT_NODES: *value = i.contact_rows; break;
+      case MC_INFO_FACTORIZATIONS: *value = i.factorizations; break;
+      default:
+        if (info >= MC_INFO_TIME_ASSEMBLY && info <= MC_INFO_EQUILIBRIUM)
+          fail(MC_ERROR_ARGUMENT, "info = %d is real-valued: use mc_get_info_real", info);
+        fail(MC_ERROR_ARGUMENT, "info = %d: not an info", info);
+    }
+  });
+}
+
+mc_status mc_get_info_real(const mc_model *m, int info, double *value) {
+  return guard_const(m, [&](const mc::Model &model) {
+    require_pointer(value, "value");
+    const mc::Infos &i = model.infos;
+    switch (info) {
+      case MC_INFO_TIME_ASSEMBLY: *value = i.t_assembly; break;
+      case MC_INFO_TIME_ANALYSIS: *value = i.t_analysis; break;
+      case MC_INFO_TIME_FACTORIZATION: *value = i.t_factor; break;
+      case MC_INFO_TIME_SOLVE: *value = i.t_solve; break;
+      case MC_INFO_TIME_CONTACT: *value = i.t_contact; break;
+      case MC_INFO_TIME_TOTAL: *value = i.t_total; break;
+      case MC_INFO_STRAIN_ENERGY: *value = i.energy; break;
+      case MC_INFO_COMPLEMENTARITY: *value = i.complementarity; break;
+      case MC_INFO_EQUILIBRIUM: *value = i.equilibrium; break;
+      default:
+        if (info >= MC_INFO_DOFS && info <= MC_INFO_FACTORIZATIONS)
+          fail(MC_ERROR_ARGUMENT, "info = %d is integer-valued: use mc_get_info_int", info);
+        fail(MC_ERROR_ARGUMENT, "info = %d: not an info", info);
+    }
+  });
+}
+
+mc_status mc_get_displacement(const mc_model *m, int body, double *u) {
+  return guard_const(m, [&](const mc::Model &model) {
+    const mc::Body &b = solved_body(model, body);
+    require_pointer(u, "u");
+    std::memcpy(u, b.u.data(), b.u.size() * sizeof(double));
+  });
+}
+
+mc_status mc_get_stress(const mc_model *m, int body, double *sigma) {
+  return guard_const(m, [&](const mc::Model &model) {
+    const mc::Body &b = solved_body(model, body);
+    require_pointer(sigma, "sigma");
+    std::memcpy(sigma, b.stress.data(), b.stress.size() * sizeof(double));
+  });
+}
+
+mc_status mc_get_reaction(const mc_model *m, int body, double *r) {
+  return guard_const(m, [&](const mc::Model &model) {
+    const mc::Body &b = solved_body(model, body);
+    require_pointer(r, "r");
+    std::memcpy(r, b.reaction.data(), b.reaction.size() * sizeof(double));
+  });
+}
+
+}  // extern "C"
+
+namespace {
+
+const mc::ContactGeometry &solved_contact(const mc::Model &model) {
+  if (!model.contact_active()) fail(MC_ERROR_STATE, "no contact surfaces: call mc_set_contact on both bodies");
+  if (!model.solved || !model.contact())
+    fail(MC_ERROR_STATE, "no solution: call mc_solve first (or again, after changing the scene)");
+  return model.contact()->geometry;
+}
+
+template <class F>
+mc_status contact_array(const mc_model *m, void *out, const char *name, F &&copy) {
+  return guard_const(m, [&](const mc::Model &model) {
+    const mc::ContactGeometry &g = solved_contact(model);
+    require_pointer(out, name);
+    copy(model, g);
+  });
+}
+
+}  // namespace
+
+extern "C" {
+
+mc_status mc_get_contact_count(const mc_model *m, mc_int *n) {
+  return contact_array(m, n, "n", [&](const mc::Model &, const mc::ContactGeometry &g) { *n = mc_int(g.nodes.size()); });
+}
+
+mc_status mc_get_contact_nodes(const mc_model *m, mc_int *nodes) {
+  return contact_array(m, nodes, "nodes", [&](const mc::Model &model, const mc::ContactGeometry &g) {
+    for (size_t j = 0; j < g.nodes.size(); ++j) nodes[j] = mc_int(g.nodes[j] + model.index_base);
+  });
+}
+
+mc_status mc_get_contact_pressure(const mc_model *m, double *p) {
+  return contact_array(m, p, "p", [&](const mc::Model &model, const mc::ContactGeometry &) {
+    std::memcpy(p, model.contact_pressure.data(), model.contact_pressure.size() * sizeof(double));
+  });
+}
+
+mc_status mc_get_contact_force(const mc_model *m, double *f) {
+  return contact_array(m, f, "f", [&](const mc::Model &model, const mc::ContactGeometry &) {
+    std::memcpy(f, model.contact_force.data(), model.contact_force.size() * sizeof(double));
+  });
+}
+
+mc_status mc_get_contact_gap(const mc_model *m, double *g) {
+  return contact_array(m, g, "g", [&](const mc::Model &model, const mc::ContactGeometry &) {
+    std::memcpy(g, model.contact_gap.data(), model.contact_gap.size() * sizeof(double));
+  });
+}
+
+mc_status mc_get_contact_initial_gap(const mc_model *m, double *g0) {
+  return contact_array(m, g0, "g0", [&](const mc::Model &, const mc::ContactGeometry &g) {
+    std::memcpy(g0, g.gap0.data(), g.gap0.size() * sizeof(double));
+  });
+}
+
+mc_status mc_get_contact_normal(const mc_model *m, double *n) {
+  return contact_array(m, n, "n", [&](const mc::Model &, const mc::ContactGeometry &g) {
+    for (size_t j = 0; j < g.normals.size(); ++j) n[2 * j] = g.normals[j].x, n[2 * j + 1] = g.normals[j].y;
+  });
+}
+
+}  // extern "C"

@@ -1,0 +1,39 @@
+// The contact problem reduced to the interface (design note "Solving the QP fast"):
+//
+//   minimise 1/2 l^T S l - l^T d   over  l >= 0,  G^T l = e
+//
+// with S = B K^+ B^T (q x q, dense SPD on ker G^T), d = B K^+ f - g, G = B R (q x k, R the
+// rigid modes of floating bodies), e = R^T f. Its KKT conditions are those of (3.5):
+//   gap = S l - d - G a >= 0,  l >= 0,  l . gap = 0,  G^T l = e,
+// and u = K^+ (f - B^T l) + R a. Solved by a primal-dual active-set (semismooth Newton)
+// iteration, which is exact once the active set is right; if it cycles, Murty's least-index
+// single pivoting takes over (finite for S positive definite).
+#pragma once
+#include <string>
+#include <vector>
+
+namespace mc {
+
+struct DualQp {
+  int q = 0, k = 0;
+  std::vector<double> s;  // q x q column-major
+  std::vector<double> d;  // q
+  std::vector<double> g;  // q x k column-major
+  std::vector<double> e;  // k
+};
+
+enum class DualQpOutcome { solved, loads_not_balanced, modes_not_held, not_converged };
+
+struct DualQpResult {
+  DualQpOutcome outcome = DualQpOutcome::solved;
+  std::vector<double> lambda, alpha, gap;
+  int iterations = 0;
+  double violation = 0;     // largest relative violation of the complementarity conditions
+  double imbalance = 0;     // for loads_not_balanced: min ||G^T l - e|| / ||e|| over l >= 0
+};
+
+// active: a starting guess (size q, from a previous solve) or empty.
+DualQpResult solve_dual_qp(const DualQp &problem, double tolerance, int max_iterations,
+                           const std::vector<char> &active);
+
+}  // namespace mc

@@ -1,0 +1,54 @@
+// Mesh intake of one body: validated nodes and cells (P1 triangles or Q1 quadrilaterals)
+// and the boundary edges derived from them.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace mc {
+
+struct Point {
+  double x, y;
+};
+
+// A boundary edge oriented as in its cell (counter-clockwise), so the body lies on its left
+// and its outward normal is (dy, -dx)/length.
+struct BoundaryEdge {
+  int from, to;
+  int cell;
+};
+
+class Mesh {
+public:
+  // Validates and copies. ids are 0-based here (the C API layer removes the index base);
+  // messages show ids plus `base`, as the caller numbers them.
+  // Throws mc::Error naming the argument and index on bad input.
+  Mesh(int n_nodes, const double *xy, int n_cells, int nodes_per_cell, const int *cells, int base = 0);
+  Mesh() = default;
+
+  int n_nodes() const { return n_nodes_; }
+  int n_cells() const { return n_cells_; }
+  int nodes_per_cell() const { return nodes_per_cell_; }
+  Point node(int i) const { return {xy_[2 * i], xy_[2 * i + 1]}; }
+  const int *cell(int c) const { return &cells_[size_t(c) * nodes_per_cell_]; }
+  const std::vector<double> &xy() const { return xy_; }
+  double characteristic_length() const { return length_scale_; }
+
+  // The boundary edge joining nodes a and b (either order), or nullptr if a-b is not a
+  // boundary edge.
+  const BoundaryEdge *boundary_edge(int a, int b) const;
+
+private:
+  static uint64_t edge_key(int a, int b);
+  void check_cell_shapes(int base);
+  void derive_boundary(int base);
+
+  int n_nodes_ = 0, n_cells_ = 0, nodes_per_cell_ = 0;
+  std::vector<double> xy_;
+  std::vector<int> cells_;
+  double length_scale_ = 1.0;
+  std::unordered_map<uint64_t, BoundaryEdge> boundary_;
+};
+
+}  // namespace mc

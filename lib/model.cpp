@@ -1,0 +1,384 @@
+#include "model.hpp"
+#include "error.hpp"
+#include "lapack.hpp"
+#include <chrono>
+#include <cmath>
+
+namespace mc {
+
+namespace {
+
+double now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// Adds the elapsed time since `start` to `sum` when it goes out of scope.
+struct Stopwatch {
+  double &sum;
+  double start = now();
+  explicit Stopwatch(double &s) : sum(s) {}
+  ~Stopwatch() { sum += now() - start; }
+};
+
+double dot(const std::vector<double> &a, const std::vector<double> &b) {
+  double s = 0;
+  for (size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
+  return s;
+}
+
+}  // namespace
+
+std::vector<double> Model::load_vector(int b) const {
+  const Body &body_ = body[b];
+  const Mesh &mesh = body_.mesh;
+  std::vector<double> f(body_.nodal_force);
+  f.resize(2 * size_t(mesh.n_nodes()), 0.0);
+  double fe[8];
+  for (const EdgeLoad &load : body_.edge_loads) {
+    Point p = mesh.node(load.a), q = mesh.node(load.b);
+    double tx = load.tx, ty = load.ty;
+    if (load.is_pressure) {  // pressure pushes against the outward normal (dy, -dx)/|e|
+      double length = std::hypot(q.x - p.x, q.y - p.y);
+      tx = -load.tx * (q.y - p.y) / length;
+      ty = -load.tx * (p.x - q.x) / length;
+    }
+    edge_traction_force(p, q, tx, ty, thickness, fe);
+    f[2 * load.a] += fe[0], f[2 * load.a + 1] += fe[1];
+    f[2 * load.b] += fe[2], f[2 * load.b + 1] += fe[3];
+  }
+  if (body_.body_force[0] != 0 || body_.body_force[1] != 0) {
+    const int npc = mesh.nodes_per_cell();
+    Point p[4];
+    for (int c = 0; c < mesh.n_cells(); ++c) {
+      const int *v = mesh.cell(c);
+      for (int a = 0; a < npc; ++a) p[a] = mesh.node(v[a]);
+      if (npc == 3) triangle_body_force(p, body_.body_force[0], body_.body_force[1], thickness, fe);
+      else quadrilateral_body_force(p, body_.body_force[0], body_.body_force[1], thickness, fe);
+      for (int a = 0; a < npc; ++a) f[2 * v[a]] += fe[2 * a], f[2 * v[a] + 1] += fe[2 * a + 1];
+    }
+  }
+  return f;
+}
+
+void Model::build_structure() {
+  const bool with_contact = contact_active();
+  contact_.reset();
+  for (int b = 0; b < 2; ++b) {
+    system_[b].reset();
+    Body &body_ = body[b];
+    if (!body_.has_mesh) continue;
+    auto sys = std::make_unique<BodySystem>();
+    {
+      Stopwatch watch(infos.t_assembly);
+      if (!body_.cell_elasticity.empty()) {
+        for (int c = 0; c < body_.mesh.n_cells(); ++c) sys->laws.push_back(general_plane_law(&body_.cell_elasticity[9 * size_t(c)]));
+      } else {
+        sys->laws.push_back(isotropic_plane_law(body_.young, body_.poisson, plane_stress));
+      }
+      sys->stiffness = assemble_stiffness(body_.mesh, sys->laws, thickness,
+                                          options.q1_integration == MC_Q1_BBAR && body_.mesh.nodes_per_cell() == 4);
+    }
+    sys->rigid = free_rigid_modes(body_.mesh, body_.prescribed);
+    if (sys->rigid.count > 0 && !with_contact)
+      fail(MC_ERROR_SINGULAR,
+           "body %d is not held: its supports leave %s free; add supports with mc_fix, or contact "
+           "surfaces on both bodies with mc_set_contact so that contact can hold it",
+           b + 1, sys->rigid.description.c_str());
+    system_[b] = std::move(sys);
+  }
+
+  if (with_contact) {
+    Stopwatch watch(infos.t_contact);
+    auto cs = std::make_unique<ContactSystem>();
+    cs->geometry = build_contact_geometry(body[0].mesh, body[0].contact, body[1].mesh, body[1].contact);
+    cs->rows = build_constraint_rows(cs->geometry, body[1].mesh, options.method);
+    for (int b = 0; b < 2; ++b) cs->b_start[b].push_back(0);
+    for (int r = 0; r < cs->rows.size(); ++r) {
+      int pos = cs->rows.position[r], node = cs->geometry.nodes[pos];
+      Point n = cs->geometry.normals[pos];
+      cs->b_dof[0].insert(cs->b_dof[0].end(), {2 * node, 2 * node + 1});
+      cs->b_value[0].insert(cs->b_value[0].end(), {n.x, n.y});
+      for (int p = cs->rows.start[r]; p < cs->rows.start[r + 1]; ++p) {
+        int l = cs->rows.body2_node[p];
+        double w = cs->rows.weight[p];
+        cs->b_dof[1].insert(cs->b_dof[1].end(), {2 * l, 2 * l + 1});
+        cs->b_value[1].insert(cs->b_value[1].end(), {-w * n.x, -w * n.y});
+      }
+      for (int b = 0; b < 2; ++b) cs->b_start[b].push_back(int(cs->b_dof[b].size()));
+    }
+    contact_ = std::move(cs);
+  }
+
+  for (int b = 0; b < 2; ++b) {
+    BodySystem *sys = system_[b].get();
+    if (!sys) continue;
+    const int ndof = sys->stiffness.n;
+    std::vector<char> excluded(body[b].prescribed);
+    for (int dof : sys->rigid.pinned_dofs) excluded[dof] = 1;
+    sys->solve_index.assign(ndof, -1);
+    sys->solve_dofs.clear();
+    for (int i = 0; i < ndof; ++i)
+      if (!excluded[i]) sys->solve_index[i] = int(sys->solve_dofs.size()), sys->solve_dofs.push_back(i);
+    std::vector<int> interface_reduced;
+    sys->interface.clear();
+    if (contact_) {
+      std::vector<char> mark(ndof, 0);
+      for (int dof : contact_->b_dof[b])
+        if (sys->solve_index[dof] >= 0 && !mark[dof]) mark[dof] = 1, sys->interface.push_back(dof);
+      for (int dof : sys->interface) interface_reduced.push_back(sys->solve_index[dof]);
+    }
+    {
+      Stopwatch watch(infos.t_assembly);
+      sys->reduced = sys->stiffness.principal_submatrix(sys->solve_index, int(sys->solve_dofs.size()));
+    }
+    {
+      Stopwatch watch(infos.t_analysis);
+      sys->cholesky.analyze(sys->reduced, interface_reduced, options.ordering);
+    }
+    {
+      Stopwatch watch(infos.t_factor);
+      try {
+        sys->cholesky.factorize(sys->reduced);
+      } catch (const Error &e) {
+        if (e.status() != MC_ERROR_SINGULAR) throw;
+        fail(MC_ERROR_SINGULAR, "body %d: %s", b + 1, e.what());
+      }
+    }
+    infos.factorizations++;
+  }
+  if (contact_) build_contact_operator();
+  built_version_ = structure_version_;
+}
+
+// S = sum over bodies of B_G L_GG^-T L_GG^-1 B_G^T: a triangular solve with the trailing block
+// of each factor and a rank-k update, all dense BLAS 3.
+void Model::build_contact_operator() {
+  Stopwatch watch(infos.t_contact);
+  ContactSystem &cs = *contact_;
+  const int q = cs.rows.size();
+  cs.s.assign(size_t(q) * q, 0.0);
+  for (int b = 0; b < 2; ++b) {
+    BodySystem &sys = *system_[b];
+    const int ng = int(sys.interface.size());
+    if (ng == 0 || q == 0) continue;
+    std::vector<int> order;
+    std::vector<double> l = sys.cholesky.interface_factor(order);
+    std::vector<int> factor_position(sys.stiffness.n, -1);
+    for (int k = 0; k < ng; ++k) factor_position[sys.interface[order[k]]] = k;
+    std::vector<double> w(size_t(ng) * q, 0.0);
+    for (int r = 0; r < q; ++r)
+      for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) {
+        int k = factor_position[cs.b_dof[b][p]];
+        if (k >= 0) w[size_t(r) * ng + k] += cs.b_value[b][p];
+      }
+    double one = 1.0;
+    dtrsm_("L", "L", "N", "N", &ng, &q, &one, l.data(), &ng, w.data(), &ng);
+    dsyrk_("U", "T", &q, &ng, &one, w.data(), &ng, &one, cs.s.data(), &q);
+  }
+  for (int j = 0; j < q; ++j)
+    for (int i = j + 1; i < q; ++i) cs.s[size_t(j) * q + i] = cs.s[size_t(i) * q + j];
+  cs.last_active.clear();
+}
+
+void Model::solve() {
+  const double start = now();
+  infos = Infos{};
+  solved = false;
+  if (!body[0].has_mesh && !body[1].has_mesh) fail(MC_ERROR_STATE, "no mesh: call mc_set_mesh first");
+  for (int b = 0; b < 2; ++b) {
+    if (body[b].has_mesh && !body[b].has_material)
+      fail(MC_ERROR_STATE, "body %d has no material: call mc_set_material or mc_set_cell_elasticity", b + 1);
+  }
+  if (body[0].has_contact != body[1].has_contact)
+    fail(MC_ERROR_STATE, "body %d has a contact surface but body %d has none: contact needs both (mc_set_contact)",
+         body[0].has_contact ? 1 : 2, body[0].has_contact ? 2 : 1);
+  if (built_version_ != structure_version_) {
+    built_version_ = 0;
+    build_structure();
+  }
+
+  // Loads with the prescribed displacements lifted: f_eff = f - K u_prescribed.
+  std::vector<double> f[2], lifted[2], v[2];
+  for (int b = 0; b < 2; ++b) {
+    if (!system_[b]) continue;
+    BodySystem &sys = *system_[b];
+    {
+      Stopwatch watch(infos.t_assembly);
+      f[b] = load_vector(b);
+      std::vector<double> up(sys.stiffness.n, 0.0), kup(sys.stiffness.n);
+      for (int i = 0; i < sys.stiffness.n; ++i)
+        if (body[b].prescribed[i]) up[i] = body[b].prescribed_value[i];
+      sys.stiffness.multiply(up.data(), kup.data());
+      lifted[b].resize(sys.stiffness.n);
+      for (int i = 0; i < sys.stiffness.n; ++i) lifted[b][i] = body[b].prescribed[i] ? 0 : f[b][i] - kup[i];
+    }
+    // v = K^+ f_eff
+    v[b].assign(sys.stiffness.n, 0.0);
+    std::vector<double> x(sys.solve_dofs.size());
+    for (size_t k = 0; k < x.size(); ++k) x[k] = lifted[b][sys.solve_dofs[k]];
+    {
+      Stopwatch watch(infos.t_solve);
+      sys.cholesky.solve(x.data());
+    }
+    for (size_t k = 0; k < x.size(); ++k) v[b][sys.solve_dofs[k]] = x[k];
+    infos.dofs += long(sys.solve_dofs.size() + sys.rigid.pinned_dofs.size());
+    infos.factor_nnz += sys.cholesky.factor_nnz();
+  }
+
+  std::vector<double> lambda;
+  std::vector<double> alpha;
+  if (contact_) {
+    ContactSystem &cs = *contact_;
+    const int q = cs.rows.size();
+    DualQp qp;
+    qp.q = q;
+    {
+      Stopwatch watch(infos.t_contact);
+      qp.s = cs.s;
+      qp.d.assign(q, 0.0);
+      for (int r = 0; r < q; ++r) {
+        double g = cs.geometry.gap0[cs.rows.position[r]], bv = 0;
+        for (int b = 0; b < 2; ++b)
+          for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) {
+            int dof = cs.b_dof[b][p];
+            if (body[b].prescribed[dof]) g -= cs.b_value[b][p] * body[b].prescribed_value[dof];
+            else bv += cs.b_value[b][p] * v[b][dof];
+          }
+        qp.d[r] = bv - g;
+      }
+      for (int b = 0; b < 2; ++b) {
+        const RigidModes &rm = system_[b]->rigid;
+        const int ndof = system_[b]->stiffness.n;
+        for (int c = 0; c < rm.count; ++c) {
+          const double *mode = &rm.modes[size_t(c) * ndof];
+          for (int r = 0; r < q; ++r) {
+            double s = 0;
+            for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) s += cs.b_value[b][p] * mode[cs.b_dof[b][p]];
+            qp.g.push_back(s);
+          }
+          double e = 0;
+          for (int i = 0; i < ndof; ++i) e += mode[i] * lifted[b][i];
+          qp.e.push_back(e);
+          qp.k++;
+        }
+      }
+    }
+    DualQpResult result;
+    {
+      Stopwatch watch(infos.t_contact);
+      result = solve_dual_qp(qp, options.tolerance, options.max_iterations, cs.last_active);
+    }
+    infos.iterations = result.iterations;
+    auto body_of_mode = [&](std::string &text) {
+      for (int b = 0; b < 2; ++b)
+        if (system_[b]->rigid.count > 0)
+          text += (text.empty() ? "" : "; ") + std::string("body ") + std::to_string(b + 1) + ": " + system_[b]->rigid.description;
+    };
+    if (result.outcome == DualQpOutcome::loads_not_balanced) {
+      std::string modes;
+      body_of_mode(modes);
+      fail(MC_ERROR_SINGULAR,
+           "the loads cannot be balanced by contact forces (which only push): with free rigid motion (%s) "
+           "the best nonnegative contact forces leave %.3g of the load unbalanced; add supports or change the loads",
+           modes.c_str(), result.imbalance);
+    }
+    if (result.outcome == DualQpOutcome::modes_not_held) {
+      std::string modes;
+      body_of_mode(modes);
+      fail(MC_ERROR_SINGULAR,
+           "contact cannot hold the free rigid motion (%s): the contact normals do not restrain it; add supports",
+           modes.c_str());
+    }
+    if (result.outcome == DualQpOutcome::not_converged)
+      fail(MC_ERROR_NOT_CONVERGED,
+           "the active-set iteration stopped after %d iterations (limit %d) with a relative complementarity "
+           "violation of %.3g (tolerance %.3g)",
+           result.iterations, options.max_iterations, result.violation, options.tolerance);
+    lambda = result.lambda;
+    alpha = result.alpha;
+    infos.complementarity = result.violation;
+    cs.last_active.assign(q, 0);
+    for (int r = 0; r < q; ++r) cs.last_active[r] = lambda[r] > 0, infos.active += lambda[r] > 0;
+    infos.contact_rows = q;
+  }
+
+  // u = K^+ (f_eff - B^T lambda) + R alpha, then the prescribed values.
+  int mode_offset = 0;
+  double f_norm = 0, residual_norm = 0;
+  for (int b = 0; b < 2; ++b) {
+    if (!system_[b]) continue;
+    BodySystem &sys = *system_[b];
+    const int ndof = sys.stiffness.n;
+    std::vector<double> rhs(lifted[b]), contact_force(ndof, 0.0);
+    if (contact_) {
+      for (int r = 0; r < contact_->rows.size(); ++r)
+        for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
+          contact_force[contact_->b_dof[b][p]] -= contact_->b_value[b][p] * lambda[r];
+      for (int i = 0; i < ndof; ++i) if (!body[b].prescribed[i]) rhs[i] += contact_force[i];
+      std::vector<double> x(sys.solve_dofs.size());
+      for (size_t k = 0; k < x.size(); ++k) x[k] = rhs[sys.solve_dofs[k]];
+      {
+        Stopwatch watch(infos.t_solve);
+        sys.cholesky.solve(x.data());
+      }
+      std::fill(v[b].begin(), v[b].end(), 0.0);
+      for (size_t k = 0; k < x.size(); ++k) v[b][sys.solve_dofs[k]] = x[k];
+      for (int c = 0; c < sys.rigid.count; ++c)
+        for (int i = 0; i < ndof; ++i) v[b][i] += alpha[mode_offset + c] * sys.rigid.modes[size_t(c) * ndof + i];
+      mode_offset += sys.rigid.count;
+    }
+    Body &body_ = body[b];
+    body_.u = v[b];
+    for (int i = 0; i < ndof; ++i) if (body_.prescribed[i]) body_.u[i] = body_.prescribed_value[i];
+    // Reactions, energy and the equilibrium residual from the full stiffness.
+    std::vector<double> ku(ndof);
+    sys.stiffness.multiply(body_.u.data(), ku.data());
+    body_.reaction.assign(ndof, 0.0);
+    for (int i = 0; i < ndof; ++i) {
+      double r = ku[i] - f[b][i] - contact_force[i];
+      if (body_.prescribed[i]) body_.reaction[i] = r;
+      else residual_norm += r * r, f_norm += f[b][i] * f[b][i] + contact_force[i] * contact_force[i];
+    }
+    infos.energy += 0.5 * dot(body_.u, ku);
+    // Cell-averaged stresses.
+    const Mesh &mesh = body_.mesh;
+    const int npc = mesh.nodes_per_cell();
+    const bool bbar = options.q1_integration == MC_Q1_BBAR;
+    body_.stress.assign(4 * size_t(mesh.n_cells()), 0.0);
+    Point p[4];
+    double ue[8];
+    for (int c = 0; c < mesh.n_cells(); ++c) {
+      const int *cv = mesh.cell(c);
+      for (int a = 0; a < npc; ++a) p[a] = mesh.node(cv[a]), ue[2 * a] = body_.u[2 * cv[a]], ue[2 * a + 1] = body_.u[2 * cv[a] + 1];
+      const PlaneLaw &law = sys.laws.size() == 1 ? sys.laws[0] : sys.laws[c];
+      if (npc == 3) triangle_stress(p, law, ue, &body_.stress[4 * size_t(c)]);
+      else quadrilateral_stress(p, law, bbar, ue, &body_.stress[4 * size_t(c)]);
+    }
+  }
+  infos.equilibrium = std::sqrt(residual_norm) / std::max(std::sqrt(f_norm), 1e-300);
+  if (f_norm == 0) infos.equilibrium = std::sqrt(residual_norm);
+
+  // Contact results per body-1 contact node.
+  contact_force.clear(), contact_gap.clear(), contact_pressure.clear();
+  if (contact_) {
+    const ContactGeometry &g = contact_->geometry;
+    const size_t n = g.nodes.size();
+    contact_force.assign(n, 0.0);
+    contact_gap.assign(n, kNoGap);
+    contact_pressure.assign(n, 0.0);
+    for (int r = 0; r < contact_->rows.size(); ++r) {
+      int pos = contact_->rows.position[r];
+      double gap = g.gap0[pos];
+      for (int b = 0; b < 2; ++b)
+        for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
+          gap -= contact_->b_value[b][p] * body[b].u[contact_->b_dof[b][p]];
+      contact_gap[pos] = gap;
+      contact_force[pos] = lambda[r];
+      contact_pressure[pos] = lambda[r] / (thickness * g.tributary[pos]);
+    }
+  }
+  infos.t_total = now() - start;
+  solved = true;
+}
+
+}  // namespace mc

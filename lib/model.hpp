@@ -1,0 +1,106 @@
+// The scene a host registers (two bodies, materials, supports, loads, contact surfaces), the
+// solve, and its results. ids are 0-based here; the C API layer handles the index base.
+#pragma once
+#include "mortarcontact.h"
+#include "assembly.hpp"
+#include "contact_geometry.hpp"
+#include "dual_qp.hpp"
+#include "mesh.hpp"
+#include "mortar_operators.hpp"
+#include "rigid_modes.hpp"
+#include "sparse_cholesky.hpp"
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mc {
+
+struct EdgeLoad {
+  int a, b;        // nodes, oriented as the cell (body on the left)
+  double tx, ty;   // traction (per unit length), or pressure in tx with is_pressure
+  bool is_pressure;
+};
+
+struct Body {
+  bool has_mesh = false;
+  Mesh mesh;
+  bool has_material = false;
+  double young = 0, poisson = 0;
+  std::vector<double> cell_elasticity;  // 9 per cell when given
+  std::vector<char> prescribed;         // per DOF
+  std::vector<double> prescribed_value;
+  std::vector<double> nodal_force;      // per DOF
+  std::vector<EdgeLoad> edge_loads;
+  double body_force[2] = {0, 0};
+  bool has_contact = false;
+  std::vector<SurfaceSegment> contact;
+  // results
+  std::vector<double> u, reaction, stress;
+};
+
+// What a solve keeps for the next one when only loads or prescribed values change.
+struct BodySystem {
+  SymmetricCsc stiffness;          // all 2n DOFs
+  std::vector<PlaneLaw> laws;
+  RigidModes rigid;
+  std::vector<int> solve_index;    // DOF -> reduced index, -1 if prescribed or pinned
+  std::vector<int> solve_dofs;
+  SymmetricCsc reduced;
+  SparseCholesky cholesky;
+  std::vector<int> interface;      // DOFs (full numbering) in B, ordered last in the factor
+};
+
+struct ContactSystem {
+  ContactGeometry geometry;
+  ConstraintRows rows;
+  // B per body as CSR over rows: (DOF, coefficient)
+  std::vector<int> b_start[2], b_dof[2];
+  std::vector<double> b_value[2];
+  std::vector<double> s;           // q x q interface operator B K^+ B^T
+  std::vector<char> last_active;
+};
+
+struct Options {
+  int method = MC_METHOD_MORTAR;
+  double tolerance = 1e-10;
+  int max_iterations = 200;
+  int ordering = MC_ORDERING_AUTO;
+  int q1_integration = MC_Q1_FULL;
+};
+
+struct Infos {
+  long dofs = 0, factor_nnz = 0, iterations = 0, active = 0, contact_rows = 0, factorizations = 0;
+  double t_assembly = 0, t_analysis = 0, t_factor = 0, t_solve = 0, t_contact = 0, t_total = 0;
+  double energy = 0, complementarity = 0, equilibrium = 0;
+};
+
+class Model {
+public:
+  Body body[2];
+  Options options;
+  Infos infos;
+  bool plane_stress = false;
+  double thickness = 1;
+  int index_base = 0;
+  bool solved = false;
+
+  // Anything that changes K, the supports' set, the contact surfaces or the method.
+  void structure_changed() { ++structure_version_, solved = false; }
+  void values_changed() { solved = false; }
+  void solve();
+
+  bool contact_active() const { return body[0].has_contact && body[1].has_contact; }
+  const ContactSystem *contact() const { return contact_.get(); }
+  // Contact results per body-1 contact node (after a contact solve).
+  std::vector<double> contact_force, contact_gap, contact_pressure;
+
+private:
+  void build_structure();
+  void build_contact_operator();
+  std::vector<double> load_vector(int b) const;
+  long structure_version_ = 1, built_version_ = 0;
+  std::unique_ptr<BodySystem> system_[2];
+  std::unique_ptr<ContactSystem> contact_;
+};
+
+}  // namespace mc

@@ -1,0 +1,166 @@
+#include "sparse_cholesky.hpp"
+#include "error.hpp"
+#include <cholmod.h>
+#include <cstring>
+
+namespace mc {
+
+struct SparseCholesky::Impl {
+  cholmod_common common;
+  cholmod_factor *factor = nullptr;
+  std::vector<int> interface;  // original indices, in the caller's order
+  Impl() {
+    cholmod_start(&common);
+    common.print = 0;  // the library never prints; errors are reported through statuses
+    common.error_handler = nullptr;
+    common.supernodal = CHOLMOD_SUPERNODAL;
+  }
+  ~Impl() {
+    if (factor) cholmod_free_factor(&factor, &common);
+    cholmod_finish(&common);
+  }
+  // A cholmod_sparse view (no copy) of the upper triangle.
+  cholmod_sparse view(const SymmetricCsc &a) {
+    cholmod_sparse s;
+    std::memset(&s, 0, sizeof s);
+    s.nrow = s.ncol = size_t(a.n);
+    s.nzmax = a.values.size();
+    s.p = const_cast<int *>(a.colptr.data());
+    s.i = const_cast<int *>(a.rows.data());
+    s.x = const_cast<double *>(a.values.data());
+    s.stype = 1;
+    s.itype = CHOLMOD_INT;
+    s.xtype = CHOLMOD_REAL;
+    s.dtype = CHOLMOD_DOUBLE;
+    s.sorted = 1;
+    s.packed = 1;
+    return s;
+  }
+  void check(const char *what) {
+    if (common.status == CHOLMOD_OUT_OF_MEMORY) fail(MC_ERROR_MEMORY, "CHOLMOD ran out of memory in %s", what);
+    if (common.status < CHOLMOD_OK) fail(MC_ERROR_INTERNAL, "CHOLMOD failed in %s (status %d)", what, common.status);
+  }
+};
+
+SparseCholesky::SparseCholesky() : impl_(new Impl) {}
+SparseCholesky::~SparseCholesky() = default;
+
+void SparseCholesky::analyze(const SymmetricCsc &a, const std::vector<int> &interface, int ordering) {
+  Impl &d = *impl_;
+  if (d.factor) cholmod_free_factor(&d.factor, &d.common);
+  n_ = a.n;
+  d.interface = interface;
+  cholmod_sparse s = d.view(a);
+  if (interface.empty()) {
+    d.common.nmethods = 1;
+    d.common.method[0].ordering = ordering == MC_ORDERING_METIS ? CHOLMOD_METIS : CHOLMOD_AMD;
+    d.common.postorder = 1;
+    d.factor = cholmod_analyze(&s, &d.common);
+    d.check("analyze");
+    return;
+  }
+  // Interface last: a constrained minimum-degree ordering (CAMD) when AMD is asked, or METIS
+  // with the interface moved to the end; no postordering, which could move interior unknowns
+  // behind interface ones.
+  std::vector<int> perm(a.n);
+  std::vector<char> is_interface(a.n, 0);
+  for (int g : interface) is_interface[g] = 1;
+  if (ordering == MC_ORDERING_METIS) {
+    std::vector<int> metis(a.n);
+    cholmod_metis(&s, nullptr, 0, 1, metis.data(), &d.common);
+    d.check("METIS ordering");
+    int k = 0;
+    for (int i : metis) if (!is_interface[i]) perm[k++] = i;
+    for (int i : metis) if (is_interface[i]) perm[k++] = i;
+  } else {
+    std::vector<int> member(a.n);
+    for (int i = 0; i < a.n; ++i) member[i] = is_interface[i];
+    cholmod_camd(&s, nullptr, 0, member.data(), perm.data(), &d.common);
+    d.check("CAMD ordering");
+  }
+  d.common.nmethods = 1;
+  d.common.method[0].ordering = CHOLMOD_GIVEN;
+  d.common.postorder = 0;
+  d.factor = cholmod_analyze_p(&s, perm.data(), nullptr, 0, &d.common);
+  d.check("analyze");
+  const int *final_perm = static_cast<const int *>(d.factor->Perm);
+  for (int k = a.n - int(interface.size()); k < a.n; ++k)
+    if (!is_interface[final_perm[k]])
+      fail(MC_ERROR_INTERNAL, "the ordering did not keep the %zu interface unknowns last", interface.size());
+}
+
+void SparseCholesky::factorize(const SymmetricCsc &a) {
+  Impl &d = *impl_;
+  if (!d.factor) fail(MC_ERROR_INTERNAL, "factorize before analyze");
+  cholmod_sparse s = d.view(a);
+  cholmod_factorize(&s, d.factor, &d.common);
+  if (d.common.status == CHOLMOD_NOT_POSDEF)
+    fail(MC_ERROR_SINGULAR,
+         "the stiffness matrix is not positive definite (pivot %d of %d): a part of the body can move "
+         "rigidly, or a material is not positive definite",
+         int(d.factor->minor), a.n);
+  d.check("factorize");
+}
+
+void SparseCholesky::solve(double *x, int nrhs) const {
+  Impl &d = *impl_;
+  cholmod_dense b;
+  std::memset(&b, 0, sizeof b);
+  b.nrow = size_t(n_);
+  b.ncol = size_t(nrhs);
+  b.nzmax = size_t(n_) * nrhs;
+  b.d = size_t(n_);
+  b.x = x;
+  b.xtype = CHOLMOD_REAL;
+  b.dtype = CHOLMOD_DOUBLE;
+  cholmod_dense *solution = cholmod_solve(CHOLMOD_A, d.factor, &b, &d.common);
+  d.check("solve");
+  std::memcpy(x, solution->x, sizeof(double) * size_t(n_) * nrhs);
+  cholmod_free_dense(&solution, &d.common);
+}
+
+std::vector<double> SparseCholesky::interface_factor(std::vector<int> &order) const {
+  const Impl &d = *impl_;
+  const cholmod_factor *f = d.factor;
+  const int ng = int(d.interface.size()), first = n_ - ng;
+  if (!f->is_super) fail(MC_ERROR_INTERNAL, "expected a supernodal factor");
+  // position in the factor -> position in the caller's interface list
+  std::vector<int> inverse(n_, -1);
+  const int *perm = static_cast<const int *>(f->Perm);
+  for (int k = 0; k < n_; ++k) inverse[perm[k]] = k;
+  order.assign(ng, -1);
+  for (int i = 0; i < ng; ++i) order[inverse[d.interface[i]] - first] = i;
+  std::vector<double> l(size_t(ng) * ng, 0.0);
+  const int *super = static_cast<const int *>(f->super), *pi = static_cast<const int *>(f->pi);
+  const int *px = static_cast<const int *>(f->px), *ls = static_cast<const int *>(f->s);
+  const double *lx = static_cast<const double *>(f->x);
+  for (size_t s = 0; s < f->nsuper; ++s) {
+    int k1 = super[s], k2 = super[s + 1];
+    if (k2 <= first) continue;
+    int nsrow = pi[s + 1] - pi[s];
+    for (int k = std::max(k1, first); k < k2; ++k)
+      for (int r = 0; r < nsrow; ++r) {
+        int row = ls[pi[s] + r];
+        if (row < k) continue;  // the upper part of a supernode's diagonal block is not L
+        l[size_t(row - first) + size_t(k - first) * ng] = lx[px[s] + r + size_t(k - k1) * nsrow];
+      }
+  }
+  return l;
+}
+
+long SparseCholesky::factor_nnz() const {
+  const cholmod_factor *f = impl_->factor;
+  if (!f) return 0;
+  if (f->is_super) {
+    long nnz = 0;
+    const int *super = static_cast<const int *>(f->super), *pi = static_cast<const int *>(f->pi);
+    for (size_t s = 0; s < f->nsuper; ++s) {
+      long ncol = super[s + 1] - super[s], nrow = pi[s + 1] - pi[s];
+      nnz += ncol * nrow - ncol * (ncol - 1) / 2;
+    }
+    return nnz;
+  }
+  return long(impl_->common.lnz);
+}
+
+}  // namespace mc
