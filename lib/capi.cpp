@@ -356,6 +356,13 @@ mc_status mc_set_option_int(mc_model *m, int option, int64_t value) {
         model.options.q1_integration = int(value);
         model.structure_changed();
         break;
+      case MC_OPTION_CONTACT_NORMAL:
+        if (value != MC_NORMAL_NONMORTAR && value != MC_NORMAL_MORTAR)
+          fail(MC_ERROR_ARGUMENT, "value = %lld: MC_OPTION_CONTACT_NORMAL takes MC_NORMAL_NONMORTAR (0) or "
+               "MC_NORMAL_MORTAR (1)", (long long)value);
+        model.options.contact_normal = int(value);
+        model.structure_changed();
+        break;
       case MC_OPTION_TOLERANCE:
         fail(MC_ERROR_ARGUMENT, "option = %d (MC_OPTION_TOLERANCE) is real-valued: use mc_set_option_real", option);
       default:
@@ -368,7 +375,7 @@ mc_status mc_set_option_real(mc_model *m, int option, double value) {
   return guard(m, [&](mc::Model &model) {
     if (option != MC_OPTION_TOLERANCE) {
       if (option == MC_OPTION_METHOD || option == MC_OPTION_MAX_ITERATIONS || option == MC_OPTION_ORDERING ||
-          option == MC_OPTION_Q1_INTEGRATION)
+          option == MC_OPTION_Q1_INTEGRATION || option == MC_OPTION_CONTACT_NORMAL)
         fail(MC_ERROR_ARGUMENT, "option = %d is integer-valued: use mc_set_option_int", option);
       fail(MC_ERROR_ARGUMENT, "option = %d: not a real option", option);
     }

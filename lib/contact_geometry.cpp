@@ -1,5 +1,6 @@
 #include "contact_geometry.hpp"
 #include "error.hpp"
+#include "mortarcontact.h"
 #include <algorithm>
 #include <cmath>
 
@@ -120,6 +121,29 @@ bool inverse_projection(Point xa, Point xb, Point na, Point nb, Point y, double 
   return false;
 }
 
+// Minus body 2's outward normal at the point of its surface closest to p, among the segments
+// facing p's own normal; at a vertex of body 2, the mean of its two edges' normals. Keeps
+// `fallback` if no segment faces p.
+Point mortar_side_normal(Point p, Point fallback, const Mesh &body2, const std::vector<SurfaceSegment> &segments) {
+  double best = kNoGap;
+  Point result = fallback;
+  for (size_t s = 0; s < segments.size(); ++s) {
+    Point a = body2.node(segments[s].a), b = body2.node(segments[s].b), e = minus(b, a);
+    Point n2 = edge_normal(a, b);
+    if (fallback.x * n2.x + fallback.y * n2.y >= 0) continue;
+    double eta = std::clamp(((p.x - a.x) * e.x + (p.y - a.y) * e.y) / (e.x * e.x + e.y * e.y), 0.0, 1.0);
+    Point foot = lerp(a, b, eta);
+    double distance = std::hypot(p.x - foot.x, p.y - foot.y);
+    if (distance < best * (1 - 1e-12)) {
+      best = distance;
+      result = {-n2.x, -n2.y};
+    } else if (distance <= best * (1 + 1e-12)) {  // equally close: a vertex shared by two edges
+      result = unit({result.x - n2.x, result.y - n2.y});
+    }
+  }
+  return result;
+}
+
 }  // namespace
 
 std::vector<SurfaceSegment> oriented_surface(const Mesh &mesh, const int *edges, int n_edges, int base) {
@@ -144,7 +168,8 @@ std::vector<SurfaceSegment> oriented_surface(const Mesh &mesh, const int *edges,
 }
 
 ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<SurfaceSegment> &surface1,
-                                       const Mesh &body2, const std::vector<SurfaceSegment> &surface2) {
+                                       const Mesh &body2, const std::vector<SurfaceSegment> &surface2,
+                                       int normal_choice) {
   ContactGeometry g;
   g.mortar_segments = surface2;
   std::vector<Chain> chains = chains_of(surface1);
@@ -173,6 +198,8 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
     chain_range.push_back({int(first), int(m)});
   }
   const size_t n = g.nodes.size();
+  if (normal_choice == MC_NORMAL_MORTAR)
+    for (size_t j = 0; j < n; ++j) g.normals[j] = mortar_side_normal(body1.node(g.nodes[j]), g.normals[j], body2, surface2);
   g.gap0.assign(n, kNoGap);
   g.projection.assign(n, SurfacePoint{});
   bool any = false;

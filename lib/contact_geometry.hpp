@@ -56,8 +56,10 @@ struct ContactGeometry {
 std::vector<SurfaceSegment> oriented_surface(const Mesh &mesh, const int *edges, int n_edges, int base = 0);
 
 // The whole geometry. Throws MC_ERROR_CONTACT if no body-1 node sees body 2.
+// normal_choice: MC_NORMAL_NONMORTAR or MC_NORMAL_MORTAR.
 ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<SurfaceSegment> &surface1,
-                                       const Mesh &body2, const std::vector<SurfaceSegment> &surface2);
+                                       const Mesh &body2, const std::vector<SurfaceSegment> &surface2,
+                                       int normal_choice);
 
 constexpr double kNoGap = std::numeric_limits<double>::infinity();
 

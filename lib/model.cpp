@@ -90,7 +90,8 @@ void Model::build_structure() {
   if (with_contact) {
     Stopwatch watch(infos.t_contact);
     auto cs = std::make_unique<ContactSystem>();
-    cs->geometry = build_contact_geometry(body[0].mesh, body[0].contact, body[1].mesh, body[1].contact);
+    cs->geometry = build_contact_geometry(body[0].mesh, body[0].contact, body[1].mesh, body[1].contact,
+                                          options.contact_normal);
     cs->rows = build_constraint_rows(cs->geometry, body[1].mesh, options.method);
     for (int b = 0; b < 2; ++b) cs->b_start[b].push_back(0);
     for (int r = 0; r < cs->rows.size(); ++r) {

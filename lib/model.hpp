@@ -66,6 +66,7 @@ struct Options {
   int max_iterations = 200;
   int ordering = MC_ORDERING_AUTO;
   int q1_integration = MC_Q1_FULL;
+  int contact_normal = MC_NORMAL_NONMORTAR;
 };
 
 struct Infos {

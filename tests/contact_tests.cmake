@@ -1,0 +1,8 @@
+# Contact tests (included from tests/CMakeLists.txt).
+mc_add_check_test(test_contact test_contact.c)
+target_link_libraries(test_contact PRIVATE hertz_scene)
+add_library(mc_contact_study STATIC contact_study.c)
+target_link_libraries(mc_contact_study PUBLIC mc_test_scenes)
+mc_add_check_test(test_contact_convergence test_contact_convergence.c)
+target_link_libraries(test_contact_convergence PRIVATE mc_contact_study)
+set_tests_properties(test_contact test_contact_convergence PROPERTIES TIMEOUT 600)
