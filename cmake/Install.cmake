@@ -49,10 +49,10 @@ set_property(TARGET mortarcontact_static PROPERTY INTERFACE_LINK_LIBRARIES "${_m
 # ---- libraries and header --------------------------------------------------------------
 install(TARGETS mortarcontact mortarcontact_static
   EXPORT mortarcontactTargets
-  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} NAMELINK_COMPONENT Development
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
-  RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
-  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# (lib/ already gives both targets $<INSTALL_INTERFACE:include> as their include directory.)
 install(FILES ${PROJECT_SOURCE_DIR}/include/mortarcontact.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 
 # ---- CMake package -------------------------------------------------------------------

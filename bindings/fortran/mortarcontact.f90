@@ -42,10 +42,11 @@ module mortarcontact
   integer, parameter, public :: MC_PLANE_STRAIN = 0, MC_PLANE_STRESS = 1
   integer, parameter, public :: MC_X = 1, MC_Y = 2, MC_XY = 3
   integer, parameter, public :: MC_OPTION_METHOD = 1, MC_OPTION_TOLERANCE = 2, &
-       MC_OPTION_MAX_ITERATIONS = 3, MC_OPTION_ORDERING = 4, MC_OPTION_THREADS = 5, &
-       MC_OPTION_Q1_INTEGRATION = 6
+       MC_OPTION_MAX_ITERATIONS = 3, MC_OPTION_ORDERING = 4, MC_OPTION_Q1_INTEGRATION = 6, &
+       MC_OPTION_CONTACT_NORMAL = 7
   integer, parameter, public :: MC_METHOD_MORTAR = 0, MC_METHOD_DUAL_MORTAR = 1, &
        MC_METHOD_NODE_TO_SEGMENT = 2
+  integer, parameter, public :: MC_NORMAL_NONMORTAR = 0, MC_NORMAL_MORTAR = 1
   integer, parameter, public :: MC_ORDERING_AUTO = 0, MC_ORDERING_AMD = 1, MC_ORDERING_METIS = 2
   integer, parameter, public :: MC_Q1_FULL = 0, MC_Q1_BBAR = 1
   integer, parameter, public :: MC_INFO_DOFS = 1, MC_INFO_FACTOR_NNZ = 2, MC_INFO_ITERATIONS = 3, &

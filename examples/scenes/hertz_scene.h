@@ -34,7 +34,13 @@ typedef struct hertz_scene {
 
 /* h1: body-1 fine spacing near the contact point (physical); h2: body-2 fine spacing.
    quads: 0 = P1 triangles (each quad split along the lower-left/upper-right diagonal), 1 = Q1.
-   Returns 0 on success, nonzero on bad arguments or allocation failure. */
+   Returns 0 on success, nonzero on bad arguments (h1, h2 outside (0, 0.2], quads not 0/1)
+   or allocation failure; on failure *s is left zeroed (hertz_scene_free is still fine).
+   Both meshes are structured grids numbered row by row (bottom row first, left to right);
+   edge lists follow the counter-clockwise boundary walk of their body.
+   The P1 body-1 cell next to the arc corner (x,y) = (1/sqrt 2, 1 - 1/sqrt 2) is split
+   along the other diagonal (three arc vertices would make a sliver). Near both arc corners
+   the elliptical map is singular: cells there are thin but valid (see hertz_scene.c). */
 int hertz_scene_build(hertz_scene *s, double h1, double h2, int quads);
 void hertz_scene_free(hertz_scene *s); /* NULL-safe, frees everything */
 /* analytic Hertz values for this scene (R=1, E=1, nu=0.3 both, plane strain, P=0.01) */

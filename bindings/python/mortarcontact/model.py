@@ -106,14 +106,17 @@ def _ids(a, shape, name):
 
 
 def _fmt(shape):
+    """A shape for messages: (None, 2) -> "(n, 2)"."""
     return "(" + ", ".join("n" if s is None else str(s) for s in shape) + ("," if len(shape) == 1 else "") + ")"
 
 
 def _dp(arr):
+    """``double *`` to the data of a float64 array."""
     return arr.ctypes.data_as(_PD)
 
 
 def _ip(arr):
+    """``mc_int *`` to the data of an int32 array."""
     return arr.ctypes.data_as(_PI32)
 
 
@@ -158,24 +161,29 @@ class Model:
         return self._handle is None
 
     def __enter__(self):
+        """Returns the model itself."""
         return self
 
     def __exit__(self, *exc):
+        """Closes the model; exceptions propagate."""
         self.close()
         return False
 
     def __del__(self):
+        """Frees the model if it was not closed."""
         try:
             self.close()
         except Exception:  # interpreter shutdown: never raise from __del__
             pass
 
     def _h(self):
+        """The C handle; MC_ERROR_STATE if the model is closed."""
         if self._handle is None:
             raise MortarContactError(MC_ERROR_STATE, "the model is closed")
         return self._handle
 
     def _check(self, status):
+        """Raises MortarContactError with the library's message unless status is MC_OK."""
         if status != MC_OK:
             raise MortarContactError(status, self._lib.mc_errmsg(self._handle).decode())
 
@@ -185,6 +193,7 @@ class Model:
         return self._lib.mc_errmsg(self._h()).decode()
 
     def _body(self, body, what):
+        """Checks that body is 1 or 2 and has a mesh (whose sizes size the outputs)."""
         if body not in (1, 2):
             raise ArgumentError("body must be 1 or 2, got %r" % (body,))
         if body not in self._n_nodes:
@@ -321,6 +330,7 @@ class Model:
         return self.get_info_int(info) if info in INT_INFOS else self.get_info_real(info)
 
     def _per_body(self, fn, body, per_node, width, what):
+        """Calls a per-node or per-cell getter into a new (n, width) float64 array."""
         self._body(body, what)
         n = self._n_nodes[body] if per_node else self._n_cells[body]
         out = np.empty((n, width), dtype=np.float64)
@@ -346,6 +356,7 @@ class Model:
         return n.value
 
     def _contact(self, fn, width):
+        """Calls a contact getter into a new (m,) or (m, width) float64 array."""
         m = self.get_contact_count()
         out = np.empty((m,) if width == 1 else (m, width), dtype=np.float64)
         self._check(fn(self._h(), _dp(out)))

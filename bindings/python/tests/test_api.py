@@ -134,8 +134,8 @@ class TestModel(unittest.TestCase):
                 m.get_displacement(1)  # no solve yet
             self.assertEqual(cm.exception.status, mc.MC_ERROR_STATE)
             with self.assertRaises(mc.MortarContactError) as cm:
-                m.get_info_int(mc.MC_INFO_DOFS)
-            self.assertEqual(cm.exception.status, mc.MC_ERROR_STATE)
+                m.get_info_int(mc.MC_INFO_TIME_TOTAL)  # a real info through the integer call
+            self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
 
     def test_options(self):
         with mc.Model() as m:

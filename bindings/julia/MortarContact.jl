@@ -1,0 +1,400 @@
+"""
+    MortarContact
+
+Julia bindings of mortarcontact (include/mortarcontact.h): frictionless 2D contact between two
+linear-elastic bodies by the mortar finite element method.
+
+UNTESTED AT RUN TIME: Julia is not available where this project is built and tested. The test
+`julia_wrappers` (bindings/julia/check_julia_wrappers.py) only checks, by parsing, that every
+`mc_` function of the header has a `ccall` here with matching argument and return types.
+
+Two layers, both thin:
+- `mc_create`, `mc_set_mesh`, ... : one `ccall` per C function, same name and arguments
+  (raw pointers, `Ref`s and arrays);
+- `Model` and `set_mesh!`, `solve!`, `get_displacement`, ...: a model with 1-based ids (Julia's
+  own convention; `Model(index_base=0)` for 0-based), column-major arrays with one column per
+  node/cell/edge (`xy` is 2×n_nodes, `cells` 3×n_cells or 4×n_cells, `edges` 2×n_edges), which is
+  exactly the C layout, and errors thrown as `MortarContactError(status, message)`.
+
+The library is `libmortarcontact.so.0`, loaded from `ENV["MORTARCONTACT_LIBRARY"]` (full path)
+if set, else from the install prefix this file was installed into
+(`<prefix>/share/mortarcontact/julia/`), else from the system's library path.
+
+```julia
+include("MortarContact.jl"); using .MortarContact
+Model() do m
+    set_mesh!(m, 1, xy1, cells1); set_material!(m, 1, 1.0, 0.3)
+    # ...
+    solve!(m)
+    u1 = get_displacement(m, 1)
+end
+```
+"""
+module MortarContact
+
+using Libdl
+
+export Model, MortarContactError, version_string, version_number, status_string
+export set_index_base!, set_plane!, set_mesh!, set_material!, set_cell_elasticity!, fix!,
+       add_traction!, add_pressure!, add_nodal_force!, set_body_force!, clear_loads!, set_contact!,
+       set_option_int!, set_option_real!, solve!, get_info_int, get_info_real, get_displacement,
+       get_stress, get_reaction, get_contact_count, get_contact_nodes, get_contact_pressure,
+       get_contact_force, get_contact_gap, get_contact_initial_gap, get_contact_normal, errmsg
+
+# Resolved by soname: __init__ dlopens the chosen file first, and the dynamic loader then
+# matches this name against the already-loaded library's soname.
+const libmortarcontact = "libmortarcontact.so.0"
+
+function __init__()
+    path = get(ENV, "MORTARCONTACT_LIBRARY", "")
+    if isempty(path)
+        path = find_installed()
+    end
+    isempty(path) || Libdl.dlopen(path, Libdl.RTLD_LAZY | Libdl.RTLD_GLOBAL)
+    return nothing
+end
+
+# <prefix>/share/mortarcontact/julia/MortarContact.jl -> <prefix>/lib*/ or <prefix>/lib/<multiarch>/
+function find_installed()
+    prefix = normpath(joinpath(@__DIR__, "..", "..", ".."))
+    subdirs(d) = isdir(d) ? [joinpath(d, x) for x in readdir(d) if isdir(joinpath(d, x))] : String[]
+    dirs = [d for d in subdirs(prefix) if startswith(basename(d), "lib")]
+    append!(dirs, subdirs(joinpath(prefix, "lib")))
+    for d in dirs
+        candidate = joinpath(d, libmortarcontact)
+        isfile(candidate) && return candidate
+    end
+    return ""
+end
+
+# ---- constants of mortarcontact.h (frozen values; see docs/abi.md) ----------------------------
+const MC_VERSION_MAJOR = 0
+const MC_VERSION_MINOR = 1
+const MC_VERSION_PATCH = 0
+const MC_VERSION_NUMBER = MC_VERSION_MAJOR * 10000 + MC_VERSION_MINOR * 100 + MC_VERSION_PATCH
+const MC_VERSION_STRING = "0.1.0"
+
+const MC_OK = Cint(0)
+const MC_ERROR_ARGUMENT = Cint(1)
+const MC_ERROR_MESH = Cint(2)
+const MC_ERROR_MATERIAL = Cint(3)
+const MC_ERROR_STATE = Cint(4)
+const MC_ERROR_CONTACT = Cint(5)
+const MC_ERROR_SINGULAR = Cint(6)
+const MC_ERROR_NOT_CONVERGED = Cint(7)
+const MC_ERROR_MEMORY = Cint(8)
+const MC_ERROR_INTERNAL = Cint(9)
+const MC_PLANE_STRAIN = Cint(0)
+const MC_PLANE_STRESS = Cint(1)
+const MC_X = Cint(1)
+const MC_Y = Cint(2)
+const MC_XY = Cint(3)
+const MC_OPTION_METHOD = Cint(1)
+const MC_OPTION_TOLERANCE = Cint(2)
+const MC_OPTION_MAX_ITERATIONS = Cint(3)
+const MC_OPTION_ORDERING = Cint(4)
+const MC_OPTION_Q1_INTEGRATION = Cint(6)
+const MC_OPTION_CONTACT_NORMAL = Cint(7)
+const MC_METHOD_MORTAR = Cint(0)
+const MC_METHOD_DUAL_MORTAR = Cint(1)
+const MC_METHOD_NODE_TO_SEGMENT = Cint(2)
+const MC_NORMAL_NONMORTAR = Cint(0)
+const MC_NORMAL_MORTAR = Cint(1)
+const MC_ORDERING_AUTO = Cint(0)
+const MC_ORDERING_AMD = Cint(1)
+const MC_ORDERING_METIS = Cint(2)
+const MC_Q1_FULL = Cint(0)
+const MC_Q1_BBAR = Cint(1)
+const MC_INFO_DOFS = Cint(1)
+const MC_INFO_FACTOR_NNZ = Cint(2)
+const MC_INFO_ITERATIONS = Cint(3)
+const MC_INFO_ACTIVE_NODES = Cint(4)
+const MC_INFO_CONTACT_NODES = Cint(5)
+const MC_INFO_FACTORIZATIONS = Cint(6)
+const MC_INFO_TIME_ASSEMBLY = Cint(20)
+const MC_INFO_TIME_ANALYSIS = Cint(21)
+const MC_INFO_TIME_FACTORIZATION = Cint(22)
+const MC_INFO_TIME_SOLVE = Cint(23)
+const MC_INFO_TIME_CONTACT = Cint(24)
+const MC_INFO_TIME_TOTAL = Cint(25)
+const MC_INFO_STRAIN_ENERGY = Cint(26)
+const MC_INFO_COMPLEMENTARITY = Cint(27)
+const MC_INFO_EQUILIBRIUM = Cint(28)
+
+for name in names(@__MODULE__; all=true)
+    startswith(String(name), "MC_") && @eval export $name
+end
+
+# ---- the C API: one ccall per function of mortarcontact.h, in header order -------------------
+# Model handles are Ptr{Cvoid}; a Model converts to one (see unsafe_convert below).
+
+mc_create(model) = ccall((:mc_create, libmortarcontact), Cint, (Ref{Ptr{Cvoid}},), model)
+mc_destroy(model) = ccall((:mc_destroy, libmortarcontact), Cvoid, (Ptr{Cvoid},), model)
+mc_errmsg(model) = ccall((:mc_errmsg, libmortarcontact), Cstring, (Ptr{Cvoid},), model)
+mc_status_string(status) = ccall((:mc_status_string, libmortarcontact), Cstring, (Cint,), status)
+mc_version_string() = ccall((:mc_version_string, libmortarcontact), Cstring, ())
+mc_version_number() = ccall((:mc_version_number, libmortarcontact), Cint, ())
+mc_set_index_base(m, base) =
+    ccall((:mc_set_index_base, libmortarcontact), Cint, (Ptr{Cvoid}, Cint), m, base)
+mc_set_plane(m, plane, thickness) =
+    ccall((:mc_set_plane, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Cdouble), m, plane, thickness)
+mc_set_mesh(m, body, n_nodes, xy, n_cells, nodes_per_cell, cells) =
+    ccall((:mc_set_mesh, libmortarcontact), Cint,
+          (Ptr{Cvoid}, Cint, Int32, Ptr{Cdouble}, Int32, Cint, Ptr{Int32}),
+          m, body, n_nodes, xy, n_cells, nodes_per_cell, cells)
+mc_set_material(m, body, young, poisson) =
+    ccall((:mc_set_material, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Cdouble, Cdouble),
+          m, body, young, poisson)
+mc_set_cell_elasticity(m, body, d) =
+    ccall((:mc_set_cell_elasticity, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Ptr{Cdouble}), m, body, d)
+mc_fix(m, body, n, nodes, components, values) =
+    ccall((:mc_fix, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Int32, Ptr{Int32}, Cint, Ptr{Cdouble}),
+          m, body, n, nodes, components, values)
+mc_add_traction(m, body, n_edges, edges, traction) =
+    ccall((:mc_add_traction, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Int32, Ptr{Int32}, Ptr{Cdouble}),
+          m, body, n_edges, edges, traction)
+mc_add_pressure(m, body, n_edges, edges, pressure) =
+    ccall((:mc_add_pressure, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Int32, Ptr{Int32}, Ptr{Cdouble}),
+          m, body, n_edges, edges, pressure)
+mc_add_nodal_force(m, body, n, nodes, force) =
+    ccall((:mc_add_nodal_force, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Int32, Ptr{Int32}, Ptr{Cdouble}),
+          m, body, n, nodes, force)
+mc_set_body_force(m, body, fx, fy) =
+    ccall((:mc_set_body_force, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Cdouble, Cdouble), m, body, fx, fy)
+mc_clear_loads(m, body) = ccall((:mc_clear_loads, libmortarcontact), Cint, (Ptr{Cvoid}, Cint), m, body)
+mc_set_contact(m, body, n_edges, edges) =
+    ccall((:mc_set_contact, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Int32, Ptr{Int32}), m, body, n_edges, edges)
+mc_set_option_int(m, option, value) =
+    ccall((:mc_set_option_int, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Int64), m, option, value)
+mc_set_option_real(m, option, value) =
+    ccall((:mc_set_option_real, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Cdouble), m, option, value)
+mc_solve(m) = ccall((:mc_solve, libmortarcontact), Cint, (Ptr{Cvoid},), m)
+mc_get_info_int(m, info, value) =
+    ccall((:mc_get_info_int, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Ref{Int64}), m, info, value)
+mc_get_info_real(m, info, value) =
+    ccall((:mc_get_info_real, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Ref{Cdouble}), m, info, value)
+mc_get_displacement(m, body, u) =
+    ccall((:mc_get_displacement, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Ptr{Cdouble}), m, body, u)
+mc_get_stress(m, body, sigma) =
+    ccall((:mc_get_stress, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Ptr{Cdouble}), m, body, sigma)
+mc_get_reaction(m, body, r) =
+    ccall((:mc_get_reaction, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Ptr{Cdouble}), m, body, r)
+mc_get_contact_count(m, n) =
+    ccall((:mc_get_contact_count, libmortarcontact), Cint, (Ptr{Cvoid}, Ref{Int32}), m, n)
+mc_get_contact_nodes(m, nodes) =
+    ccall((:mc_get_contact_nodes, libmortarcontact), Cint, (Ptr{Cvoid}, Ptr{Int32}), m, nodes)
+mc_get_contact_pressure(m, p) =
+    ccall((:mc_get_contact_pressure, libmortarcontact), Cint, (Ptr{Cvoid}, Ptr{Cdouble}), m, p)
+mc_get_contact_force(m, f) =
+    ccall((:mc_get_contact_force, libmortarcontact), Cint, (Ptr{Cvoid}, Ptr{Cdouble}), m, f)
+mc_get_contact_gap(m, g) =
+    ccall((:mc_get_contact_gap, libmortarcontact), Cint, (Ptr{Cvoid}, Ptr{Cdouble}), m, g)
+mc_get_contact_initial_gap(m, g0) =
+    ccall((:mc_get_contact_initial_gap, libmortarcontact), Cint, (Ptr{Cvoid}, Ptr{Cdouble}), m, g0)
+mc_get_contact_normal(m, n) =
+    ccall((:mc_get_contact_normal, libmortarcontact), Cint, (Ptr{Cvoid}, Ptr{Cdouble}), m, n)
+
+# ---- the Julia API ---------------------------------------------------------------------------
+
+"""A failed call: `status` is the `mc_status` code (`MC_ERROR_*`), `message` the library's
+(or the binding's) message."""
+struct MortarContactError <: Exception
+    status::Int
+    message::String
+end
+Base.showerror(io::IO, e::MortarContactError) = print(io, status_string(e.status), ": ", e.message)
+
+"""The library's English name of a status code."""
+status_string(status::Integer) = unsafe_string(mc_status_string(Cint(status)))
+"""The loaded library's version, "MAJOR.MINOR.PATCH"."""
+version_string() = unsafe_string(mc_version_string())
+"""The loaded library's version as MAJOR*10000+MINOR*100+PATCH."""
+version_number() = Int(mc_version_number())
+
+"""
+    Model(; index_base=1)
+    Model(f; index_base=1)   # do-block: closes the model afterwards
+
+One scene (`mc_model`). Freed by `close(m)` or, failing that, by its finalizer.
+"""
+mutable struct Model
+    ptr::Ptr{Cvoid}
+    n_nodes::Vector{Int}   # per body; -1 = no mesh yet
+    n_cells::Vector{Int}
+    function Model(; index_base::Integer=1)
+        r = Ref{Ptr{Cvoid}}(C_NULL)
+        st = mc_create(r)
+        st == MC_OK || throw(MortarContactError(st, "mc_create failed"))
+        m = new(r[], [-1, -1], [-1, -1])
+        finalizer(close, m)
+        check(m, mc_set_index_base(m, index_base))
+        return m
+    end
+end
+
+function Model(f::Function; index_base::Integer=1)
+    m = Model(; index_base=index_base)
+    try
+        return f(m)
+    finally
+        close(m)
+    end
+end
+
+function Base.close(m::Model)
+    if m.ptr != C_NULL
+        mc_destroy(m.ptr)
+        m.ptr = C_NULL
+    end
+    return nothing
+end
+
+# ccall keeps `m` alive for the duration of the call when it is passed itself.
+function Base.unsafe_convert(::Type{Ptr{Cvoid}}, m::Model)
+    m.ptr == C_NULL && throw(MortarContactError(MC_ERROR_STATE, "the model is closed"))
+    return m.ptr
+end
+
+"""The message of the last call on the model ("" after a success)."""
+errmsg(m::Model) = unsafe_string(mc_errmsg(m))
+
+function check(m::Model, status)
+    status == MC_OK || throw(MortarContactError(status, errmsg(m)))
+    return nothing
+end
+
+argerror(msg) = throw(MortarContactError(MC_ERROR_ARGUMENT, msg))
+
+function checkbody(m::Model, body, what)
+    body in (1, 2) || argerror("$what: body must be 1 or 2, got $body")
+    m.n_nodes[body] >= 0 || throw(MortarContactError(MC_ERROR_STATE, "$what: no mesh set for body $body"))
+    return nothing
+end
+
+function checkshape(a, want, what)
+    size(a) == want || argerror("$what must have size $want, got $(size(a))")
+    return nothing
+end
+
+reals(a) = convert(Array{Cdouble}, a)      # contiguous Float64 copy (no copy if already one)
+ids(a) = convert(Array{Int32}, a)          # throws InexactError for ids beyond Int32
+
+set_index_base!(m::Model, base::Integer) = check(m, mc_set_index_base(m, base))
+set_plane!(m::Model, plane::Integer, thickness::Real=1.0) = check(m, mc_set_plane(m, plane, thickness))
+
+"""`xy`: 2×n_nodes; `cells`: 3×n_cells (P1) or 4×n_cells (Q1), counter-clockwise."""
+function set_mesh!(m::Model, body::Integer, xy::AbstractMatrix{<:Real}, cells::AbstractMatrix{<:Integer})
+    size(xy, 1) == 2 || argerror("xy must be 2×n_nodes, got $(size(xy))")
+    x, c = reals(xy), ids(cells)
+    check(m, mc_set_mesh(m, body, size(x, 2), x, size(c, 2), size(c, 1), c))
+    if body in (1, 2)
+        m.n_nodes[body] = size(x, 2)
+        m.n_cells[body] = size(c, 2)
+    end
+    return nothing
+end
+
+set_material!(m::Model, body::Integer, young::Real, poisson::Real) =
+    check(m, mc_set_material(m, body, young, poisson))
+
+"""`d`: 3×3×n_cells symmetric positive definite matrices (Voigt xx, yy, xy)."""
+function set_cell_elasticity!(m::Model, body::Integer, d::AbstractArray{<:Real,3})
+    checkbody(m, body, "set_cell_elasticity!")
+    checkshape(d, (3, 3, m.n_cells[body]), "d")
+    check(m, mc_set_cell_elasticity(m, body, reals(d)))
+end
+
+"""Prescribes the `components` (MC_X, MC_Y, MC_XY) of `nodes`; `values` 2×n or `nothing` (zero)."""
+function fix!(m::Model, body::Integer, nodes::AbstractVector{<:Integer}, components::Integer=MC_XY,
+              values::Union{Nothing,AbstractMatrix{<:Real}}=nothing)
+    n = ids(nodes)
+    if values === nothing
+        check(m, mc_fix(m, body, length(n), n, components, C_NULL))
+    else
+        checkshape(values, (2, length(n)), "values")
+        check(m, mc_fix(m, body, length(n), n, components, reals(values)))
+    end
+end
+
+"""`edges`: 2×n_edges; `traction`: 2×n_edges, force per unit length."""
+function add_traction!(m::Model, body::Integer, edges::AbstractMatrix{<:Integer}, traction::AbstractMatrix{<:Real})
+    checkshape(edges, (2, size(edges, 2)), "edges")
+    checkshape(traction, (2, size(edges, 2)), "traction")
+    check(m, mc_add_traction(m, body, size(edges, 2), ids(edges), reals(traction)))
+end
+
+"""`edges`: 2×n_edges; `pressure`: n_edges values, > 0 pushes into the body."""
+function add_pressure!(m::Model, body::Integer, edges::AbstractMatrix{<:Integer}, pressure::AbstractVector{<:Real})
+    checkshape(edges, (2, size(edges, 2)), "edges")
+    checkshape(pressure, (size(edges, 2),), "pressure")
+    check(m, mc_add_pressure(m, body, size(edges, 2), ids(edges), reals(pressure)))
+end
+
+"""`force`: 2×length(nodes)."""
+function add_nodal_force!(m::Model, body::Integer, nodes::AbstractVector{<:Integer}, force::AbstractMatrix{<:Real})
+    checkshape(force, (2, length(nodes)), "force")
+    check(m, mc_add_nodal_force(m, body, length(nodes), ids(nodes), reals(force)))
+end
+
+set_body_force!(m::Model, body::Integer, fx::Real, fy::Real) = check(m, mc_set_body_force(m, body, fx, fy))
+clear_loads!(m::Model, body::Integer) = check(m, mc_clear_loads(m, body))
+
+"""Candidate contact surface, `edges` 2×n_edges; body 1 non-mortar, body 2 mortar."""
+function set_contact!(m::Model, body::Integer, edges::AbstractMatrix{<:Integer})
+    checkshape(edges, (2, size(edges, 2)), "edges")
+    check(m, mc_set_contact(m, body, size(edges, 2), ids(edges)))
+end
+
+set_option_int!(m::Model, option::Integer, value::Integer) = check(m, mc_set_option_int(m, option, value))
+set_option_real!(m::Model, option::Integer, value::Real) = check(m, mc_set_option_real(m, option, value))
+solve!(m::Model) = check(m, mc_solve(m))
+
+function get_info_int(m::Model, info::Integer)
+    v = Ref{Int64}(0)
+    check(m, mc_get_info_int(m, info, v))
+    return v[]
+end
+
+function get_info_real(m::Model, info::Integer)
+    v = Ref{Cdouble}(0.0)
+    check(m, mc_get_info_real(m, info, v))
+    return v[]
+end
+
+function per_body(f, m::Model, body, rows, count, what)
+    checkbody(m, body, what)
+    out = Matrix{Cdouble}(undef, rows, count(body))
+    check(m, f(m, body, out))
+    return out
+end
+
+"""Displacements, 2×n_nodes."""
+get_displacement(m::Model, body::Integer) = per_body(mc_get_displacement, m, body, 2, b -> m.n_nodes[b], "get_displacement")
+"""Cell-averaged stresses, 4×n_cells (xx, yy, xy, zz)."""
+get_stress(m::Model, body::Integer) = per_body(mc_get_stress, m, body, 4, b -> m.n_cells[b], "get_stress")
+"""Support reactions, 2×n_nodes."""
+get_reaction(m::Model, body::Integer) = per_body(mc_get_reaction, m, body, 2, b -> m.n_nodes[b], "get_reaction")
+
+"""Number of body-1 contact nodes."""
+function get_contact_count(m::Model)
+    n = Ref{Int32}(0)
+    check(m, mc_get_contact_count(m, n))
+    return Int(n[])
+end
+
+function contact_array(f, m::Model, T, rows)
+    n = get_contact_count(m)
+    out = rows == 1 ? Vector{T}(undef, n) : Matrix{T}(undef, rows, n)
+    check(m, f(m, out))
+    return out
+end
+
+get_contact_nodes(m::Model) = contact_array(mc_get_contact_nodes, m, Int32, 1)
+get_contact_pressure(m::Model) = contact_array(mc_get_contact_pressure, m, Cdouble, 1)
+get_contact_force(m::Model) = contact_array(mc_get_contact_force, m, Cdouble, 1)
+get_contact_gap(m::Model) = contact_array(mc_get_contact_gap, m, Cdouble, 1)
+get_contact_initial_gap(m::Model) = contact_array(mc_get_contact_initial_gap, m, Cdouble, 1)
+"""Unit outward normals of body 1 at the contact nodes, 2×n_contact."""
+get_contact_normal(m::Model) = contact_array(mc_get_contact_normal, m, Cdouble, 2)
+
+end # module

@@ -1,0 +1,508 @@
+/*
+ * test_model.c - the model object: lifecycle, version, status strings, options, infos,
+ * index base, re-solves that reuse the factorization, re-setting a mesh, and the
+ * independence of two models.
+ */
+#include <check.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mortarcontact.h"
+#include "scenes.h"
+
+#define OK(call) ck_assert_msg((call) == MC_OK, "%s failed: %s", #call, mc_errmsg(m))
+
+/* A failed call: the status, a non-empty message containing `needle` (if given). */
+#define FAILS(call, status, needle)                                                                       \
+  do {                                                                                                    \
+    mc_status st_ = (call);                                                                               \
+    const char *msg_;                                                                                     \
+    ck_assert_msg(st_ == (status), "%s returned %s, expected %s (message: %s)", #call, mc_status_string(st_), \
+                  mc_status_string(status), mc_errmsg(m));                                                \
+    msg_ = mc_errmsg(m);                                                                                  \
+    ck_assert_ptr_nonnull(msg_);                                                                          \
+    ck_assert_msg(msg_[0] != '\0', "%s: empty message", #call);                                           \
+    if ((needle) != NULL) ck_assert_msg(strstr(msg_, (needle)) != NULL, "%s: message \"%s\" lacks \"%s\"", #call, msg_, (const char *)(needle)); \
+  } while (0)
+
+/* ---- lifecycle, version, status strings ------------------------------------ */
+
+START_TEST(test_version) {
+  char expected[32];
+  ck_assert_int_eq(mc_version_number(), MC_VERSION_NUMBER);
+  ck_assert_str_eq(mc_version_string(), MC_VERSION_STRING);
+  snprintf(expected, sizeof expected, "%d.%d.%d", MC_VERSION_MAJOR, MC_VERSION_MINOR, MC_VERSION_PATCH);
+  ck_assert_str_eq(mc_version_string(), expected);
+  ck_assert_int_eq(MC_VERSION_NUMBER, MC_VERSION_MAJOR * 10000 + MC_VERSION_MINOR * 100 + MC_VERSION_PATCH);
+}
+END_TEST
+
+START_TEST(test_create_destroy) {
+  mc_model *m = NULL, *other = NULL;
+  ck_assert_int_eq(mc_create(NULL), MC_ERROR_ARGUMENT);
+  mc_destroy(NULL); /* fine */
+  ck_assert_ptr_nonnull(mc_errmsg(NULL));
+  ck_assert_int_eq(mc_create(&m), MC_OK);
+  ck_assert_ptr_nonnull(m);
+  ck_assert_str_eq(mc_errmsg(m), "");
+  ck_assert_int_eq(mc_create(&other), MC_OK);
+  ck_assert_ptr_ne(m, other);
+  mc_destroy(m);
+  mc_destroy(other);
+}
+END_TEST
+
+/* MC_ERROR_MEMORY and MC_ERROR_INTERNAL cannot be triggered portably (no allocation hook,
+   and an internal error is a bug by definition): their names are tested here instead, as
+   are those of every other code. */
+START_TEST(test_status_strings) {
+  static const char *names[] = {"MC_OK",
+                                "MC_ERROR_ARGUMENT",
+                                "MC_ERROR_MESH",
+                                "MC_ERROR_MATERIAL",
+                                "MC_ERROR_STATE",
+                                "MC_ERROR_CONTACT",
+                                "MC_ERROR_SINGULAR",
+                                "MC_ERROR_NOT_CONVERGED",
+                                "MC_ERROR_MEMORY",
+                                "MC_ERROR_INTERNAL"};
+  int s;
+  ck_assert_int_eq(MC_OK, 0);
+  ck_assert_int_eq(MC_ERROR_ARGUMENT, 1);
+  ck_assert_int_eq(MC_ERROR_MESH, 2);
+  ck_assert_int_eq(MC_ERROR_MATERIAL, 3);
+  ck_assert_int_eq(MC_ERROR_STATE, 4);
+  ck_assert_int_eq(MC_ERROR_CONTACT, 5);
+  ck_assert_int_eq(MC_ERROR_SINGULAR, 6);
+  ck_assert_int_eq(MC_ERROR_NOT_CONVERGED, 7);
+  ck_assert_int_eq(MC_ERROR_MEMORY, 8);
+  ck_assert_int_eq(MC_ERROR_INTERNAL, 9);
+  for (s = 0; s <= 9; ++s) ck_assert_str_eq(mc_status_string((mc_status)s), names[s]);
+  ck_assert_str_eq(mc_status_string(MC_ERROR_MEMORY), "MC_ERROR_MEMORY");
+  ck_assert_str_eq(mc_status_string(MC_ERROR_INTERNAL), "MC_ERROR_INTERNAL");
+  ck_assert_str_eq(mc_status_string((mc_status)10), "unknown status");
+  ck_assert_str_eq(mc_status_string((mc_status)-1), "unknown status");
+  ck_assert_str_eq(mc_status_string((mc_status)1000), "unknown status");
+}
+END_TEST
+
+/* Every entry point taking a model rejects NULL with MC_ERROR_ARGUMENT. */
+START_TEST(test_null_model) {
+  double xy[6] = {0, 0, 1, 0, 0, 1}, v[8];
+  mc_int cells[3] = {0, 1, 2}, id = 0, n;
+  int64_t iv;
+  ck_assert_int_eq(mc_set_index_base(NULL, 0), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_set_plane(NULL, MC_PLANE_STRAIN, 1), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_set_mesh(NULL, 1, 3, xy, 1, 3, cells), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_set_material(NULL, 1, 1, 0.3), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_set_cell_elasticity(NULL, 1, v), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_fix(NULL, 1, 1, &id, MC_XY, NULL), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_add_traction(NULL, 1, 1, cells, v), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_add_pressure(NULL, 1, 1, cells, v), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_add_nodal_force(NULL, 1, 1, &id, v), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_set_body_force(NULL, 1, 0, 0), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_clear_loads(NULL, 1), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_set_contact(NULL, 1, 1, cells), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_set_option_int(NULL, MC_OPTION_METHOD, 0), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_set_option_real(NULL, MC_OPTION_TOLERANCE, 1e-8), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_solve(NULL), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_get_info_int(NULL, MC_INFO_DOFS, &iv), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_get_info_real(NULL, MC_INFO_STRAIN_ENERGY, v), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_get_displacement(NULL, 1, v), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_get_stress(NULL, 1, v), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_get_reaction(NULL, 1, v), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_get_contact_count(NULL, &n), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_get_contact_nodes(NULL, &n), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_get_contact_pressure(NULL, v), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_get_contact_force(NULL, v), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_get_contact_gap(NULL, v), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_get_contact_initial_gap(NULL, v), MC_ERROR_ARGUMENT);
+  ck_assert_int_eq(mc_get_contact_normal(NULL, v), MC_ERROR_ARGUMENT);
+}
+END_TEST
+
+/* ---- a small solved scene ----------------------------------------------------- */
+
+/* Cantilever [0,2] x [0,1], P1 or Q1, nx x ny, clamped left, traction on the right. */
+static mc_model *cantilever(sc_mesh *mesh, int npc, int nx, int ny) {
+  mc_model *m = NULL;
+  ck_assert_int_eq(sc_mesh_rect(mesh, npc, nx, ny, 0, 0, 2, 1, 0.15, 3u), 0);
+  ck_assert_int_eq(mc_create(&m), MC_OK);
+  OK(sc_set_mesh(m, 1, mesh, 0));
+  OK(mc_set_material(m, 1, 100.0, 0.3));
+  OK(sc_fix_side(m, 1, mesh, SC_LEFT, MC_XY, 0));
+  OK(sc_traction_side(m, 1, mesh, SC_RIGHT, 0.2, -1.0, 0));
+  return m;
+}
+
+static double max_diff(const double *a, const double *b, size_t n, double factor) {
+  double d = 0;
+  size_t i;
+  for (i = 0; i < n; ++i)
+    if (fabs(a[i] - factor * b[i]) > d) d = fabs(a[i] - factor * b[i]);
+  return d;
+}
+
+static double max_abs(const double *v, size_t n) {
+  double s = 0;
+  size_t i;
+  for (i = 0; i < n; ++i)
+    if (fabs(v[i]) > s) s = fabs(v[i]);
+  return s;
+}
+
+/* ---- options ------------------------------------------------------------------ */
+
+START_TEST(test_options) {
+  sc_mesh mesh;
+  mc_model *m = cantilever(&mesh, 4, 6, 3);
+  double *u0 = malloc(sizeof(double) * 2 * (size_t)mesh.n_nodes), *u = malloc(sizeof(double) * 2 * (size_t)mesh.n_nodes);
+  size_t n = 2 * (size_t)mesh.n_nodes;
+  int k;
+  OK(mc_solve(m));
+  OK(mc_get_displacement(m, 1, u0));
+  /* every valid value is accepted, and the elasticity answer does not depend on the
+     contact options nor on the ordering */
+  {
+    static const int methods[3] = {MC_METHOD_MORTAR, MC_METHOD_DUAL_MORTAR, MC_METHOD_NODE_TO_SEGMENT};
+    static const int orderings[3] = {MC_ORDERING_AUTO, MC_ORDERING_AMD, MC_ORDERING_METIS};
+    for (k = 0; k < 3; ++k) {
+      OK(mc_set_option_int(m, MC_OPTION_METHOD, methods[k]));
+      OK(mc_set_option_int(m, MC_OPTION_ORDERING, orderings[k]));
+      OK(mc_set_option_int(m, MC_OPTION_MAX_ITERATIONS, k == 0 ? 1 : 1000000));
+      OK(mc_set_option_real(m, MC_OPTION_TOLERANCE, k == 0 ? 1e-14 : 0.5));
+      ck_assert_str_eq(mc_errmsg(m), "");
+      OK(mc_solve(m));
+      OK(mc_get_displacement(m, 1, u));
+      ck_assert(max_diff(u, u0, n, 1) <= 1e-12 * max_abs(u0, n));
+    }
+  }
+  OK(mc_set_option_int(m, MC_OPTION_Q1_INTEGRATION, MC_Q1_BBAR));
+  OK(mc_solve(m));
+  OK(mc_set_option_int(m, MC_OPTION_Q1_INTEGRATION, MC_Q1_FULL));
+  OK(mc_solve(m));
+  OK(mc_get_displacement(m, 1, u));
+  ck_assert(max_diff(u, u0, n, 1) <= 1e-12 * max_abs(u0, n));
+
+  /* bad options and values: MC_ERROR_ARGUMENT, message names the option or value */
+  FAILS(mc_set_option_int(m, 0, 1), MC_ERROR_ARGUMENT, "option");
+  FAILS(mc_set_option_int(m, 5, 1), MC_ERROR_ARGUMENT, "option");
+  FAILS(mc_set_option_int(m, 99, 1), MC_ERROR_ARGUMENT, "option");
+  FAILS(mc_set_option_int(m, MC_OPTION_TOLERANCE, 1), MC_ERROR_ARGUMENT, "option");
+  FAILS(mc_set_option_int(m, MC_OPTION_METHOD, 3), MC_ERROR_ARGUMENT, "value");
+  FAILS(mc_set_option_int(m, MC_OPTION_METHOD, -1), MC_ERROR_ARGUMENT, "value");
+  FAILS(mc_set_option_int(m, MC_OPTION_MAX_ITERATIONS, 0), MC_ERROR_ARGUMENT, "value");
+  FAILS(mc_set_option_int(m, MC_OPTION_ORDERING, 3), MC_ERROR_ARGUMENT, "value");
+  FAILS(mc_set_option_int(m, MC_OPTION_Q1_INTEGRATION, 2), MC_ERROR_ARGUMENT, "value");
+  FAILS(mc_set_option_real(m, MC_OPTION_TOLERANCE, 0), MC_ERROR_ARGUMENT, "value");
+  FAILS(mc_set_option_real(m, MC_OPTION_TOLERANCE, 1), MC_ERROR_ARGUMENT, "value");
+  FAILS(mc_set_option_real(m, MC_OPTION_TOLERANCE, -1e-8), MC_ERROR_ARGUMENT, "value");
+  FAILS(mc_set_option_real(m, MC_OPTION_TOLERANCE, NAN), MC_ERROR_ARGUMENT, "value");
+  FAILS(mc_set_option_real(m, MC_OPTION_METHOD, 1), MC_ERROR_ARGUMENT, "option");
+  FAILS(mc_set_option_real(m, 42, 1e-3), MC_ERROR_ARGUMENT, "option");
+  /* still usable */
+  OK(mc_set_option_real(m, MC_OPTION_TOLERANCE, 1e-10));
+  ck_assert_str_eq(mc_errmsg(m), "");
+  OK(mc_solve(m));
+  ck_assert_str_eq(mc_errmsg(m), "");
+  free(u0), free(u);
+  mc_destroy(m);
+  sc_mesh_free(&mesh);
+}
+END_TEST
+
+/* ---- infos ---------------------------------------------------------------------- */
+
+START_TEST(test_infos) {
+  sc_mesh mesh;
+  mc_model *m = cantilever(&mesh, 3 + _i, 8, 4);
+  int64_t v;
+  double r, total, part, sum = 0;
+  static const int times[5] = {MC_INFO_TIME_ASSEMBLY, MC_INFO_TIME_ANALYSIS, MC_INFO_TIME_FACTORIZATION,
+                               MC_INFO_TIME_SOLVE, MC_INFO_TIME_CONTACT};
+  int k;
+  OK(mc_solve(m));
+  OK(mc_get_info_int(m, MC_INFO_DOFS, &v));
+  ck_assert_int_eq(v, 2 * mesh.n_nodes - 2 * mesh.n_side_nodes[SC_LEFT]);
+  OK(mc_get_info_int(m, MC_INFO_FACTOR_NNZ, &v));
+  ck_assert_int_ge(v, 2 * mesh.n_nodes - 2 * mesh.n_side_nodes[SC_LEFT]);
+  OK(mc_get_info_int(m, MC_INFO_ITERATIONS, &v));
+  ck_assert_int_eq(v, 0);
+  OK(mc_get_info_int(m, MC_INFO_ACTIVE_NODES, &v));
+  ck_assert_int_eq(v, 0);
+  OK(mc_get_info_int(m, MC_INFO_CONTACT_NODES, &v));
+  ck_assert_int_eq(v, 0);
+  OK(mc_get_info_int(m, MC_INFO_FACTORIZATIONS, &v));
+  ck_assert_int_eq(v, 1);
+  OK(mc_get_info_real(m, MC_INFO_TIME_TOTAL, &total));
+  ck_assert(total >= 0 && isfinite(total));
+  for (k = 0; k < 5; ++k) {
+    OK(mc_get_info_real(m, times[k], &part));
+    ck_assert(part >= 0 && isfinite(part));
+    sum += part;
+  }
+  ck_assert_msg(sum <= total * (1 + 1e-9) + 1e-6, "timed parts %g exceed the total %g", sum, total);
+  OK(mc_get_info_real(m, MC_INFO_STRAIN_ENERGY, &r));
+  ck_assert(r > 0);
+  OK(mc_get_info_real(m, MC_INFO_COMPLEMENTARITY, &r));
+  ck_assert(r == 0);
+  OK(mc_get_info_real(m, MC_INFO_EQUILIBRIUM, &r));
+  ck_assert(r >= 0 && r <= 1e-10);
+
+  /* wrong kinds and unknown infos */
+  FAILS(mc_get_info_int(m, MC_INFO_STRAIN_ENERGY, &v), MC_ERROR_ARGUMENT, "info");
+  FAILS(mc_get_info_int(m, 0, &v), MC_ERROR_ARGUMENT, "info");
+  FAILS(mc_get_info_int(m, 7, &v), MC_ERROR_ARGUMENT, "info");
+  FAILS(mc_get_info_int(m, 19, &v), MC_ERROR_ARGUMENT, "info");
+  FAILS(mc_get_info_real(m, MC_INFO_DOFS, &r), MC_ERROR_ARGUMENT, "info");
+  FAILS(mc_get_info_real(m, 29, &r), MC_ERROR_ARGUMENT, "info");
+  FAILS(mc_get_info_real(m, -1, &r), MC_ERROR_ARGUMENT, "info");
+  FAILS(mc_get_info_int(m, MC_INFO_DOFS, NULL), MC_ERROR_ARGUMENT, "value");
+  FAILS(mc_get_info_real(m, MC_INFO_STRAIN_ENERGY, NULL), MC_ERROR_ARGUMENT, "value");
+  /* results are still there */
+  OK(mc_get_info_int(m, MC_INFO_DOFS, &v));
+  ck_assert_str_eq(mc_errmsg(m), "");
+  ck_assert_int_eq(v, 2 * mesh.n_nodes - 2 * mesh.n_side_nodes[SC_LEFT]);
+  mc_destroy(m);
+  sc_mesh_free(&mesh);
+}
+END_TEST
+
+/* ---- re-solves ------------------------------------------------------------------- */
+
+/* Changing only loads, prescribed values or nothing reuses the factorization
+   (MC_INFO_FACTORIZATIONS == 0) and gives the linearly scaled answer. */
+START_TEST(test_resolve_reuses_factorization) {
+  sc_mesh mesh;
+  mc_model *m = cantilever(&mesh, 3 + _i, 10, 4);
+  size_t n = 2 * (size_t)mesh.n_nodes;
+  double *u0 = malloc(sizeof(double) * n), *u1 = malloc(sizeof(double) * n), *u2 = malloc(sizeof(double) * n);
+  double e0, e, scale;
+  int64_t v;
+  mc_int node = sc_node(&mesh, 5, 2), k;
+  double force[2] = {0.7, 0.4};
+  OK(mc_solve(m));
+  OK(mc_get_info_int(m, MC_INFO_FACTORIZATIONS, &v));
+  ck_assert_int_eq(v, 1);
+  OK(mc_get_displacement(m, 1, u0));
+  OK(mc_get_info_real(m, MC_INFO_STRAIN_ENERGY, &e0));
+  scale = max_abs(u0, n);
+
+  /* nothing changed */
+  OK(mc_solve(m));
+  OK(mc_get_info_int(m, MC_INFO_FACTORIZATIONS, &v));
+  ck_assert_int_eq(v, 0);
+  OK(mc_get_displacement(m, 1, u1));
+  ck_assert(max_diff(u1, u0, n, 1) <= 1e-13 * scale);
+
+  /* loads scaled by -3 */
+  OK(mc_clear_loads(m, 1));
+  OK(sc_traction_side(m, 1, &mesh, SC_RIGHT, -0.6, 3.0, 0));
+  OK(mc_solve(m));
+  OK(mc_get_info_int(m, MC_INFO_FACTORIZATIONS, &v));
+  ck_assert_int_eq(v, 0);
+  OK(mc_get_displacement(m, 1, u1));
+  ck_assert(max_diff(u1, u0, n, -3) <= 1e-12 * scale);
+  OK(mc_get_info_real(m, MC_INFO_STRAIN_ENERGY, &e));
+  ck_assert_double_eq_tol(e, 9 * e0, 1e-12 * 9 * e0);
+
+  /* superposition: + a nodal force and a body force, each alone */
+  OK(mc_clear_loads(m, 1));
+  OK(mc_add_nodal_force(m, 1, 1, &node, force));
+  OK(mc_set_body_force(m, 1, 0.3, -0.1));
+  OK(mc_solve(m));
+  OK(mc_get_info_int(m, MC_INFO_FACTORIZATIONS, &v));
+  ck_assert_int_eq(v, 0);
+  OK(mc_get_displacement(m, 1, u2));
+  /* a rejected load adds nothing */
+  FAILS(mc_add_traction(m, 1, mesh.n_side_edges[SC_RIGHT], mesh.side_edges[SC_RIGHT], NULL), MC_ERROR_ARGUMENT,
+        "traction");
+  OK(sc_traction_side(m, 1, &mesh, SC_RIGHT, 0.2, -1.0, 0));
+  OK(mc_solve(m));
+  OK(mc_get_info_int(m, MC_INFO_FACTORIZATIONS, &v));
+  ck_assert_int_eq(v, 0);
+  OK(mc_get_displacement(m, 1, u1));
+  for (k = 0; k < (mc_int)n; ++k) ck_assert_double_eq_tol(u1[k], u0[k] + u2[k], 1e-12 * scale);
+
+  /* prescribed values only: the left side moves by (0, d) rigidly, on top of the loads */
+  {
+    mc_int ns = mesh.n_side_nodes[SC_LEFT];
+    double *values = malloc(sizeof(double) * 2 * (size_t)ns), d = -0.01;
+    for (k = 0; k < ns; ++k) values[2 * k] = 0, values[2 * k + 1] = d;
+    OK(mc_fix(m, 1, ns, mesh.side_nodes[SC_LEFT], MC_XY, values));
+    OK(mc_solve(m));
+    OK(mc_get_info_int(m, MC_INFO_FACTORIZATIONS, &v));
+    ck_assert_int_eq(v, 0);
+    OK(mc_get_displacement(m, 1, u2));
+    for (k = 0; k < mesh.n_nodes; ++k) {
+      ck_assert_double_eq_tol(u2[2 * k], u1[2 * k], 1e-12 * scale);
+      ck_assert_double_eq_tol(u2[2 * k + 1], u1[2 * k + 1] + d, 1e-12 * scale);
+    }
+    free(values);
+  }
+
+  /* a new material changes K: a factorization */
+  OK(mc_set_material(m, 1, 200.0, 0.3));
+  OK(mc_solve(m));
+  OK(mc_get_info_int(m, MC_INFO_FACTORIZATIONS, &v));
+  ck_assert_int_eq(v, 1);
+  /* a new support too */
+  OK(mc_fix(m, 1, 1, &node, MC_X, NULL));
+  OK(mc_solve(m));
+  OK(mc_get_info_int(m, MC_INFO_FACTORIZATIONS, &v));
+  ck_assert_int_eq(v, 1);
+  free(u0), free(u1), free(u2);
+  mc_destroy(m);
+  sc_mesh_free(&mesh);
+}
+END_TEST
+
+/* Setting a mesh again clears the body's material, supports and loads. */
+START_TEST(test_reset_mesh_clears) {
+  sc_mesh mesh;
+  mc_model *m = cantilever(&mesh, 3, 6, 3);
+  OK(mc_solve(m));
+  OK(sc_set_mesh(m, 1, &mesh, 0));
+  FAILS(mc_solve(m), MC_ERROR_STATE, "material");
+  OK(mc_set_material(m, 1, 100.0, 0.3));
+  ck_assert_str_eq(mc_errmsg(m), "");
+  FAILS(mc_solve(m), MC_ERROR_SINGULAR, "body 1");
+  OK(sc_fix_side(m, 1, &mesh, SC_LEFT, MC_XY, 0));
+  OK(mc_solve(m));
+  ck_assert_str_eq(mc_errmsg(m), "");
+  {
+    /* and the loads are gone: zero displacement */
+    double *u = malloc(sizeof(double) * 2 * (size_t)mesh.n_nodes), e;
+    OK(mc_get_displacement(m, 1, u));
+    ck_assert_double_eq(max_abs(u, 2 * (size_t)mesh.n_nodes), 0);
+    OK(mc_get_info_real(m, MC_INFO_STRAIN_ENERGY, &e));
+    ck_assert_double_eq(e, 0);
+    free(u);
+  }
+  mc_destroy(m);
+  sc_mesh_free(&mesh);
+}
+END_TEST
+
+/* ---- index base ------------------------------------------------------------------ */
+
+/* The same scene in base 0 and base 1 gives the same answer; ids out are in the base. */
+START_TEST(test_index_base) {
+  sc_mesh mesh;
+  mc_model *m0 = NULL, *m = NULL;
+  size_t n;
+  double *u0, *u1, *r0, *r1;
+  mc_int corner0 = 0, corner1 = 1, k, bad[1];
+  double force[2] = {0.5, 0.5};
+  ck_assert_int_eq(sc_mesh_rect(&mesh, 4, 5, 3, 0, 0, 2, 1, 0.2, 11u), 0);
+  n = 2 * (size_t)mesh.n_nodes;
+  u0 = malloc(sizeof(double) * n), u1 = malloc(sizeof(double) * n);
+  r0 = malloc(sizeof(double) * n), r1 = malloc(sizeof(double) * n);
+  {
+    m = NULL;
+    ck_assert_int_eq(mc_create(&m), MC_OK);
+    m0 = m;
+    OK(sc_set_mesh(m, 1, &mesh, 0));
+    OK(mc_set_material(m, 1, 10.0, 0.2));
+    OK(sc_fix_side(m, 1, &mesh, SC_BOTTOM, MC_XY, 0));
+    OK(sc_traction_side(m, 1, &mesh, SC_TOP, 0.3, -0.2, 0));
+    OK(mc_add_nodal_force(m, 1, 1, &corner0, force));
+    OK(mc_solve(m));
+    OK(mc_get_displacement(m, 1, u0));
+    OK(mc_get_reaction(m, 1, r0));
+  }
+  m = NULL;
+  ck_assert_int_eq(mc_create(&m), MC_OK);
+  OK(mc_set_index_base(m, 1));
+  OK(sc_set_mesh(m, 1, &mesh, 1));
+  OK(mc_set_material(m, 1, 10.0, 0.2));
+  OK(sc_fix_side(m, 1, &mesh, SC_BOTTOM, MC_XY, 1));
+  OK(sc_traction_side(m, 1, &mesh, SC_TOP, 0.3, -0.2, 1));
+  /* id 0 is out of range in base 1, n_nodes is in range */
+  bad[0] = 0;
+  FAILS(mc_add_nodal_force(m, 1, 1, bad, force), MC_ERROR_ARGUMENT, "nodes[0] = 0");
+  bad[0] = mesh.n_nodes + 1;
+  FAILS(mc_add_nodal_force(m, 1, 1, bad, force), MC_ERROR_ARGUMENT, "nodes[0]");
+  OK(mc_add_nodal_force(m, 1, 1, &corner1, force));
+  OK(mc_solve(m));
+  OK(mc_get_displacement(m, 1, u1));
+  OK(mc_get_reaction(m, 1, r1));
+  for (k = 0; k < (mc_int)n; ++k) {
+    ck_assert_double_eq_tol(u0[k], u1[k], 1e-13 * max_abs(u0, n));
+    ck_assert_double_eq_tol(r0[k], r1[k], 1e-13 * max_abs(r0, n));
+  }
+  /* a mesh in base 1 with a 0 id is rejected; index base 2 is rejected */
+  {
+    mc_int cells[3] = {0, 1, 2};
+    double xy[6] = {0, 0, 1, 0, 0, 1};
+    FAILS(mc_set_mesh(m, 2, 3, xy, 1, 3, cells), MC_ERROR_ARGUMENT, "cells[0]");
+  }
+  FAILS(mc_set_index_base(m, 2), MC_ERROR_ARGUMENT, "base");
+  FAILS(mc_set_index_base(m, -1), MC_ERROR_ARGUMENT, "base");
+  OK(mc_solve(m));
+  ck_assert_str_eq(mc_errmsg(m), "");
+  free(u0), free(u1), free(r0), free(r1);
+  mc_destroy(m0);
+  mc_destroy(m);
+  sc_mesh_free(&mesh);
+}
+END_TEST
+
+/* ---- independent models ----------------------------------------------------------- */
+
+START_TEST(test_models_independent) {
+  sc_mesh ma, mb;
+  mc_model *a = cantilever(&ma, 3, 6, 3), *b = cantilever(&mb, 4, 4, 2), *m = a;
+  double *ua = malloc(sizeof(double) * 2 * (size_t)ma.n_nodes), *ua2 = malloc(sizeof(double) * 2 * (size_t)ma.n_nodes);
+  size_t n = 2 * (size_t)ma.n_nodes;
+  OK(mc_solve(a));
+  OK(mc_get_displacement(a, 1, ua));
+  /* errors and changes in b do not touch a */
+  m = b;
+  FAILS(mc_set_material(b, 1, -1, 0.3), MC_ERROR_MATERIAL, "young");
+  ck_assert_str_eq(mc_errmsg(a), "");
+  OK(mc_set_material(b, 1, 1.0, 0.1));
+  OK(mc_set_index_base(b, 1));
+  OK(mc_solve(b));
+  mc_destroy(b);
+  m = a;
+  OK(mc_solve(a));
+  OK(mc_get_displacement(a, 1, ua2));
+  ck_assert(max_diff(ua, ua2, n, 1) == 0);
+  free(ua), free(ua2);
+  mc_destroy(a);
+  sc_mesh_free(&ma), sc_mesh_free(&mb);
+}
+END_TEST
+
+static Suite *model_suite(void) {
+  Suite *s = suite_create("model");
+  TCase *tc = tcase_create("lifecycle");
+  tcase_add_test(tc, test_version);
+  tcase_add_test(tc, test_create_destroy);
+  tcase_add_test(tc, test_status_strings);
+  tcase_add_test(tc, test_null_model);
+  tcase_add_test(tc, test_models_independent);
+  suite_add_tcase(s, tc);
+  tc = tcase_create("options_infos");
+  tcase_add_test(tc, test_options);
+  tcase_add_loop_test(tc, test_infos, 0, 2);
+  suite_add_tcase(s, tc);
+  tc = tcase_create("resolve");
+  tcase_add_loop_test(tc, test_resolve_reuses_factorization, 0, 2);
+  tcase_add_test(tc, test_reset_mesh_clears);
+  tcase_add_test(tc, test_index_base);
+  suite_add_tcase(s, tc);
+  return s;
+}
+
+int main(void) {
+  SRunner *sr = srunner_create(model_suite());
+  int failed;
+  srunner_run_all(sr, CK_NORMAL);
+  failed = srunner_ntests_failed(sr);
+  srunner_free(sr);
+  return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
