@@ -11,3 +11,8 @@ set_tests_properties(test_contact test_contact_convergence PROPERTIES TIMEOUT 60
 # OpenBLAS, not the reference BLAS.
 add_test(NAME blas_is_openblas COMMAND sh -c
   "ldd '$<TARGET_FILE:mortarcontact>' | awk '/libblas|liblapack|libopenblas/ {print $3}' | xargs -n1 readlink -f | tee /dev/stderr | grep -v openblas && exit 1 || exit 0")
+
+# Two models in two threads at once.
+find_package(Threads REQUIRED)
+mc_add_check_test(test_model_threads test_model_threads.c)
+target_link_libraries(test_model_threads PRIVATE hertz_scene Threads::Threads)
