@@ -142,7 +142,8 @@ MC_API int mc_version_number(void);
 /* 0 (default) or 1: the base of all node, cell and edge ids, in and out. */
 MC_API mc_status mc_set_index_base(mc_model *m, int base);
 /* MC_PLANE_STRAIN (default) or MC_PLANE_STRESS, and the thickness (> 0, default 1)
-   that multiplies every stiffness and load. */
+   that multiplies the stiffness, tractions, pressures and body forces. Nodal forces,
+   reactions and contact forces are totals (already per the whole thickness). */
 MC_API mc_status mc_set_plane(mc_model *m, int plane, double thickness);
 /* The mesh of a body (1 or 2). xy: 2 per node. cells: nodes_per_cell ids each,
    counter-clockwise; 3 = P1 triangle, 4 = Q1 quadrilateral. Every node must be used by a cell.
@@ -169,7 +170,7 @@ MC_API mc_status mc_add_traction(mc_model *m, int body, mc_int n_edges, const mc
 /* Adds a normal pressure on boundary edges: 1 per edge, > 0 pushes into the body. */
 MC_API mc_status mc_add_pressure(mc_model *m, int body, mc_int n_edges, const mc_int *edges,
                                  const double *pressure);
-/* Adds point forces: force has 2 per node. */
+/* Adds point forces: force has 2 per node, total forces (not multiplied by the thickness). */
 MC_API mc_status mc_add_nodal_force(mc_model *m, int body, mc_int n, const mc_int *nodes,
                                     const double *force);
 /* Sets (replaces) a uniform body force per unit area (per unit volume times thickness 1). */

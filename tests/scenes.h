@@ -13,6 +13,9 @@
  * only `target_link_libraries(t PRIVATE mc_test_scenes)`; or use the function
  * mc_add_check_test(name source...) defined there, which also registers it with ctest.
  *
+ * Assertion macros for Check tests (OK, SUCCEEDS, FAILS with status and message piece) are in
+ * check_helpers.h.
+ *
  * All ids stored in an sc_mesh are 0-based. Functions that pass ids to the library take
  * a `base` (0 or 1) that is added on the way in; it must match mc_set_index_base.
  *

@@ -17,13 +17,12 @@
 #include <string.h>
 
 #include "mortarcontact.h"
+#include "check_helpers.h"
 #include "scenes.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
 #endif
-
-#define OK(call) ck_assert_msg((call) == MC_OK, "%s failed: %s", #call, mc_errmsg(m))
 
 static double max_abs(const double *v, size_t n) {
   double s = 0;
@@ -60,7 +59,7 @@ static void random_spd(unsigned *state, double scale, double d[9]) {
    bit 0: Q1 (else P1); bit 1: plane stress (else strain); bit 2: thickness 2.5 (else 1);
    bit 3: distorted mesh; bit 4: index base 1; bit 5: per-cell anisotropic laws;
    bit 6: Q1 B-bar integration (only with Q1; with nu = 0.49). */
-static void run_patch(int index) {
+static void run_patch_scaled(int index, double length, double modulus, double offset) {
   const int npc = (index & 1) ? 4 : 3;
   const int plane = (index & 2) ? MC_PLANE_STRESS : MC_PLANE_STRAIN;
   const double thickness = (index & 4) ? 2.5 : 1.0;
@@ -68,8 +67,8 @@ static void run_patch(int index) {
   const int base = (index & 16) ? 1 : 0;
   const int cell_laws = (index & 32) != 0;
   const int bbar = (index & 64) != 0;
-  const double young = 210.0, poisson = bbar ? 0.49 : 0.3;
-  double a[6] = {0.01, 2e-3, -1.5e-3, -0.02, 0.7e-3, 1.1e-3};
+  const double young = 210.0 * modulus, poisson = bbar ? 0.49 : 0.3;
+  double a[6] = {0.01 * length, 2e-3, -1.5e-3, -0.02 * length, 0.7e-3, 1.1e-3};
   sc_mesh mesh;
   mc_model *m = NULL;
   double *u, *sigma, *r, *claws = NULL, D[9], zz[2], eps[3], energy_exact = 0, energy;
@@ -77,7 +76,8 @@ static void run_patch(int index) {
   mc_int i, c;
   unsigned state = 777u + (unsigned)index;
 
-  ck_assert_int_eq(sc_mesh_rect(&mesh, npc, 6, 5, 0.3, -0.7, 2.0, 1.5, distortion, 4242u + (unsigned)index), 0);
+  ck_assert_int_eq(sc_mesh_rect(&mesh, npc, 6, 5, (0.3 + offset) * length, (-0.7 + offset) * length, 2.0 * length,
+                                1.5 * length, distortion, 4242u + (unsigned)index), 0);
   ck_assert_int_eq(mc_create(&m), MC_OK);
   if (base) OK(mc_set_index_base(m, 1));
   OK(mc_set_plane(m, plane, thickness));
@@ -141,7 +141,8 @@ static void run_patch(int index) {
     rsum[0] += r[2 * i], rsum[1] += r[2 * i + 1];
     rsum[2] += mesh.xy[2 * i] * r[2 * i + 1] - mesh.xy[2 * i + 1] * r[2 * i];
   }
-  ck_assert_msg(fabs(rsum[0]) <= 1e-10 * rmax && fabs(rsum[1]) <= 1e-10 * rmax && fabs(rsum[2]) <= 1e-10 * 3 * rmax,
+  ck_assert_msg(fabs(rsum[0]) <= 1e-10 * rmax && fabs(rsum[1]) <= 1e-10 * rmax &&
+                    fabs(rsum[2]) <= 1e-10 * max_abs(mesh.xy, 2 * (size_t)mesh.n_nodes) * rmax,
                 "case %d: reactions not balanced: %g %g %g (max %g)", index, rsum[0], rsum[1], rsum[2], rmax);
 
   /* energy = 1/2 t sum_c |c| sigma : eps */
@@ -153,6 +154,8 @@ static void run_patch(int index) {
   mc_destroy(m);
   sc_mesh_free(&mesh);
 }
+
+static void run_patch(int index) { run_patch_scaled(index, 1.0, 1.0, 0.0); }
 
 START_TEST(test_patch_isotropic) { run_patch(_i); }
 END_TEST
@@ -241,6 +244,15 @@ START_TEST(test_cell_laws_heterogeneous) {
   free(d), free(u1), free(u2), free(s1), free(s2);
   mc_destroy(m);
   sc_mesh_free(&mesh);
+}
+END_TEST
+
+/* Units: the same patch in SI-like units, lengths 1e-4 (offset from the origin by 10 body
+   sizes), moduli 2e11 / 210; and in large units, lengths 1e3, moduli 1e-3. */
+START_TEST(test_patch_units) {
+  const int index = (_i & 1) | ((_i & 2) ? 8 : 0) | ((_i & 4) ? 2 : 0);
+  run_patch_scaled(index, 1e-4, 2e11 / 210.0, 10.0);
+  run_patch_scaled(index, 1e3, 1e-3, 0.0);
 }
 END_TEST
 
@@ -661,6 +673,7 @@ static Suite *elasticity_suite(void) {
   tcase_add_loop_test(tc, test_patch_cell_elasticity, 0, 16);
   tcase_add_loop_test(tc, test_patch_bbar, 0, 16);
   tcase_add_loop_test(tc, test_cell_laws_heterogeneous, 0, 2);
+  tcase_add_loop_test(tc, test_patch_units, 0, 8);
   suite_add_tcase(s, tc);
   tc = tcase_create("convergence");
   tcase_set_timeout(tc, 60);

@@ -10,22 +10,8 @@
 #include <string.h>
 
 #include "mortarcontact.h"
+#include "check_helpers.h"
 #include "scenes.h"
-
-#define OK(call) ck_assert_msg((call) == MC_OK, "%s failed: %s", #call, mc_errmsg(m))
-
-/* A failed call: the status, a non-empty message containing `needle` (if given). */
-#define FAILS(call, status, needle)                                                                       \
-  do {                                                                                                    \
-    mc_status st_ = (call);                                                                               \
-    const char *msg_;                                                                                     \
-    ck_assert_msg(st_ == (status), "%s returned %s, expected %s (message: %s)", #call, mc_status_string(st_), \
-                  mc_status_string(status), mc_errmsg(m));                                                \
-    msg_ = mc_errmsg(m);                                                                                  \
-    ck_assert_ptr_nonnull(msg_);                                                                          \
-    ck_assert_msg(msg_[0] != '\0', "%s: empty message", #call);                                           \
-    if ((needle) != NULL) ck_assert_msg(strstr(msg_, (needle)) != NULL, "%s: message \"%s\" lacks \"%s\"", #call, msg_, (const char *)(needle)); \
-  } while (0)
 
 /* ---- lifecycle, version, status strings ------------------------------------ */
 
@@ -477,6 +463,159 @@ START_TEST(test_models_independent) {
 }
 END_TEST
 
+/* ---- call semantics ---------------------------------------------------------------- */
+
+/* Outputs: the library writes exactly 2 per node / 4 per cell, nothing beyond. */
+START_TEST(test_output_sizes) {
+  sc_mesh mesh;
+  mc_model *m = cantilever(&mesh, 3 + _i, 5, 2);
+  const size_t nu = 2 * (size_t)mesh.n_nodes, ns = 4 * (size_t)mesh.n_cells, guard = 16;
+  double *u = malloc(sizeof(double) * (nu + guard)), *r = malloc(sizeof(double) * (nu + guard));
+  double *s = malloc(sizeof(double) * (ns + guard));
+  size_t k;
+  for (k = 0; k < nu + guard; ++k) u[k] = r[k] = -12345.0;
+  for (k = 0; k < ns + guard; ++k) s[k] = -12345.0;
+  OK(mc_solve(m));
+  OK(mc_get_displacement(m, 1, u));
+  OK(mc_get_reaction(m, 1, r));
+  OK(mc_get_stress(m, 1, s));
+  for (k = 0; k < nu; ++k) ck_assert(u[k] != -12345.0 && r[k] != -12345.0);
+  for (k = 0; k < ns; ++k) ck_assert(s[k] != -12345.0);
+  for (k = 0; k < guard; ++k) {
+    ck_assert(u[nu + k] == -12345.0);
+    ck_assert(r[nu + k] == -12345.0);
+    ck_assert(s[ns + k] == -12345.0);
+  }
+  free(u), free(r), free(s);
+  mc_destroy(m);
+  sc_mesh_free(&mesh);
+}
+END_TEST
+
+/* mc_fix: a later call overrides; a one-component call keeps the other component's value;
+   NULL values mean zero. Tractions and nodal forces add up, the body force is replaced. */
+START_TEST(test_call_semantics) {
+  sc_mesh mesh;
+  mc_model *m = NULL;
+  size_t n;
+  double *u, *u_ref;
+  mc_int node, k;
+  ck_assert_int_eq(sc_mesh_rect(&mesh, 4, 4, 2, 0, 0, 2, 1, 0.1, 9u), 0);
+  n = 2 * (size_t)mesh.n_nodes;
+  u = malloc(sizeof(double) * n), u_ref = malloc(sizeof(double) * n);
+  node = sc_node(&mesh, 4, 1);
+  /* reference: left clamped, node (4,1) at (0.01, -0.02), traction 2 t0, body force b1 */
+  ck_assert_int_eq(mc_create(&m), MC_OK);
+  OK(sc_set_mesh(m, 1, &mesh, 0));
+  OK(mc_set_material(m, 1, 10.0, 0.3));
+  OK(sc_fix_side(m, 1, &mesh, SC_LEFT, MC_XY, 0));
+  {
+    double v[2] = {0.01, -0.02};
+    OK(mc_fix(m, 1, 1, &node, MC_XY, v));
+  }
+  OK(sc_traction_side(m, 1, &mesh, SC_TOP, 0.2, -0.4, 0));
+  OK(mc_set_body_force(m, 1, 0.1, 0.3));
+  OK(mc_solve(m));
+  OK(mc_get_displacement(m, 1, u_ref));
+  mc_destroy(m);
+
+  ck_assert_int_eq(mc_create(&m), MC_OK);
+  OK(sc_set_mesh(m, 1, &mesh, 0));
+  OK(mc_set_material(m, 1, 10.0, 0.3));
+  {
+    mc_int ns = mesh.n_side_nodes[SC_LEFT];
+    double *junk = malloc(sizeof(double) * 2 * (size_t)ns);
+    for (k = 0; k < 2 * ns; ++k) junk[k] = 1.0 + k;
+    OK(mc_fix(m, 1, ns, mesh.side_nodes[SC_LEFT], MC_XY, junk));
+    OK(sc_fix_side(m, 1, &mesh, SC_LEFT, MC_XY, 0)); /* overrides with zeros (NULL values) */
+    free(junk);
+  }
+  {
+    double v1[2] = {0.5, -0.02}, v2[2] = {0.01, 99.0};
+    OK(mc_fix(m, 1, 1, &node, MC_XY, v1));
+    OK(mc_fix(m, 1, 1, &node, MC_X, v2)); /* only x changes: 0.01; y stays -0.02 */
+  }
+  OK(sc_traction_side(m, 1, &mesh, SC_TOP, 0.1, -0.2, 0));
+  OK(sc_traction_side(m, 1, &mesh, SC_TOP, 0.1, -0.2, 0)); /* adds */
+  OK(mc_set_body_force(m, 1, 5.0, 5.0));
+  OK(mc_set_body_force(m, 1, 0.1, 0.3)); /* replaces */
+  OK(mc_solve(m));
+  OK(mc_get_displacement(m, 1, u));
+  for (k = 0; k < (mc_int)n; ++k) ck_assert_double_eq_tol(u[k], u_ref[k], 1e-12 * max_abs(u_ref, n));
+  ck_assert_double_eq(u[2 * node], 0.01);
+  ck_assert_double_eq(u[2 * node + 1], -0.02);
+  free(u), free(u_ref);
+  mc_destroy(m);
+  sc_mesh_free(&mesh);
+}
+END_TEST
+
+/* Changing the plane, thickness or material of a solved model gives what a fresh model
+   gives; cell laws are replaced by mc_set_material and the other way round. */
+START_TEST(test_scene_changes) {
+  sc_mesh mesh, other;
+  mc_model *m, *fresh;
+  size_t n;
+  double *u, *u_ref, *r, *r_ref;
+  mc_int k;
+  int step;
+  m = cantilever(&mesh, 3 + _i, 6, 3);
+  n = 2 * (size_t)mesh.n_nodes;
+  u = malloc(sizeof(double) * n), u_ref = malloc(sizeof(double) * n);
+  r = malloc(sizeof(double) * n), r_ref = malloc(sizeof(double) * n);
+  OK(mc_solve(m));
+  for (step = 0; step < 4; ++step) {
+    mc_model *keep = m;
+    double *d = NULL;
+    if (step == 0) OK(mc_set_plane(m, MC_PLANE_STRESS, 1.0));
+    if (step == 1) OK(mc_set_plane(m, MC_PLANE_STRESS, 3.0));
+    if (step == 2) OK(mc_set_material(m, 1, 50.0, 0.1));
+    if (step == 3) {
+      double D[9];
+      mc_int c;
+      d = malloc(sizeof(double) * 9 * (size_t)mesh.n_cells);
+      sc_isotropic_law(70.0, 0.2, MC_PLANE_STRESS, D, NULL);
+      for (c = 0; c < mesh.n_cells; ++c) memcpy(d + 9 * c, D, sizeof D);
+      OK(mc_set_cell_elasticity(m, 1, d));
+    }
+    OK(mc_solve(m));
+    OK(mc_get_displacement(m, 1, u));
+    OK(mc_get_reaction(m, 1, r));
+    fresh = cantilever(&other, 3 + _i, 6, 3);
+    m = fresh;
+    OK(mc_set_plane(m, MC_PLANE_STRESS, step == 0 ? 1.0 : 3.0));
+    if (step == 2) OK(mc_set_material(m, 1, 50.0, 0.1));
+    if (step == 3) OK(mc_set_material(m, 1, 70.0, 0.2));
+    OK(mc_solve(m));
+    OK(mc_get_displacement(m, 1, u_ref));
+    OK(mc_get_reaction(m, 1, r_ref));
+    for (k = 0; k < (mc_int)n; ++k) {
+      ck_assert_double_eq_tol(u[k], u_ref[k], 1e-12 * max_abs(u_ref, n));
+      ck_assert_double_eq_tol(r[k], r_ref[k], 1e-12 * max_abs(r_ref, n));
+    }
+    mc_destroy(fresh);
+    sc_mesh_free(&other);
+    m = keep;
+    free(d);
+  }
+  /* and back from cell laws to the material */
+  OK(mc_set_material(m, 1, 50.0, 0.1));
+  OK(mc_solve(m));
+  OK(mc_get_displacement(m, 1, u));
+  fresh = cantilever(&other, 3 + _i, 6, 3);
+  OK(mc_set_plane(fresh, MC_PLANE_STRESS, 3.0));
+  OK(mc_set_material(fresh, 1, 50.0, 0.1));
+  OK(mc_solve(fresh));
+  OK(mc_get_displacement(fresh, 1, u_ref));
+  for (k = 0; k < (mc_int)n; ++k) ck_assert_double_eq_tol(u[k], u_ref[k], 1e-12 * max_abs(u_ref, n));
+  mc_destroy(fresh);
+  sc_mesh_free(&other);
+  free(u), free(u_ref), free(r), free(r_ref);
+  mc_destroy(m);
+  sc_mesh_free(&mesh);
+}
+END_TEST
+
 static Suite *model_suite(void) {
   Suite *s = suite_create("model");
   TCase *tc = tcase_create("lifecycle");
@@ -494,6 +633,11 @@ static Suite *model_suite(void) {
   tcase_add_loop_test(tc, test_resolve_reuses_factorization, 0, 2);
   tcase_add_test(tc, test_reset_mesh_clears);
   tcase_add_test(tc, test_index_base);
+  suite_add_tcase(s, tc);
+  tc = tcase_create("semantics");
+  tcase_add_loop_test(tc, test_output_sizes, 0, 2);
+  tcase_add_test(tc, test_call_semantics);
+  tcase_add_loop_test(tc, test_scene_changes, 0, 2);
   suite_add_tcase(s, tc);
   return s;
 }
