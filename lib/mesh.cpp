@@ -2,6 +2,7 @@
 #include "error.hpp"
 #include <algorithm>
 #include <array>
+#include <climits>
 #include <cmath>
 #include <map>
 
@@ -72,9 +73,9 @@ void Mesh::check_cell_shapes(int base) {
   // Duplicated cells: the same node set twice.
   std::map<std::array<int, 4>, int> seen;
   for (int c = 0; c < n_cells_; ++c) {
-    std::array<int, 4> key{-1, -1, -1, -1};
+    std::array<int, 4> key{INT_MAX, INT_MAX, INT_MAX, INT_MAX};  // a triangle's fourth slot stays last
     std::copy(cell(c), cell(c) + n, key.begin());
-    std::sort(key.begin(), key.begin() + n);
+    std::sort(key.begin(), key.end());
     auto [it, fresh] = seen.emplace(key, c);
     if (!fresh) fail(MC_ERROR_MESH, "cell %d duplicates cell %d", c + base, it->second + base);
   }

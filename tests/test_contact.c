@@ -329,6 +329,53 @@ START_TEST(floating_in_all_modes_without_contact_is_singular) {
 }
 END_TEST
 
+/* ---- partial overlap ---------------------------------------------------- */
+
+/* Body 1 = [-0.25,1.25]x[0,0.5] is wider than body 2 = [0,1]x[-0.5,0]: its contact nodes
+   beyond body 2's ends see no mortar surface and drop out (zero force, gap +infinity); the
+   rest carries the load, with KKT and equilibrium. */
+START_TEST(partial_overlap_drops_unseen_nodes) {
+  for (int method = 0; method < 3; ++method) {
+    blocks s;
+    mc_model *m = NULL;
+    ck_assert_int_eq(mc_create(&m), MC_OK);
+    s.m = m;
+    ck_assert_int_eq(sc_mesh_rect(&s.mesh[0], 3, 12, 4, -0.25, 0, 1.5, 0.5, 0, 1), 0);
+    ck_assert_int_eq(sc_mesh_rect(&s.mesh[1], 3, 7, 3, 0, -0.5, 1, 0.5, 0, 2), 0);
+    for (int b = 0; b < 2; ++b) OK(sc_set_mesh(m, b + 1, &s.mesh[b], 0)), OK(mc_set_material(m, b + 1, 1, 0.3));
+    OK(sc_fix_side(m, 1, &s.mesh[0], SC_LEFT, MC_X, 0));
+    OK(sc_fix_side(m, 2, &s.mesh[1], SC_LEFT, MC_X, 0));
+    OK(sc_fix_side(m, 2, &s.mesh[1], SC_BOTTOM, MC_Y, 0));
+    OK(mc_set_contact(m, 1, s.mesh[0].n_side_edges[SC_BOTTOM], s.mesh[0].side_edges[SC_BOTTOM]));
+    OK(mc_set_contact(m, 2, s.mesh[1].n_side_edges[SC_TOP], s.mesh[1].side_edges[SC_TOP]));
+    OK(mc_set_option_int(m, MC_OPTION_METHOD, method));
+    OK(mc_set_body_force(m, 1, 0, -1.0));
+    OK(mc_solve(m));
+    double load1[2] = {0, -1.0 * 1.5 * 0.5}, load2[2] = {0, 0};
+    check_kkt_and_equilibrium(&s, load1, load2);
+    int n;
+    double *f = contact_array(m, mc_get_contact_force, &n), *g = contact_array(m, mc_get_contact_gap, &n);
+    mc_int *nodes = malloc(sizeof(mc_int) * n);
+    OK(mc_get_contact_nodes(m, nodes));
+    int unseen = 0, loaded = 0;
+    for (int j = 0; j < n; ++j) {
+      double x = s.mesh[0].xy[2 * nodes[j]];
+      if (x < -1e-12 || x > 1 + 1e-12) {
+        ck_assert_msg(isinf(g[j]) && f[j] == 0.0, "node at x = %g: gap %g force %g", x, g[j], f[j]);
+        ++unseen;
+      } else {
+        ck_assert_msg(isfinite(g[j]), "node at x = %g sees body 2", x);
+        loaded += f[j] > 0;
+      }
+    }
+    ck_assert_int_eq(unseen, 4);
+    ck_assert_int_gt(loaded, 2);
+    free(f), free(g), free(nodes);
+    blocks_free(&s);
+  }
+}
+END_TEST
+
 /* ---- Hertz -------------------------------------------------------------- */
 
 typedef struct hertz_result {
@@ -417,6 +464,7 @@ int main(void) {
   tcase_add_test(tc, no_contact_is_exactly_zero);
   tcase_add_test(tc, floating_body_pulled_away_is_singular);
   tcase_add_test(tc, floating_in_all_modes_without_contact_is_singular);
+  tcase_add_test(tc, partial_overlap_drops_unseen_nodes);
   tcase_add_test(tc, hertz_self_convergence_and_error);
   suite_add_tcase(suite, tc);
   SRunner *runner = srunner_create(suite);
