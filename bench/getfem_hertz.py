@@ -284,7 +284,8 @@ def solve(gf, sc, formulation, h1, args):
     t_setup = time.perf_counter() - t0
 
     t0 = time.perf_counter()
-    nit, converged = md.solve("lsolver", "mumps", "max_res", args.max_res, "max_iter", args.max_iter,
+    nit, converged = md.solve("lsolver", "mumps", *(["lsearch", args.lsearch] if args.lsearch else []),
+                              "max_res", args.max_res, "max_iter", args.max_iter,
                               *(["noisy"] if args.noisy else []))
     t_solve = time.perf_counter() - t0
 
@@ -376,6 +377,8 @@ def main():
     ap.add_argument("--max-res", type=float, default=1e-9,
                     help="GetFEM Newton tolerance (relative to the external load), default 1e-9")
     ap.add_argument("--max-iter", type=int, default=100)
+    ap.add_argument("--lsearch", default=None,
+                    help="GetFEM line search ('simplest', 'systematic', 'quadratic', 'basic')")
     # The vertical force balance of body 1 is a sum of residual entries, so it is bounded by the
     # Newton criterion (max_res, 1-norm relative to the load): 1e-6 leaves a wide margin.
     ap.add_argument("--tol-balance", type=float, default=1e-6)

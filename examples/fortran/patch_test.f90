@@ -72,6 +72,7 @@ program patch_test
      deallocate(pres, gap, cnodes)
      call mc_destroy(m)
   end do
+  deallocate(xy1, xy2, u1, u2, ex1, ex2, tri, quad)  ! main-program arrays are not freed at exit
   if (.not. ok) then
      print '(a)', 'patch test FAILED'
      error stop 1

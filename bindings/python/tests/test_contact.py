@@ -74,6 +74,16 @@ class TestHertz(unittest.TestCase):
         self.assertTrue(np.all(r["p"] >= 0))
         self.assertTrue(np.all(r["p"][np.abs(r["x"]) > 1.3 * a] == 0))
 
+    def test_hertz_mortar_normal(self):
+        """With body 2's normals the O((a/R)^2) normal effect goes: within 1 % of Hertz."""
+        a, p0 = hertz.hertz_values()
+        r = hertz.solve(0.01, normal=mc.MC_NORMAL_MORTAR)
+        print("\nHertz h=0.01, mortar-side normals: p0 %.5f vs %.5f, a %.5f vs %.5f"
+              % (r["p_max"], p0, r["a_fit"], a))
+        self.assertAlmostEqual(r["total_force"], hertz.P, delta=1e-6 * hertz.P)
+        self.assertLess(abs(r["p_max"] / p0 - 1), 0.01)
+        self.assertLess(abs(r["a_fit"] / a - 1), 0.01)
+
 
 if __name__ == "__main__":
     unittest.main()
