@@ -351,3 +351,4 @@ void sc_isotropic_law(double young, double poisson, int plane, double D[9], doub
     if (zz) zz[0] = zz[1] = lambda;
   }
 }
+

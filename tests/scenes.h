@@ -104,4 +104,9 @@ double sc_random(unsigned *state);
 /* Relative difference |a - b| / max(|a|, |b|, floor). */
 double sc_reldiff(double a, double b, double floor);
 
+/* Runs a Check suite with CK_NORMAL output (the summary line reaches the log), frees it, and
+   returns the process exit code: 0 if every check passed. */
+#include <check.h>
+int sc_run_suite(Suite *suite); /* in check_runner.c (linked into every test program) */
+
 #endif /* MC_TESTS_SCENES_H */

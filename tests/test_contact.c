@@ -467,9 +467,5 @@ int main(void) {
   tcase_add_test(tc, partial_overlap_drops_unseen_nodes);
   tcase_add_test(tc, hertz_self_convergence_and_error);
   suite_add_tcase(suite, tc);
-  SRunner *runner = srunner_create(suite);
-  srunner_run_all(runner, CK_NORMAL);
-  int failed = srunner_ntests_failed(runner);
-  srunner_free(runner);
-  return failed == 0 ? 0 : 1;
+  return sc_run_suite(suite);
 }

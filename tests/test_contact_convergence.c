@@ -6,6 +6,7 @@
  */
 #include "contact_study.h"
 #include "mortarcontact.h"
+#include "scenes.h"
 #include <check.h>
 #include <stdio.h>
 
@@ -31,9 +32,5 @@ int main(void) {
   tcase_set_timeout(tc, 600);
   tcase_add_test(tc, mortar_h1_rate_non_matching);
   suite_add_tcase(suite, tc);
-  SRunner *runner = srunner_create(suite);
-  srunner_run_all(runner, CK_NORMAL);
-  int failed = srunner_ntests_failed(runner);
-  srunner_free(runner);
-  return failed == 0 ? 0 : 1;
+  return sc_run_suite(suite);
 }

@@ -5,6 +5,7 @@
  */
 #include "hertz_scene.h"
 #include "mortarcontact.h"
+#include "scenes.h"
 #include <check.h>
 #include <math.h>
 #include <pthread.h>
@@ -77,9 +78,5 @@ int main(void) {
   tcase_set_timeout(tc, 120);
   tcase_add_test(tc, two_threads_match_serial);
   suite_add_tcase(suite, tc);
-  SRunner *runner = srunner_create(suite);
-  srunner_run_all(runner, CK_NORMAL);
-  int failed = srunner_ntests_failed(runner);
-  srunner_free(runner);
-  return failed == 0 ? 0 : 1;
+  return sc_run_suite(suite);
 }
