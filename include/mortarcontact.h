@@ -186,6 +186,12 @@ MC_API mc_status mc_clear_loads(mc_model *m, int body);
    not meet body 2's surface "see no mortar surface": they drop out of the constraint set
    (zero force, zero pressure, gap reported as +infinity). */
 MC_API mc_status mc_set_contact(mc_model *m, int body, mc_int n_edges, const mc_int *edges);
+/* Adds offset[k] (a length, may be negative) to the initial gap g0 of body-1 node nodes[k]:
+   a clearance (> 0) or an interference (< 0) that the meshes do not show, e.g. a coating or a
+   shrink fit. Replaces earlier offsets of those nodes; nodes not on body 1's contact surface
+   are an MC_ERROR_ARGUMENT. Like loads, changing offsets keeps the factorizations and the
+   interface operator for the next solve. */
+MC_API mc_status mc_set_gap_offset(mc_model *m, mc_int n, const mc_int *nodes, const double *offset);
 
 /* ---- options and solving ------------------------------------------------ */
 
@@ -199,6 +205,17 @@ MC_API mc_status mc_set_option_real(mc_model *m, int option, double value);
    alone (Corollary 4.1). A solve after changing only loads, prescribed values or nothing
    reuses the factorizations and the interface operator. */
 MC_API mc_status mc_solve(mc_model *m);
+
+/* Progress messages of mc_solve: phases and active-set iterations. */
+typedef enum mc_log_level {
+  MC_LOG_PHASE = 1,     /* a phase started or ended: assembly, factorization, contact, ... */
+  MC_LOG_ITERATION = 2  /* one active-set iteration: its number, active nodes, residuals */
+} mc_log_level;
+/* Called from the thread that calls mc_solve, with a NUL-terminated one-line message that is
+   valid only during the call. The callback must not call back into the same model. */
+typedef void (*mc_log_fn)(void *user_data, mc_log_level level, const char *message);
+/* Installs (fn != NULL) or removes (fn == NULL) the model's log callback. */
+MC_API mc_status mc_set_log_callback(mc_model *m, mc_log_fn fn, void *user_data);
 
 /* ---- results ------------------------------------------------------------ */
 
@@ -230,6 +247,16 @@ MC_API mc_status mc_get_contact_gap(const mc_model *m, double *g);
 MC_API mc_status mc_get_contact_initial_gap(const mc_model *m, double *g0);
 /* Unit outward normals n_j of body 1 at the contact nodes: 2 per node. */
 MC_API mc_status mc_get_contact_normal(const mc_model *m, double *n);
+
+/* ---- output ------------------------------------------------------------- */
+
+/* Writes the solved scene for ParaView. A path ending in ".pvd" writes a collection and one
+   VTK XML unstructured-grid file per body next to it ("<stem>_body1.vtu", "<stem>_body2.vtu");
+   any other path gets one .vtu with both bodies (cell data "body" = 1 or 2). Point data:
+   displacement; cell data: stress (xx yy xy zz), von Mises; on body 1's contact nodes (zero
+   elsewhere, flag "contact" = 1): contact pressure, gap, initial gap and "active" (force > 0).
+   MC_ERROR_STATE before a successful solve; MC_ERROR_ARGUMENT if the file cannot be written. */
+MC_API mc_status mc_write_vtu(const mc_model *m, const char *path);
 
 #ifdef __cplusplus
 }

@@ -326,6 +326,27 @@ mc_status mc_set_contact(mc_model *m, int body, mc_int n_edges, const mc_int *ed
   });
 }
 
+mc_status mc_set_gap_offset(mc_model *m, mc_int n, const mc_int *nodes, const double *offset) {
+  return guard(m, [&](mc::Model &model) {
+    mc::Body &b = meshed_body(model, 1);
+    if (!b.has_contact) fail(MC_ERROR_STATE, "body 1 has no contact surface: call mc_set_contact first");
+    require_count(n, "n");
+    if (n > 0) require_pointer(nodes, "nodes"), require_pointer(offset, "offset");
+    if (n > 0) require_finite(offset, size_t(n), "offset");
+    std::vector<char> on_surface(b.mesh.n_nodes(), 0);
+    for (const mc::SurfaceSegment &s : b.contact) on_surface[s.a] = on_surface[s.b] = 1;
+    std::vector<int> local(n);
+    for (mc_int i = 0; i < n; ++i) {
+      local[i] = node_id(model, b.mesh, nodes[i], "nodes", size_t(i));
+      if (!on_surface[local[i]])
+        fail(MC_ERROR_ARGUMENT, "nodes[%d] = %d is not on body 1's contact surface", int(i), int(nodes[i]));
+    }
+    if (b.gap_offset.empty()) b.gap_offset.assign(b.mesh.n_nodes(), 0.0);
+    for (mc_int i = 0; i < n; ++i) b.gap_offset[local[i]] = offset[i];
+    model.values_changed();
+  });
+}
+
 mc_status mc_set_option_int(mc_model *m, int option, int64_t value) {
   return guard(m, [&](mc::Model &model) {
     switch (option) {
@@ -508,8 +529,8 @@ mc_status mc_get_contact_gap(const mc_model *m, double *g) {
 }
 
 mc_status mc_get_contact_initial_gap(const mc_model *m, double *g0) {
-  return contact_array(m, g0, "g0", [&](const mc::Model &, const mc::ContactGeometry &g) {
-    std::memcpy(g0, g.gap0.data(), g.gap0.size() * sizeof(double));
+  return contact_array(m, g0, "g0", [&](const mc::Model &model, const mc::ContactGeometry &g) {
+    for (size_t j = 0; j < g.gap0.size(); ++j) g0[j] = model.initial_gap(j);
   });
 }
 

@@ -181,6 +181,12 @@ void Model::build_contact_operator() {
   cs.last_active.clear();
 }
 
+double Model::initial_gap(size_t pos) const {
+  const ContactGeometry &g = contact_->geometry;
+  const std::vector<double> &offset = body[0].gap_offset;
+  return offset.empty() ? g.gap0[pos] : g.gap0[pos] + offset[g.nodes[pos]];
+}
+
 void Model::solve() {
   const double start = now();
   infos = Infos{};
@@ -238,7 +244,7 @@ void Model::solve() {
       qp.s = cs.s;
       qp.d.assign(q, 0.0);
       for (int r = 0; r < q; ++r) {
-        double g = cs.geometry.gap0[cs.rows.position[r]], bv = 0;
+        double g = initial_gap(cs.rows.position[r]), bv = 0;
         for (int b = 0; b < 2; ++b)
           for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) {
             int dof = cs.b_dof[b][p];
@@ -369,7 +375,7 @@ void Model::solve() {
     contact_pressure.assign(n, 0.0);
     for (int r = 0; r < contact_->rows.size(); ++r) {
       int pos = contact_->rows.position[r];
-      double gap = g.gap0[pos];
+      double gap = initial_gap(pos);
       for (int b = 0; b < 2; ++b)
         for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
           gap -= contact_->b_value[b][p] * body[b].u[contact_->b_dof[b][p]];

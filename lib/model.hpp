@@ -34,6 +34,7 @@ struct Body {
   double body_force[2] = {0, 0};
   bool has_contact = false;
   std::vector<SurfaceSegment> contact;
+  std::vector<double> gap_offset;       // per node (body 1 only), added to g0; empty: none
   // results
   std::vector<double> u, reaction, stress;
 };
@@ -92,6 +93,8 @@ public:
 
   bool contact_active() const { return body[0].has_contact && body[1].has_contact; }
   const ContactSystem *contact() const { return contact_.get(); }
+  // g0 of contact node pos (ContactGeometry order) with the host's offset (mc_set_gap_offset).
+  double initial_gap(size_t pos) const;
   // Contact results per body-1 contact node (after a contact solve).
   std::vector<double> contact_force, contact_gap, contact_pressure;
 

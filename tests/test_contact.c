@@ -6,6 +6,7 @@
  * - matching meshes: the three methods coincide (the mortar cone is then pointwise);
  * - KKT conditions and the equilibrium of each body on several scenes;
  * - no contact when loads pull apart or the gap is wider than the deformation: exactly zero;
+ * - gap offsets (mc_set_gap_offset): a clearance or an interference, exact on a layered scene;
  * - floating bodies: held by contact alone, or MC_ERROR_SINGULAR with an explanation;
  * - the Hertz scene: self-convergence of p0 and its error against Hertz at the finest mesh.
  */
@@ -297,6 +298,82 @@ START_TEST(no_contact_is_exactly_zero) {
 }
 END_TEST
 
+/* ---- gap offsets -------------------------------------------------------- */
+
+/* Body 1's top pressed down by a prescribed u_y = -push (body 1 then has no free rigid mode). */
+static void press_top(blocks *s, double push) {
+  const sc_mesh *b1 = &s->mesh[0];
+  mc_int n = b1->n_side_nodes[SC_TOP];
+  double *values = malloc(sizeof(double) * 2 * n);
+  for (mc_int i = 0; i < n; ++i) values[2 * i] = 0, values[2 * i + 1] = -push;
+  ck_assert_int_eq(mc_fix(s->m, 1, n, b1->side_nodes[SC_TOP], MC_Y, values), MC_OK);
+  free(values);
+}
+
+/* Largest difference between two models' body-2 displacements and contact forces. */
+static double max_difference(mc_model *a, mc_model *b, mc_int n2) {
+  double *ua = malloc(sizeof(double) * 2 * n2), *ub = malloc(sizeof(double) * 2 * n2), worst = 0;
+  ck_assert_int_eq(mc_get_displacement(a, 2, ua), MC_OK);
+  ck_assert_int_eq(mc_get_displacement(b, 2, ub), MC_OK);
+  for (mc_int i = 0; i < 2 * n2; ++i) worst = fmax(worst, fabs(ua[i] - ub[i]));
+  int na, nb;
+  double *fa = contact_array(a, mc_get_contact_force, &na), *fb = contact_array(b, mc_get_contact_force, &nb);
+  ck_assert_int_eq(na, nb);
+  for (int j = 0; j < na; ++j) worst = fmax(worst, fabs(fa[j] - fb[j]));
+  free(ua), free(ub), free(fa), free(fb);
+  return worst;
+}
+
+/* A clearance c added by mc_set_gap_offset acts exactly like pressing c less (the layers are
+   uniformly compressed, so both solutions are exact and must agree to round-off); a negative
+   offset (interference) acts like pressing more. Changing offsets reuses the factorization. */
+START_TEST(gap_offset_is_a_clearance_or_an_interference) {
+  const double push = 1e-2, c = 4e-3;
+  for (int method = 0; method < 3; ++method) {
+    blocks s, ref;
+    blocks_build(&s, 3, 7, 5, 0, 1, 3, method);
+    mc_model *m = s.m;
+    press_top(&s, push);
+    OK(mc_solve(m));
+    int n;
+    double *g0 = contact_array(m, mc_get_contact_initial_gap, &n);
+    mc_int *nodes = malloc(sizeof(mc_int) * n);
+    double *offset = malloc(sizeof(double) * n);
+    OK(mc_get_contact_nodes(m, nodes));
+    for (double sign = 1; sign >= -1; sign -= 2) {
+      for (int j = 0; j < n; ++j) offset[j] = sign * c;
+      OK(mc_set_gap_offset(m, n, nodes, offset));
+      OK(mc_solve(m));
+      int64_t factorizations;
+      OK(mc_get_info_int(m, MC_INFO_FACTORIZATIONS, &factorizations));
+      ck_assert_int_eq(factorizations, 0);
+      double *g0_offset = contact_array(m, mc_get_contact_initial_gap, &n);
+      for (int j = 0; j < n; ++j) ck_assert_msg(g0_offset[j] == g0[j] + sign * c, "g0 %d: %g", j, g0_offset[j]);
+      free(g0_offset);
+      blocks_build(&ref, 3, 7, 5, 0, 1, 3, method);
+      press_top(&ref, push - sign * c);
+      ck_assert_int_eq(mc_solve(ref.m), MC_OK);
+      double diff = max_difference(m, ref.m, s.mesh[1].n_nodes);
+      ck_assert_msg(diff < 1e-12 * push, "method %d offset %g: differs by %g", method, sign * c, diff);
+      double load[2] = {0, 0};
+      check_kkt_and_equilibrium(&s, load, load);
+      blocks_free(&ref);
+    }
+    /* bad input: a node off the contact surface, a non-finite offset; the model stays usable */
+    mc_int interior = sc_node(&s.mesh[0], 3, 2);
+    double one = 1;
+    ck_assert_int_eq(mc_set_gap_offset(m, 1, &interior, &one), MC_ERROR_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(mc_errmsg(m), "nodes[0]"));
+    double bad = NAN;
+    ck_assert_int_eq(mc_set_gap_offset(m, 1, nodes, &bad), MC_ERROR_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(mc_errmsg(m), "offset"));
+    OK(mc_solve(m));
+    free(g0), free(nodes), free(offset);
+    blocks_free(&s);
+  }
+}
+END_TEST
+
 /* ---- floating bodies ---------------------------------------------------- */
 
 START_TEST(floating_body_pulled_away_is_singular) {
@@ -462,6 +539,7 @@ int main(void) {
   tcase_add_test(tc, matching_meshes_methods_agree);
   tcase_add_test(tc, kkt_and_equilibrium_non_matching);
   tcase_add_test(tc, no_contact_is_exactly_zero);
+  tcase_add_test(tc, gap_offset_is_a_clearance_or_an_interference);
   tcase_add_test(tc, floating_body_pulled_away_is_singular);
   tcase_add_test(tc, floating_in_all_modes_without_contact_is_singular);
   tcase_add_test(tc, partial_overlap_drops_unseen_nodes);

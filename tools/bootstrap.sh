@@ -8,7 +8,9 @@ mode=${1:-test}
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake pkg-config libsuitesparse-dev libopenblas-dev liblapacke-dev check
-          gfortran python3 python3-numpy abigail-tools)
+          gfortran python3 python3-numpy abigail-tools
+          nlohmann-json3-dev gmsh python3-matplotlib python3-meshio
+          clang libclang-rt-14-dev valgrind)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
