@@ -212,7 +212,13 @@ typedef enum mc_log_level {
   MC_LOG_ITERATION = 2  /* one active-set iteration: its number, active nodes, residuals */
 } mc_log_level;
 /* Called from the thread that calls mc_solve, with a NUL-terminated one-line message that is
-   valid only during the call. The callback must not call back into the same model. */
+   valid only during the call. The callback must not call back into the same model. Phase
+   messages after "solve: start, ..." ("assembly: body 1, ...", "factorization: ...",
+   "interface operator: ...", "active-set solve: ...", "recovery: ...", "solve: done, ...")
+   end with the phase's time in seconds; iteration messages read "active-set iteration K: A active of Q, F to flip, residual
+   R" (R: the relative complementarity violation, MC_INFO_COMPLEMENTARITY at the last one). The
+   callback is a C function: it must return normally (a C++ callback catches its exceptions;
+   one thrown into the shared library, which has its own unwinder, terminates the process). */
 typedef void (*mc_log_fn)(void *user_data, mc_log_level level, const char *message);
 /* Installs (fn != NULL) or removes (fn == NULL) the model's log callback. */
 MC_API mc_status mc_set_log_callback(mc_model *m, mc_log_fn fn, void *user_data);
@@ -255,7 +261,13 @@ MC_API mc_status mc_get_contact_normal(const mc_model *m, double *n);
    any other path gets one .vtu with both bodies (cell data "body" = 1 or 2). Point data:
    displacement; cell data: stress (xx yy xy zz), von Mises; on body 1's contact nodes (zero
    elsewhere, flag "contact" = 1): contact pressure, gap, initial gap and "active" (force > 0).
-   MC_ERROR_STATE before a successful solve; MC_ERROR_ARGUMENT if the file cannot be written. */
+   MC_ERROR_STATE before a successful solve; MC_ERROR_ARGUMENT if the file cannot be written.
+   Array names: point data "displacement" (3 components, z = 0), "pressure", "gap",
+   "initial_gap", "active", "contact"; cell data "stress" (4 components), "von_mises" (with
+   sigma_zz), "body". A body-1 contact-surface node that sees no mortar surface has
+   "contact" = 0 and gap = initial_gap = -1 (a sentinel for the +infinity of the getters: VTK
+   readers take no inf). ASCII, 17 significant digits (values read back exactly), independent
+   of the C locale. Only bodies with a mesh are written. */
 MC_API mc_status mc_write_vtu(const mc_model *m, const char *path);
 
 #ifdef __cplusplus

@@ -5,6 +5,8 @@
 #include "error.hpp"
 #include "model.hpp"
 #include "mortarcontact.h"
+#include "vtu_writer.hpp"
+#include <cfloat>
 #include <cmath>
 #include <cstring>
 #include <new>
@@ -80,11 +82,11 @@ void require_finite(const double *values, size_t count, const char *name) {
 
 // A node id given by the caller, checked and made 0-based.
 int node_id(const mc::Model &model, const mc::Mesh &mesh, mc_int id, const char *name, size_t index) {
-  int local = int(id) - model.index_base;
+  const long long local = (long long)id - model.index_base;  // no int overflow for id = INT_MIN
   if (local < 0 || local >= mesh.n_nodes())
     fail(MC_ERROR_ARGUMENT, "%s[%zu] = %d: node id out of range [%d, %d] (index base %d)", name, index, int(id),
          model.index_base, mesh.n_nodes() - 1 + model.index_base, model.index_base);
-  return local;
+  return int(local);
 }
 
 // Edges for loads: boundary edges, returned oriented as their cells.
@@ -118,6 +120,33 @@ bool symmetric_positive_definite(const double *d) {
   return d[8] - l20 * l20 - l21 * l21 > 1e-14 * scale;
 }
 
+// Results beyond double range (E, thickness, loads or prescribed values near DBL_MAX, or E so
+// small that the displacements overflow) are reported, never returned as inf/NaN with MC_OK.
+void require_finite_results(mc::Model &model) {
+  auto overflow = [&](const char *what, size_t i, int body, double v) {
+    model.solved = false;
+    fail(MC_ERROR_ARGUMENT,
+         "the solution overflows: %s[%zu] of body %d is %g; the scene's numbers (Young's moduli, thickness, "
+         "loads, prescribed values) are beyond what double precision can solve: rescale the units",
+         what, i, body, v);
+  };
+  for (int b = 0; b < 2; ++b) {
+    const mc::Body &body = model.body[b];
+    if (!body.has_mesh) continue;
+    for (size_t i = 0; i < body.u.size(); ++i) if (!std::isfinite(body.u[i])) overflow("u", i, b + 1, body.u[i]);
+    for (size_t i = 0; i < body.stress.size(); ++i)
+      if (!std::isfinite(body.stress[i])) overflow("sigma", i, b + 1, body.stress[i]);
+    for (size_t i = 0; i < body.reaction.size(); ++i)
+      if (!std::isfinite(body.reaction[i])) overflow("r", i, b + 1, body.reaction[i]);
+  }
+  for (size_t j = 0; j < model.contact_force.size(); ++j) {
+    if (!std::isfinite(model.contact_force[j])) overflow("contact force", j, 1, model.contact_force[j]);
+    if (!std::isfinite(model.contact_pressure[j])) overflow("contact pressure", j, 1, model.contact_pressure[j]);
+    // +infinity is the gap of a node that sees no mortar surface
+    if (std::isnan(model.contact_gap[j]) || model.contact_gap[j] < -DBL_MAX) overflow("gap", j, 1, model.contact_gap[j]);
+  }
+}
+
 }  // namespace
 
 extern "C" {
@@ -141,7 +170,12 @@ const char *mc_errmsg(const mc_model *model) {
 }
 
 const char *mc_status_string(mc_status status) {
-  switch (status) {
+  // A C caller may pass any int: read it as one (loading an mc_status outside the enum's
+  // range is undefined behaviour in C++).
+  int code;
+  static_assert(sizeof code == sizeof status, "mc_status is int-sized");
+  std::memcpy(&code, &status, sizeof code);
+  switch (code) {
     case MC_OK: return "MC_OK";
     case MC_ERROR_ARGUMENT: return "MC_ERROR_ARGUMENT";
     case MC_ERROR_MESH: return "MC_ERROR_MESH";
@@ -188,8 +222,17 @@ mc_status mc_set_mesh(mc_model *m, int body, mc_int n_nodes, const double *xy, m
     require_count(n_cells, "n_cells");
     if (nodes_per_cell != 3 && nodes_per_cell != 4)
       fail(MC_ERROR_ARGUMENT, "nodes_per_cell = %d: must be 3 (P1 triangle) or 4 (Q1 quadrilateral)", nodes_per_cell);
+    // (as mc::Mesh checks them, before the ids, so that counts are reported first)
+    if (n_nodes < 3) fail(MC_ERROR_ARGUMENT, "n_nodes = %d: a mesh needs at least 3 nodes", int(n_nodes));
+    if (n_cells < 1) fail(MC_ERROR_ARGUMENT, "n_cells = %d: a mesh needs at least 1 cell", int(n_cells));
     std::vector<int> local(size_t(n_cells) * nodes_per_cell);
-    for (size_t k = 0; k < local.size(); ++k) local[k] = int(cells[k]) - model.index_base;
+    for (size_t k = 0; k < local.size(); ++k) {
+      const long long id = (long long)cells[k] - model.index_base;  // no int overflow for INT_MIN
+      if (id < 0 || id >= n_nodes)
+        fail(MC_ERROR_ARGUMENT, "cells[%zu] = %d (cell %zu): node id out of range [%d, %d)", k, int(cells[k]),
+             k / nodes_per_cell + model.index_base, model.index_base, int(n_nodes) + model.index_base);
+      local[k] = int(id);
+    }
     mc::Body fresh;
     fresh.mesh = mc::Mesh(n_nodes, xy, n_cells, nodes_per_cell, local.data(), model.index_base);
     fresh.has_mesh = true;
@@ -237,7 +280,10 @@ mc_status mc_fix(mc_model *m, int body, mc_int n, const mc_int *nodes, int compo
     if (n > 0) require_pointer(nodes, "nodes");
     if (components < MC_X || components > MC_XY)
       fail(MC_ERROR_ARGUMENT, "components = %d: must be MC_X (1), MC_Y (2) or MC_XY (3)", components);
-    if (values) require_finite(values, 2 * size_t(n), "values");
+    if (values)  // only the components in the mask: the others are ignored (header)
+      for (size_t k = 0; k < 2 * size_t(n); ++k)
+        if ((components & (1 << (k % 2))) && !std::isfinite(values[k]))
+          fail(MC_ERROR_ARGUMENT, "values[%zu] is not finite", k);
     std::vector<int> local(n);
     for (mc_int i = 0; i < n; ++i) local[i] = node_id(model, b.mesh, nodes[i], "nodes", size_t(i));
     bool new_support = false;
@@ -319,8 +365,32 @@ mc_status mc_set_contact(mc_model *m, int body, mc_int n_edges, const mc_int *ed
     if (n_edges < 1) fail(MC_ERROR_ARGUMENT, "n_edges = %d: a contact surface needs at least one edge", int(n_edges));
     require_pointer(edges, "edges");
     std::vector<int> local(2 * size_t(n_edges));
-    for (size_t k = 0; k < local.size(); ++k) local[k] = int(edges[k]) - model.index_base;
-    b.contact = mc::oriented_surface(b.mesh, local.data(), n_edges, model.index_base);
+    for (size_t k = 0; k < local.size(); ++k) {
+      const long long id = (long long)edges[k] - model.index_base;  // no int overflow for INT_MIN
+      const size_t e = k / 2;
+      if (id < 0 || id >= b.mesh.n_nodes())
+        fail(MC_ERROR_ARGUMENT, "edges[%zu..%zu] = (%d, %d): edges[%zu] = %d: node id out of range [%d, %d] (index base %d)",
+             2 * e, 2 * e + 1, int(edges[2 * e]), int(edges[2 * e + 1]), k, int(edges[k]), model.index_base,
+             b.mesh.n_nodes() - 1 + model.index_base, model.index_base);
+      local[k] = int(id);
+    }
+    std::vector<mc::SurfaceSegment> surface = mc::oriented_surface(b.mesh, local.data(), n_edges, model.index_base);
+    // Simple chains and loops only: at most one surface edge leaves and one arrives at a node.
+    // Two would mean cells meeting at that node alone (a pinch), where the surface has no
+    // normal and its chains no order.
+    std::vector<int> leaving(b.mesh.n_nodes(), -1), arriving(b.mesh.n_nodes(), -1);
+    for (mc_int e = 0; e < n_edges; ++e) {
+      const mc::SurfaceSegment &seg = surface[e];
+      const int other = leaving[seg.a] >= 0 ? leaving[seg.a] : arriving[seg.b];
+      if (other >= 0)
+        fail(MC_ERROR_CONTACT, "edges[%d..%d] = (%d, %d) and edges[%d..%d] = (%d, %d) both %s node %d: cells meet "
+             "only at that node, a contact surface must be simple chains or loops", 2 * int(e), 2 * int(e) + 1,
+             int(edges[2 * size_t(e)]), int(edges[2 * size_t(e) + 1]), 2 * other, 2 * other + 1,
+             int(edges[2 * size_t(other)]), int(edges[2 * size_t(other) + 1]),
+             leaving[seg.a] >= 0 ? "leave" : "arrive at", (leaving[seg.a] >= 0 ? seg.a : seg.b) + model.index_base);
+      leaving[seg.a] = arriving[seg.b] = int(e);
+    }
+    b.contact = std::move(surface);
     b.has_contact = true;
     model.structure_changed();
   });
@@ -408,7 +478,17 @@ mc_status mc_set_option_real(mc_model *m, int option, double value) {
 }
 
 mc_status mc_solve(mc_model *m) {
-  return guard(m, [&](mc::Model &model) { model.solve(); });
+  return guard(m, [&](mc::Model &model) {
+    model.solve();
+    require_finite_results(model);
+  });
+}
+
+mc_status mc_set_log_callback(mc_model *m, mc_log_fn fn, void *user_data) {
+  return guard(m, [&](mc::Model &model) {
+    model.progress.fn = fn;
+    model.progress.user_data = fn ? user_data : nullptr;
+  });
 }
 
 mc_status mc_get_info_int(const mc_model *m, int info, int64_t *value) {
@@ -537,6 +617,13 @@ mc_status mc_get_contact_initial_gap(const mc_model *m, double *g0) {
 mc_status mc_get_contact_normal(const mc_model *m, double *n) {
   return contact_array(m, n, "n", [&](const mc::Model &, const mc::ContactGeometry &g) {
     for (size_t j = 0; j < g.normals.size(); ++j) n[2 * j] = g.normals[j].x, n[2 * j + 1] = g.normals[j].y;
+  });
+}
+
+mc_status mc_write_vtu(const mc_model *m, const char *path) {
+  return guard_const(m, [&](const mc::Model &model) {
+    require_pointer(path, "path");
+    mc::write_vtu(model, path);
   });
 }
 

@@ -9,6 +9,7 @@
 // iteration, which is exact once the active set is right; if it cycles, Murty's least-index
 // single pivoting takes over (finite for S positive definite).
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -32,8 +33,19 @@ struct DualQpResult {
   double imbalance = 0;     // for loads_not_balanced: min ||G^T l - e|| / ||e|| over l >= 0
 };
 
-// active: a starting guess (size q, from a previous solve) or empty.
+// What one active-set iteration did, for progress messages (mc_set_log_callback).
+struct DualQpIteration {
+  int iteration = 0;       // 1-based
+  int active = 0;          // size of the active set the equality problem was solved on
+  int violating = 0;       // rows violating l >= 0 (active) or gap >= 0 (inactive): to be flipped
+  double residual = 0;     // largest relative violation of l >= 0, gap >= 0, l . gap = 0
+  bool holds_modes = true; // false: the active set does not hold a floating body (step undone)
+};
+using DualQpObserver = std::function<void(const DualQpIteration &)>;
+
+// active: a starting guess (size q, from a previous solve) or empty. observe (may be empty)
+// is called once per iteration.
 DualQpResult solve_dual_qp(const DualQp &problem, double tolerance, int max_iterations,
-                           const std::vector<char> &active);
+                           const std::vector<char> &active, const DualQpObserver &observe = {});
 
 }  // namespace mc

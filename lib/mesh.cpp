@@ -25,7 +25,7 @@ Mesh::Mesh(int n_nodes, const double *xy, int n_cells, int nodes_per_cell, const
     else ymin = std::min(ymin, xy_[i]), ymax = std::max(ymax, xy_[i]);
   }
   length_scale_ = std::max(xmax - xmin, ymax - ymin);
-  if (!(length_scale_ > 0)) fail(MC_ERROR_MESH, "all nodes coincide");
+  if (!(length_scale_ > 0)) fail(MC_ERROR_MESH, "xy: all %d nodes coincide (the mesh has no extent)", n_nodes);
   cells_.assign(cells, cells + size_t(n_cells) * nodes_per_cell);
   std::vector<char> used(n_nodes, 0);
   for (size_t k = 0; k < cells_.size(); ++k) {

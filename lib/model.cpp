@@ -68,6 +68,7 @@ void Model::build_structure() {
     Body &body_ = body[b];
     if (!body_.has_mesh) continue;
     auto sys = std::make_unique<BodySystem>();
+    const double t_assembly = now();
     {
       Stopwatch watch(infos.t_assembly);
       if (!body_.cell_elasticity.empty()) {
@@ -78,6 +79,8 @@ void Model::build_structure() {
       sys->stiffness = assemble_stiffness(body_.mesh, sys->laws, thickness,
                                           options.q1_integration == MC_Q1_BBAR && body_.mesh.nodes_per_cell() == 4);
     }
+    progress(MC_LOG_PHASE, "assembly: body %d, %d nodes, %d cells, stiffness in %.3g s", b + 1,
+             body_.mesh.n_nodes(), body_.mesh.n_cells(), now() - t_assembly);
     sys->rigid = free_rigid_modes(body_.mesh, body_.prescribed);
     if (sys->rigid.count > 0 && !with_contact)
       fail(MC_ERROR_SINGULAR,
@@ -89,6 +92,7 @@ void Model::build_structure() {
 
   if (with_contact) {
     Stopwatch watch(infos.t_contact);
+    const double t_geometry = now();
     auto cs = std::make_unique<ContactSystem>();
     cs->geometry = build_contact_geometry(body[0].mesh, body[0].contact, body[1].mesh, body[1].contact,
                                           options.contact_normal);
@@ -107,6 +111,8 @@ void Model::build_structure() {
       }
       for (int b = 0; b < 2; ++b) cs->b_start[b].push_back(int(cs->b_dof[b].size()));
     }
+    progress(MC_LOG_PHASE, "contact geometry and mortar operators: %zu body-1 contact nodes, %d constraint rows, %.3g s",
+             cs->geometry.nodes.size(), cs->rows.size(), now() - t_geometry);
     contact_ = std::move(cs);
   }
 
@@ -132,10 +138,14 @@ void Model::build_structure() {
       Stopwatch watch(infos.t_assembly);
       sys->reduced = sys->stiffness.principal_submatrix(sys->solve_index, int(sys->solve_dofs.size()));
     }
+    const double t_analysis = now();
     {
       Stopwatch watch(infos.t_analysis);
       sys->cholesky.analyze(sys->reduced, interface_reduced, options.ordering);
     }
+    progress(MC_LOG_PHASE, "analysis: body %d, %zu unknowns, ordering and symbolic factorization in %.3g s", b + 1,
+             sys->solve_dofs.size(), now() - t_analysis);
+    const double t_factor = now();
     {
       Stopwatch watch(infos.t_factor);
       try {
@@ -146,6 +156,8 @@ void Model::build_structure() {
       }
     }
     infos.factorizations++;
+    progress(MC_LOG_PHASE, "factorization: body %d, %ld nonzeros in the Cholesky factor, %.3g s", b + 1,
+             long(sys->cholesky.factor_nnz()), now() - t_factor);
   }
   if (contact_) build_contact_operator();
   built_version_ = structure_version_;
@@ -155,6 +167,7 @@ void Model::build_structure() {
 // of each factor and a rank-k update, all dense BLAS 3.
 void Model::build_contact_operator() {
   Stopwatch watch(infos.t_contact);
+  const double t_operator = now();
   ContactSystem &cs = *contact_;
   const int q = cs.rows.size();
   cs.s.assign(size_t(q) * q, 0.0);
@@ -179,6 +192,7 @@ void Model::build_contact_operator() {
   for (int j = 0; j < q; ++j)
     for (int i = j + 1; i < q; ++i) cs.s[size_t(j) * q + i] = cs.s[size_t(i) * q + j];
   cs.last_active.clear();
+  progress(MC_LOG_PHASE, "interface operator: S = B K^+ B^T of order %d, %.3g s", q, now() - t_operator);
 }
 
 double Model::initial_gap(size_t pos) const {
@@ -199,12 +213,16 @@ void Model::solve() {
   if (body[0].has_contact != body[1].has_contact)
     fail(MC_ERROR_STATE, "body %d has a contact surface but body %d has none: contact needs both (mc_set_contact)",
          body[0].has_contact ? 1 : 2, body[0].has_contact ? 2 : 1);
-  if (built_version_ != structure_version_) {
+  const bool rebuild = built_version_ != structure_version_;
+  progress(MC_LOG_PHASE, rebuild ? "solve: start, assembling and factorizing"
+                                 : "solve: start, reusing the factorizations and the interface operator");
+  if (rebuild) {
     built_version_ = 0;
     build_structure();
   }
 
   // Loads with the prescribed displacements lifted: f_eff = f - K u_prescribed.
+  const double t_loads = now();
   std::vector<double> f[2], lifted[2], v[2];
   for (int b = 0; b < 2; ++b) {
     if (!system_[b]) continue;
@@ -231,6 +249,7 @@ void Model::solve() {
     infos.dofs += long(sys.solve_dofs.size() + sys.rigid.pinned_dofs.size());
     infos.factor_nnz += sys.cholesky.factor_nnz();
   }
+  progress(MC_LOG_PHASE, "loads: load vectors and v = K^+ f, %.3g s", now() - t_loads);
 
   std::vector<double> lambda;
   std::vector<double> alpha;
@@ -271,10 +290,24 @@ void Model::solve() {
       }
     }
     DualQpResult result;
+    const double t_active_set = now();
+    DualQpObserver observe;
+    if (progress.enabled())
+      observe = [&](const DualQpIteration &it) {
+        if (it.holds_modes)
+          progress(MC_LOG_ITERATION, "active-set iteration %d: %d active of %d, %d to flip, residual %.3g", it.iteration,
+                   it.active, q, it.violating, it.residual);
+        else
+          progress(MC_LOG_ITERATION, "active-set iteration %d: %d active of %d do not hold the floating body, step undone",
+                   it.iteration, it.active, q);
+      };
     {
       Stopwatch watch(infos.t_contact);
-      result = solve_dual_qp(qp, options.tolerance, options.max_iterations, cs.last_active);
+      result = solve_dual_qp(qp, options.tolerance, options.max_iterations, cs.last_active, observe);
     }
+    static const char *const outcome[] = {"solved", "loads not balanced", "floating body not held", "not converged"};
+    progress(MC_LOG_PHASE, "active-set solve: %s, %d iterations, residual %.3g, %.3g s", outcome[int(result.outcome)],
+             result.iterations, result.violation, now() - t_active_set);
     infos.iterations = result.iterations;
     auto body_of_mode = [&](std::string &text) {
       for (int b = 0; b < 2; ++b)
@@ -310,13 +343,14 @@ void Model::solve() {
   }
 
   // u = K^+ (f_eff - B^T lambda) + R alpha, then the prescribed values.
+  const double t_recovery = now();
   int mode_offset = 0;
   double f_norm = 0, residual_norm = 0;
   for (int b = 0; b < 2; ++b) {
     if (!system_[b]) continue;
     BodySystem &sys = *system_[b];
     const int ndof = sys.stiffness.n;
-    std::vector<double> rhs(lifted[b]), contact_force(ndof, 0.0);
+    std::vector<double> rhs(lifted[b]), contact_force(ndof, 0.0), rigid_motion(ndof, 0.0);  // R alpha
     if (contact_) {
       for (int r = 0; r < contact_->rows.size(); ++r)
         for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
@@ -331,22 +365,30 @@ void Model::solve() {
       std::fill(v[b].begin(), v[b].end(), 0.0);
       for (size_t k = 0; k < x.size(); ++k) v[b][sys.solve_dofs[k]] = x[k];
       for (int c = 0; c < sys.rigid.count; ++c)
-        for (int i = 0; i < ndof; ++i) v[b][i] += alpha[mode_offset + c] * sys.rigid.modes[size_t(c) * ndof + i];
+        for (int i = 0; i < ndof; ++i) rigid_motion[i] += alpha[mode_offset + c] * sys.rigid.modes[size_t(c) * ndof + i];
       mode_offset += sys.rigid.count;
     }
     Body &body_ = body[b];
-    body_.u = v[b];
-    for (int i = 0; i < ndof; ++i) if (body_.prescribed[i]) body_.u[i] = body_.prescribed_value[i];
-    // Reactions, energy and the equilibrium residual from the full stiffness.
+    // Reactions, energy and the equilibrium residual from the full stiffness. K R = 0, so K is
+    // applied to u without R alpha: a floating body that travels far compared with its
+    // deformation (a large initial gap) would otherwise leave round-off eps |K| |R alpha| in all
+    // three. (The rigid modes vanish at prescribed components.)
+    std::vector<double> elastic(v[b]);
+    for (int i = 0; i < ndof; ++i) if (body_.prescribed[i]) elastic[i] = body_.prescribed_value[i];
+    body_.u = elastic;
+    for (int i = 0; i < ndof; ++i) body_.u[i] += rigid_motion[i];
     std::vector<double> ku(ndof);
-    sys.stiffness.multiply(body_.u.data(), ku.data());
+    sys.stiffness.multiply(elastic.data(), ku.data());
     body_.reaction.assign(ndof, 0.0);
     for (int i = 0; i < ndof; ++i) {
       double r = ku[i] - f[b][i] - contact_force[i];
       if (body_.prescribed[i]) body_.reaction[i] = r;
-      else residual_norm += r * r, f_norm += f[b][i] * f[b][i] + contact_force[i] * contact_force[i];
+      // Relative to the load of the reduced problem, f - K u_prescribed: a body moved only by
+      // prescribed displacements has f = 0, and its residual is then measured against the forces
+      // those displacements cause, not in absolute units.
+      else residual_norm += r * r, f_norm += lifted[b][i] * lifted[b][i] + contact_force[i] * contact_force[i];
     }
-    infos.energy += 0.5 * dot(body_.u, ku);
+    infos.energy += 0.5 * dot(elastic, ku);
     // Cell-averaged stresses.
     const Mesh &mesh = body_.mesh;
     const int npc = mesh.nodes_per_cell();
@@ -384,7 +426,10 @@ void Model::solve() {
       contact_pressure[pos] = lambda[r] / (thickness * g.tributary[pos]);
     }
   }
+  progress(MC_LOG_PHASE, "recovery: displacements, reactions, stresses and contact results, %.3g s", now() - t_recovery);
   infos.t_total = now() - start;
+  progress(MC_LOG_PHASE, "solve: done, %ld unknowns, %ld active of %ld contact nodes, %.3g s", infos.dofs, infos.active,
+           infos.contact_rows, infos.t_total);
   solved = true;
 }
 

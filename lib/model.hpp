@@ -7,6 +7,7 @@
 #include "dual_qp.hpp"
 #include "mesh.hpp"
 #include "mortar_operators.hpp"
+#include "progress_log.hpp"
 #include "rigid_modes.hpp"
 #include "sparse_cholesky.hpp"
 #include <memory>
@@ -85,6 +86,7 @@ public:
   double thickness = 1;
   int index_base = 0;
   bool solved = false;
+  ProgressLog progress;  // the host's log callback (mc_set_log_callback), called by solve()
 
   // Anything that changes K, the supports' set, the contact surfaces or the method.
   void structure_changed() { ++structure_version_, solved = false; }

@@ -3,7 +3,45 @@
 #include <cholmod.h>
 #include <cstring>
 
+#ifdef MC_SERIAL_CHOLMOD_OPENMP
+// libgomp's per-thread controls (CHOLMOD links libgomp; declared here so that no OpenMP
+// compiler flag is needed).
+extern "C" {
+int omp_get_dynamic(void);
+void omp_set_dynamic(int dynamic_threads);
+int omp_get_max_threads(void);
+void omp_set_num_threads(int num_threads);
+}
+#endif
+
 namespace mc {
+
+namespace {
+// Debian's CHOLMOD runs the zeroing and scatter loops of its supernodal factorization with a
+// fixed OpenMP team (CHOLMOD_OMP_NUM_THREADS = 4, a num_threads clause), between the BLAS
+// calls that OpenBLAS already spreads over every core. The two thread pools then compete for
+// the same cores, and OpenMP's spinning workers starve OpenBLAS's (docs/benchmarks.md,
+// "Threads": 1.6x slower on 2 cores, 30x with OMP_THREAD_LIMIT=2). While CHOLMOD runs, the
+// calling thread's OpenMP controls ask for one thread: with dyn-var true, a num_threads clause
+// is bounded by nthreads-var = 1. Both are the calling thread's own settings (OpenMP data-
+// environment ICVs), restored on return: no global state, and the host's own OpenMP is untouched.
+class CholmodWithoutOpenMpTeam {
+public:
+#ifdef MC_SERIAL_CHOLMOD_OPENMP
+  CholmodWithoutOpenMpTeam() : dynamic_(omp_get_dynamic()), threads_(omp_get_max_threads()) {
+    omp_set_dynamic(1);
+    omp_set_num_threads(1);
+  }
+  ~CholmodWithoutOpenMpTeam() {
+    omp_set_num_threads(threads_);
+    omp_set_dynamic(dynamic_);
+  }
+
+private:
+  int dynamic_, threads_;
+#endif
+};
+}  // namespace
 
 struct SparseCholesky::Impl {
   cholmod_common common;
@@ -47,9 +85,11 @@ SparseCholesky::~SparseCholesky() = default;
 
 void SparseCholesky::analyze(const SymmetricCsc &a, const std::vector<int> &interface, int ordering) {
   Impl &d = *impl_;
+  CholmodWithoutOpenMpTeam serial_openmp;
   if (d.factor) cholmod_free_factor(&d.factor, &d.common);
   n_ = a.n;
   d.interface = interface;
+  if (n_ == 0) return;  // every unknown prescribed (a fully supported body): nothing to factor
   cholmod_sparse s = d.view(a);
   if (interface.empty()) {
     d.common.nmethods = 1;
@@ -91,9 +131,13 @@ void SparseCholesky::analyze(const SymmetricCsc &a, const std::vector<int> &inte
 
 void SparseCholesky::factorize(const SymmetricCsc &a) {
   Impl &d = *impl_;
+  if (n_ == 0) return;
   if (!d.factor) fail(MC_ERROR_INTERNAL, "factorize before analyze");
   cholmod_sparse s = d.view(a);
-  cholmod_factorize(&s, d.factor, &d.common);
+  {
+    CholmodWithoutOpenMpTeam serial_openmp;
+    cholmod_factorize(&s, d.factor, &d.common);
+  }
   if (d.common.status == CHOLMOD_NOT_POSDEF)
     fail(MC_ERROR_SINGULAR,
          "the stiffness matrix is not positive definite (pivot %d of %d): a part of the body can move "
@@ -104,6 +148,7 @@ void SparseCholesky::factorize(const SymmetricCsc &a) {
 
 void SparseCholesky::solve(double *x, int nrhs) const {
   Impl &d = *impl_;
+  if (n_ == 0) return;
   cholmod_dense b;
   std::memset(&b, 0, sizeof b);
   b.nrow = size_t(n_);
@@ -113,7 +158,11 @@ void SparseCholesky::solve(double *x, int nrhs) const {
   b.x = x;
   b.xtype = CHOLMOD_REAL;
   b.dtype = CHOLMOD_DOUBLE;
-  cholmod_dense *solution = cholmod_solve(CHOLMOD_A, d.factor, &b, &d.common);
+  cholmod_dense *solution;
+  {
+    CholmodWithoutOpenMpTeam serial_openmp;
+    solution = cholmod_solve(CHOLMOD_A, d.factor, &b, &d.common);
+  }
   d.check("solve");
   std::memcpy(x, solution->x, sizeof(double) * size_t(n_) * nrhs);
   cholmod_free_dense(&solution, &d.common);

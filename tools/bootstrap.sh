@@ -28,9 +28,57 @@ cmake --build "$build" -j"$(nproc)"
 
 case "$mode" in
   demo)
-    "$build/examples/hertz" 0.004 mortar hertz_pressure.csv ;;
+    # The Hertz scene through the scene runner: Gmsh meshes the .geo, mortarcontact-run solves the
+    # JSON scene (progress on stderr), then the pressure profile is plotted against Hertz.
+    out="$build/hertz"
+    mkdir -p "$out"
+    gmsh -2 -format msh41 -v 2 examples/runner/hertz/hertz.geo -o "$out/hertz.msh"
+    cp examples/runner/hertz/hertz.json "$out/"
+    "$build/examples/runner/mortarcontact-run" "$out/hertz.json"
+    /usr/bin/python3 examples/python/plot_hertz_pressure.py "$out/hertz_pressure.csv" "$out/hertz_pressure.png"
+    echo
+    echo "ParaView: open $out/hertz.pvd (displacement, stress, von Mises, contact pressure, gap, active)"
+    echo "Plot:     $out/hertz_pressure.png (pressure profile against Hertz)"
+    echo "CSV:      $out/hertz_pressure.csv" ;;
   test)
-    ctest --test-dir "$build" --output-on-failure -V -j1 ;;
+    ctest --test-dir "$build" --output-on-failure -V -j1
+    # Bad input, fuzzing, sanitizers (docs/robustness.md). The C test programs are the tests
+    # labelled memcheck (every Check program, and fuzz_corpus_replay); each step fails CI.
+    # (a) AddressSanitizer + UndefinedBehaviorSanitizer (gcc), a lean build of just those programs.
+    t0=$SECONDS
+    asan=${MC_ASAN_DIR:-build-asan}
+    cmake -S . -B "$asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMC_SANITIZE=ON -DMC_BUILD_BENCH=OFF >/dev/null
+    mapfile -t targets < <(python3 tools/memcheck_tests.py targets "$asan")
+    [ ${#targets[@]} -gt 0 ] || { echo "no memcheck tests in $asan" >&2; exit 1; }
+    cmake --build "$asan" -j"$(nproc)" --target "${targets[@]}"
+    CK_FORK=no ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+      ctest --test-dir "$asan" -L memcheck --output-on-failure -j1
+    t_asan=$((SECONDS - t0))
+    # (b) valgrind memcheck of the same programs from the normal build. Left out for time (they
+    # run under ASan/UBSan above; under valgrind they took 3, 10 and 11 minutes): the convergence
+    # study and the two long scene suites. test_contact keeps the contact paths under valgrind.
+    t0=$SECONDS
+    CK_FORK=no OPENBLAS_NUM_THREADS=1 python3 tools/memcheck_tests.py run "$build" \
+      --exclude test_contact_convergence,test_contact_scenes,test_contact_hard -- \
+      valgrind -q --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect --num-callers=30
+    t_valgrind=$((SECONDS - t0))
+    # (c) the libFuzzer target (clang), a bounded run from the checked-in seed corpus; new inputs
+    # go to $fuzz/fuzz-work, a crash, leak, timeout or out-of-memory input to $fuzz/.
+    t0=$SECONDS
+    fuzz=${MC_FUZZ_DIR:-build-fuzz}
+    cmake -S . -B "$fuzz" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DMC_BUILD_FUZZ=ON -DMC_BUILD_TESTS=OFF -DMC_BUILD_EXAMPLES=OFF -DMC_BUILD_BENCH=OFF >/dev/null
+    cmake --build "$fuzz" -j"$(nproc)" --target fuzz_api
+    mkdir -p "$fuzz/fuzz-work"
+    if ! "$fuzz/tests/fuzz/fuzz_api" -max_total_time="${MC_FUZZ_SECONDS:-60}" -timeout=10 -rss_limit_mb=2048 \
+         -print_final_stats=1 -artifact_prefix="$fuzz/" "$fuzz/fuzz-work" tests/fuzz/corpus >"$fuzz/fuzz.log" 2>&1; then
+      tail -n 80 "$fuzz/fuzz.log"
+      echo "fuzz_api failed: see $fuzz/fuzz.log and the crash-*/leak-*/timeout-*/oom-* file in $fuzz/" >&2
+      exit 1
+    fi
+    grep -E '^(INFO: .*corpus|stat::)|Done' "$fuzz/fuzz.log" || true
+    t_fuzz=$((SECONDS - t0))
+    echo "robustness steps: ASan/UBSan ${t_asan} s, valgrind ${t_valgrind} s, fuzzing ${t_fuzz} s" ;;
   *)
     echo "usage: $0 demo|test" >&2; exit 2 ;;
 esac

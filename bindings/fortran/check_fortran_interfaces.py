@@ -9,6 +9,8 @@ the same name; the module's MC_ constants must equal the header's. C -> Fortran:
     int, mc_status           integer(c_int), value     mc_int       integer(c_int32_t), value
     double                   real(c_double), value     int64_t      integer(c_int64_t), value
     T * (any const)          the same type, not value  (array or scalar by reference)
+    void *                   type(c_ptr), value        mc_log_fn    type(c_funptr), value
+    const char *             character(kind=c_char) (or character(c_char)), not value
     returns: mc_status/int -> integer(c_int) function, const char * -> type(c_ptr) function,
              void -> subroutine
 usage: check_fortran_interfaces.py HEADER MODULE_F90
@@ -18,7 +20,7 @@ import sys
 
 BASE = {"mc_model": "type(c_ptr)", "int": "integer(c_int)", "mc_status": "integer(c_int)",
         "mc_int": "integer(c_int32_t)", "double": "real(c_double)", "int64_t": "integer(c_int64_t)",
-        "char": "character(c_char)"}
+        "char": "character(c_char)", "mc_log_fn": "type(c_funptr)"}
 RET = {"mc_status": "integer(c_int)", "int": "integer(c_int)", "const char *": "type(c_ptr)", "void": None}
 
 
@@ -41,6 +43,8 @@ def header_functions(path):
 
 def expected_arg(ctype):
     stars = ctype.count("*")
+    if ctype == "void*":
+        return ("type(c_ptr)", True)  # an opaque pointer passed as is
     base = BASE[ctype.replace("*", "")]
     if ctype.startswith("mc_model"):
         return (base, stars == 1)  # the handle by value; mc_model** by reference
@@ -58,12 +62,14 @@ def fortran_interfaces(path):
         ret, kind, cname, args, name, body = m.groups()
         decl = {}
         for line in body.splitlines():
-            d = re.match(r"\s*(type\(c_ptr\)|integer\(\w+\)|real\(\w+\)|character\(\w+\))\s*(,[^:]*)?::\s*(.*)", line)
+            d = re.match(r"\s*(type\(c_\w+\)|integer\(\w+\)|real\(\w+\)|character\((?:kind=)?\w+\))\s*(,[^:]*)?::\s*(.*)",
+                         line)
             if not d:
                 continue
+            ftype = d.group(1).replace("kind=", "")
             attrs = d.group(2) or ""
             for var in re.findall(r"(\w+)(?:\([^)]*\))?", d.group(3)):
-                decl[var] = (d.group(1), "value" in attrs)
+                decl[var] = (ftype, "value" in attrs)
         arglist = [a.strip() for a in args.split(",") if a.strip()]
         found.setdefault(name, []).append((kind, ret, [(a, decl.get(a)) for a in arglist]))
     return found, text

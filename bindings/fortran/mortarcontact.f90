@@ -22,7 +22,7 @@
 !> Build: gfortran -c mortarcontact.f90, then link the program with -lmortarcontact.
 module mortarcontact
   use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_associated, c_f_pointer, c_char, &
-       c_int, c_int32_t, c_int64_t, c_double, c_size_t
+       c_int, c_int32_t, c_int64_t, c_double, c_size_t, c_funptr, c_funloc, c_null_funptr, c_null_char
   implicit none
   private
 
@@ -49,6 +49,7 @@ module mortarcontact
   integer, parameter, public :: MC_NORMAL_NONMORTAR = 0, MC_NORMAL_MORTAR = 1
   integer, parameter, public :: MC_ORDERING_AUTO = 0, MC_ORDERING_AMD = 1, MC_ORDERING_METIS = 2
   integer, parameter, public :: MC_Q1_FULL = 0, MC_Q1_BBAR = 1
+  integer, parameter, public :: MC_LOG_PHASE = 1, MC_LOG_ITERATION = 2
   integer, parameter, public :: MC_INFO_DOFS = 1, MC_INFO_FACTOR_NNZ = 2, MC_INFO_ITERATIONS = 3, &
        MC_INFO_ACTIVE_NODES = 4, MC_INFO_CONTACT_NODES = 5, MC_INFO_FACTORIZATIONS = 6, &
        MC_INFO_TIME_ASSEMBLY = 20, MC_INFO_TIME_ANALYSIS = 21, MC_INFO_TIME_FACTORIZATION = 22, &
@@ -72,6 +73,22 @@ module mortarcontact
   public :: mc_get_contact_count, mc_get_contact_nodes, mc_get_contact_pressure
   public :: mc_get_contact_force, mc_get_contact_gap, mc_get_contact_initial_gap
   public :: mc_get_contact_normal
+  public :: mc_set_gap_offset, mc_set_log_callback, mc_write_vtu, mc_log_fn, mc_log_message
+
+  !> The log callback (mc_set_log_callback): a bind(C) subroutine of this interface, e.g.
+  !>   subroutine my_log(user_data, level, message) bind(C)
+  !>     type(c_ptr), value :: user_data; integer(c_int), value :: level
+  !>     character(kind=c_char), intent(in) :: message(*)
+  !>     print '(a)', mc_log_message(message)
+  !> level is MC_LOG_PHASE or MC_LOG_ITERATION; message is NUL-terminated, valid during the call.
+  abstract interface
+     subroutine mc_log_fn(user_data, level, message) bind(C)
+       import :: c_ptr, c_int, c_char
+       type(c_ptr), value :: user_data
+       integer(c_int), value :: level
+       character(kind=c_char), intent(in) :: message(*)
+     end subroutine
+  end interface
 
   !> Sets an integer option; value may be a default or a 64-bit integer.
   interface mc_set_option_int
@@ -191,6 +208,13 @@ module mortarcontact
        integer(c_int32_t), value :: n_edges
        integer(c_int32_t), intent(in) :: edges(*)
      end function
+     integer(c_int) function c_mc_set_gap_offset(m, n, nodes, offset) bind(C, name="mc_set_gap_offset")
+       import :: c_ptr, c_int, c_int32_t, c_double
+       type(c_ptr), value :: m
+       integer(c_int32_t), value :: n
+       integer(c_int32_t), intent(in) :: nodes(*)
+       real(c_double), intent(in) :: offset(*)
+     end function
      integer(c_int) function c_mc_set_option_int(m, option, value) bind(C, name="mc_set_option_int")
        import :: c_ptr, c_int, c_int64_t
        type(c_ptr), value :: m
@@ -206,6 +230,12 @@ module mortarcontact
      integer(c_int) function c_mc_solve(m) bind(C, name="mc_solve")
        import :: c_ptr, c_int
        type(c_ptr), value :: m
+     end function
+     integer(c_int) function c_mc_set_log_callback(m, fn, user_data) bind(C, name="mc_set_log_callback")
+       import :: c_ptr, c_int, c_funptr
+       type(c_ptr), value :: m
+       type(c_funptr), value :: fn
+       type(c_ptr), value :: user_data
      end function
      integer(c_int) function c_mc_get_info_int(m, info, value) bind(C, name="mc_get_info_int")
        import :: c_ptr, c_int, c_int64_t
@@ -271,6 +301,11 @@ module mortarcontact
        import :: c_ptr, c_int, c_double
        type(c_ptr), value :: m
        real(c_double), intent(out) :: n(*)
+     end function
+     integer(c_int) function c_mc_write_vtu(m, path) bind(C, name="mc_write_vtu")
+       import :: c_ptr, c_int, c_char
+       type(c_ptr), value :: m
+       character(kind=c_char), intent(in) :: path(*)
      end function
      integer(c_size_t) function c_strlen(s) bind(C, name="strlen")
        import :: c_ptr, c_size_t
@@ -555,6 +590,17 @@ contains
     status = finish(model, c_mc_set_contact(model%ptr, int(body, c_int), int(size(edges, 2), mc_int), edges))
   end function mc_set_contact
 
+  !> Adds offset(n) (a length: > 0 clearance, < 0 interference) to the initial gap of the body-1
+  !> contact nodes(n); replaces earlier offsets of those nodes.
+  integer function mc_set_gap_offset(model, nodes, offset) result(status)
+    type(mc_model), intent(inout) :: model
+    integer(mc_int), intent(in) :: nodes(:)
+    real(mc_real), intent(in) :: offset(:)
+    if (.not. shape_ok(model, 'mc_set_gap_offset: offset', shape(offset), [size(nodes)], '(size(nodes))', &
+         status)) return
+    status = finish(model, c_mc_set_gap_offset(model%ptr, int(size(nodes), mc_int), nodes, offset))
+  end function mc_set_gap_offset
+
   ! ---- options and solving -----------------------------------------------------------------
 
   integer function set_option_int32(model, option, value) result(status)
@@ -584,6 +630,37 @@ contains
     type(mc_model), intent(inout) :: model
     status = finish(model, c_mc_solve(model%ptr))
   end function mc_solve
+
+  !> Installs fn (a bind(C) procedure of interface mc_log_fn) with user_data (c_null_ptr when
+  !> absent) as the progress log of mc_solve; without fn, removes the callback.
+  integer function mc_set_log_callback(model, fn, user_data) result(status)
+    type(mc_model), intent(inout) :: model
+    procedure(mc_log_fn), optional :: fn
+    type(c_ptr), intent(in), optional :: user_data
+    type(c_ptr) :: data
+    data = c_null_ptr
+    if (present(user_data)) data = user_data
+    if (present(fn)) then
+       status = finish(model, c_mc_set_log_callback(model%ptr, c_funloc(fn), data))
+    else
+       status = finish(model, c_mc_set_log_callback(model%ptr, c_null_funptr, c_null_ptr))
+    end if
+  end function mc_set_log_callback
+
+  !> The NUL-terminated message a log callback receives, as a Fortran string.
+  function mc_log_message(message) result(s)
+    character(kind=c_char), intent(in) :: message(*)
+    character(len=:), allocatable :: s
+    integer :: i, n
+    n = 0
+    do while (message(n + 1) /= c_null_char)
+       n = n + 1
+    end do
+    allocate(character(len=n) :: s)
+    do i = 1, n
+       s(i:i) = message(i)
+    end do
+  end function mc_log_message
 
   ! ---- results -------------------------------------------------------------------------------
 
@@ -721,5 +798,16 @@ contains
     if (.not. contact_ok(model, 'mc_get_contact_normal: n', shape(n), 2, status)) return
     status = finish(model, c_mc_get_contact_normal(model%ptr, n))
   end function mc_get_contact_normal
+
+  ! ---- output ------------------------------------------------------------------------------
+
+  !> Writes the solved scene for ParaView: path ending in '.pvd' gives a collection plus
+  !> '<stem>_body1.vtu' and '<stem>_body2.vtu'; any other path one .vtu with both bodies.
+  !> Trailing blanks of path are ignored.
+  integer function mc_write_vtu(model, path) result(status)
+    type(mc_model), intent(inout) :: model
+    character(len=*), intent(in) :: path
+    status = finish(model, c_mc_write_vtu(model%ptr, trim(path) // c_null_char))
+  end function mc_write_vtu
 
 end module mortarcontact

@@ -1,8 +1,36 @@
 ! Tests of the Fortran binding that need no contact solve: version, strings, the wrapper's
 ! size checks and messages, errors from the library, 1-based ids, and a single-body solve.
 ! The contact patch test is examples/fortran/patch_test.f90 (also run by ctest).
+
+!> The log callback of the test: counts messages by level and keeps the phase messages.
+module test_log
+  use, intrinsic :: iso_c_binding, only: c_ptr, c_int, c_char, c_f_pointer
+  use mortarcontact, only: mc_log_message, MC_LOG_PHASE
+  implicit none
+  type :: log_record
+     integer :: phases = 0, others = 0
+     character(len=4096) :: text = ''
+  end type log_record
+contains
+  subroutine record_log(user_data, level, message) bind(C)
+    type(c_ptr), value :: user_data
+    integer(c_int), value :: level
+    character(kind=c_char), intent(in) :: message(*)
+    type(log_record), pointer :: rec
+    call c_f_pointer(user_data, rec)
+    if (level == MC_LOG_PHASE) then
+       rec%phases = rec%phases + 1
+       rec%text = trim(rec%text) // mc_log_message(message) // ';'
+    else
+       rec%others = rec%others + 1
+    end if
+  end subroutine record_log
+end module test_log
+
 program test_mortarcontact
+  use, intrinsic :: iso_c_binding, only: c_loc
   use mortarcontact
+  use test_log
   implicit none
   type(mc_model) :: m
   integer :: st, failures = 0
@@ -13,6 +41,10 @@ program test_mortarcontact
   integer(mc_int) :: tri(3, 2) = reshape([1, 2, 3, 1, 3, 4], [3, 2])
   real(mc_real) :: u(2, 4), r(2, 4), sigma(4, 2), wrong(2, 3), d(3, 3, 2), big(3, 4)
   real(mc_real) :: strided(4, 4)
+  type(log_record), target :: rec
+  character(len=256) :: line
+  integer :: unit, ios
+  logical :: found
 
   call check(mc_version_number() == MC_HEADER_VERSION_NUMBER, 'mc_version_number')
   call check(mc_version_string() == MC_HEADER_VERSION_STRING, 'mc_version_string = ' // mc_version_string())
@@ -57,7 +89,34 @@ program test_mortarcontact
   call expect(mc_fix(m, 1, [1, 2], MC_XY), MC_OK, 'mc_fix')
   call expect(mc_add_traction(m, 1, reshape([3, 4], [2, 1]), reshape([0d0, 1d-3], [2, 1])), MC_OK, &
        'mc_add_traction')
+  call expect(mc_write_vtu(m, 'test_mortarcontact_fortran.vtu'), MC_ERROR_STATE, 'mc_write_vtu before a solve')
+  call expect(mc_set_log_callback(m, record_log, c_loc(rec)), MC_OK, 'mc_set_log_callback')
   call expect(mc_solve(m), MC_OK, 'mc_solve (single body)')
+  ! a single-body solve: phase messages only (iterations need contact), with the user data
+  call check(rec%phases >= 5 .and. rec%others == 0, 'log: phase messages only')
+  call check(index(rec%text, 'factorization: body 1') > 0 .and. index(rec%text, 'solve: done') > 0, &
+       'log: ' // trim(rec%text))
+  call expect(mc_set_log_callback(m), MC_OK, 'mc_set_log_callback (remove)')
+  rec%phases = 0
+  call expect(mc_solve(m), MC_OK, 'mc_solve (no callback)')
+  call check(rec%phases == 0, 'log: no calls after removal')
+  ! the file holds the 4 nodes and 2 cells; an unwritable path names itself in the message
+  call expect(mc_write_vtu(m, 'test_mortarcontact_fortran.vtu'), MC_OK, 'mc_write_vtu')
+  found = .false.
+  open(newunit=unit, file='test_mortarcontact_fortran.vtu', status='old', action='read', iostat=ios)
+  call check(ios == 0, 'the .vtu exists')
+  if (ios == 0) then
+     do
+        read (unit, '(a)', iostat=ios) line
+        if (ios /= 0) exit
+        found = found .or. index(line, 'NumberOfPoints="4" NumberOfCells="2"') > 0
+     end do
+     close(unit, status='delete')
+  end if
+  call check(found, 'the .vtu declares 4 points and 2 cells')
+  call expect(mc_write_vtu(m, '/nonexistent-mc-dir/x.vtu'), MC_ERROR_ARGUMENT, 'mc_write_vtu, no such directory')
+  call check(index(mc_errmsg(m), '/nonexistent-mc-dir/x.vtu') > 0, 'message: ' // mc_errmsg(m))
+  call expect(mc_set_gap_offset(m, [1], [1d0, 2d0]), MC_ERROR_ARGUMENT, 'gap offsets: 2 values for 1 node')
   if (failures == 0) then
      call expect(mc_get_displacement(m, 1, u), MC_OK, 'mc_get_displacement')
      call check(all(u(:, 1:2) == 0) .and. all(u(2, 3:4) > 0), 'the top moves up')

@@ -39,7 +39,8 @@ export set_index_base!, set_plane!, set_mesh!, set_material!, set_cell_elasticit
        add_traction!, add_pressure!, add_nodal_force!, set_body_force!, clear_loads!, set_contact!,
        set_option_int!, set_option_real!, solve!, get_info_int, get_info_real, get_displacement,
        get_stress, get_reaction, get_contact_count, get_contact_nodes, get_contact_pressure,
-       get_contact_force, get_contact_gap, get_contact_initial_gap, get_contact_normal, errmsg
+       get_contact_force, get_contact_gap, get_contact_initial_gap, get_contact_normal, errmsg,
+       set_gap_offset!, set_log_callback!, write_vtu
 
 # Resolved by soname: __init__ dlopens the chosen file first, and the dynamic loader then
 # matches this name against the already-loaded library's soname.
@@ -105,6 +106,8 @@ const MC_ORDERING_AMD = Cint(1)
 const MC_ORDERING_METIS = Cint(2)
 const MC_Q1_FULL = Cint(0)
 const MC_Q1_BBAR = Cint(1)
+const MC_LOG_PHASE = Cint(1)
+const MC_LOG_ITERATION = Cint(2)
 const MC_INFO_DOFS = Cint(1)
 const MC_INFO_FACTOR_NNZ = Cint(2)
 const MC_INFO_ITERATIONS = Cint(3)
@@ -164,11 +167,16 @@ mc_set_body_force(m, body, fx, fy) =
 mc_clear_loads(m, body) = ccall((:mc_clear_loads, libmortarcontact), Cint, (Ptr{Cvoid}, Cint), m, body)
 mc_set_contact(m, body, n_edges, edges) =
     ccall((:mc_set_contact, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Int32, Ptr{Int32}), m, body, n_edges, edges)
+mc_set_gap_offset(m, n, nodes, offset) =
+    ccall((:mc_set_gap_offset, libmortarcontact), Cint, (Ptr{Cvoid}, Int32, Ptr{Int32}, Ptr{Cdouble}),
+          m, n, nodes, offset)
 mc_set_option_int(m, option, value) =
     ccall((:mc_set_option_int, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Int64), m, option, value)
 mc_set_option_real(m, option, value) =
     ccall((:mc_set_option_real, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Cdouble), m, option, value)
 mc_solve(m) = ccall((:mc_solve, libmortarcontact), Cint, (Ptr{Cvoid},), m)
+mc_set_log_callback(m, fn, user_data) =
+    ccall((:mc_set_log_callback, libmortarcontact), Cint, (Ptr{Cvoid}, Ptr{Cvoid}, Ptr{Cvoid}), m, fn, user_data)
 mc_get_info_int(m, info, value) =
     ccall((:mc_get_info_int, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Ref{Int64}), m, info, value)
 mc_get_info_real(m, info, value) =
@@ -193,6 +201,7 @@ mc_get_contact_initial_gap(m, g0) =
     ccall((:mc_get_contact_initial_gap, libmortarcontact), Cint, (Ptr{Cvoid}, Ptr{Cdouble}), m, g0)
 mc_get_contact_normal(m, n) =
     ccall((:mc_get_contact_normal, libmortarcontact), Cint, (Ptr{Cvoid}, Ptr{Cdouble}), m, n)
+mc_write_vtu(m, path) = ccall((:mc_write_vtu, libmortarcontact), Cint, (Ptr{Cvoid}, Cstring), m, path)
 
 # ---- the Julia API ---------------------------------------------------------------------------
 
@@ -221,11 +230,12 @@ mutable struct Model
     ptr::Ptr{Cvoid}
     n_nodes::Vector{Int}   # per body; -1 = no mesh yet
     n_cells::Vector{Int}
+    log::Union{Nothing,Base.RefValue{Any}}  # the log callable; the C library holds a pointer to it
     function Model(; index_base::Integer=1)
         r = Ref{Ptr{Cvoid}}(C_NULL)
         st = mc_create(r)
         st == MC_OK || throw(MortarContactError(st, "mc_create failed"))
-        m = new(r[], [-1, -1], [-1, -1])
+        m = new(r[], [-1, -1], [-1, -1], nothing)
         finalizer(close, m)
         check(m, mc_set_index_base(m, index_base))
         return m
@@ -349,6 +359,44 @@ set_option_int!(m::Model, option::Integer, value::Integer) = check(m, mc_set_opt
 set_option_real!(m::Model, option::Integer, value::Real) = check(m, mc_set_option_real(m, option, value))
 solve!(m::Model) = check(m, mc_solve(m))
 
+"""Adds `offset` (lengths: > 0 clearance, < 0 interference) to the initial gap of the body-1
+contact `nodes`; replaces earlier offsets of those nodes."""
+function set_gap_offset!(m::Model, nodes::AbstractVector{<:Integer}, offset::AbstractVector{<:Real})
+    checkshape(offset, (length(nodes),), "offset")
+    check(m, mc_set_gap_offset(m, length(nodes), ids(nodes), reals(offset)))
+end
+
+# The C callback: user_data points to the Model's RefValue holding the Julia callable. An
+# exception must not unwind into C: it is logged and dropped.
+function log_trampoline(user_data::Ptr{Cvoid}, level::Cint, message::Cstring)::Cvoid
+    holder = unsafe_pointer_to_objref(user_data)::Base.RefValue{Any}
+    try
+        holder[](Int(level), unsafe_string(message))
+    catch err
+        @error "mortarcontact: the log callback failed" exception = err
+    end
+    return nothing
+end
+
+"""
+    set_log_callback!(m, f)
+
+Calls `f(level, message)` (level `MC_LOG_PHASE` or `MC_LOG_ITERATION`, message a one-line
+String) with the progress of `solve!`; `nothing` removes the callback.
+"""
+function set_log_callback!(m::Model, f)
+    if f === nothing
+        check(m, mc_set_log_callback(m, C_NULL, C_NULL))
+        m.log = nothing
+        return nothing
+    end
+    holder = Ref{Any}(f)
+    fn = @cfunction(log_trampoline, Cvoid, (Ptr{Cvoid}, Cint, Cstring))
+    check(m, mc_set_log_callback(m, fn, pointer_from_objref(holder)))
+    m.log = holder  # keeps the callable alive as long as the model uses it
+    return nothing
+end
+
 function get_info_int(m::Model, info::Integer)
     v = Ref{Int64}(0)
     check(m, mc_get_info_int(m, info, v))
@@ -396,5 +444,9 @@ get_contact_gap(m::Model) = contact_array(mc_get_contact_gap, m, Cdouble, 1)
 get_contact_initial_gap(m::Model) = contact_array(mc_get_contact_initial_gap, m, Cdouble, 1)
 """Unit outward normals of body 1 at the contact nodes, 2×n_contact."""
 get_contact_normal(m::Model) = contact_array(mc_get_contact_normal, m, Cdouble, 2)
+
+"""Writes the solved scene for ParaView: a path ending in ".pvd" gives a collection plus
+"<stem>_body1.vtu" and "<stem>_body2.vtu"; any other path one .vtu with both bodies."""
+write_vtu(m::Model, path::AbstractString) = check(m, mc_write_vtu(m, path))
 
 end # module

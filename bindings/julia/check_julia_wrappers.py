@@ -7,7 +7,7 @@ every public mc_ function of the header must have exactly one
 in the Julia file, with the same number of arguments and, position by position, a Julia type
 that matches the C type:
     mc_int -> Int32, int / mc_status / enum -> Cint, double -> Cdouble, int64_t -> Int64,
-    void (return) -> Cvoid, const char * (return) -> Cstring,
+    void (return) -> Cvoid, const char * (return) -> Cstring, mc_log_fn -> Ptr{Cvoid},
     T * / const T * -> Ptr{J(T)} or Ref{J(T)}, mc_model * -> Ptr{Cvoid}, mc_model ** -> Ref/Ptr{Ptr{Cvoid}}.
 The Julia constants MC_* must equal the header's. Also checked: no ccall names a function the
 header lacks. Exits 1 with a list of the mismatches.
@@ -19,7 +19,8 @@ import sys
 
 SCALAR = {"mc_int": ["Int32"], "int": ["Cint", "Int32"], "mc_status": ["Cint", "Int32"],
           "double": ["Cdouble", "Float64"], "int64_t": ["Int64"], "int32_t": ["Int32"],
-          "char": ["Cchar", "UInt8"], "mc_model": ["Cvoid"], "void": ["Cvoid"]}
+          "char": ["Cchar", "UInt8"], "mc_model": ["Cvoid"], "void": ["Cvoid"],
+          "mc_log_fn": ["Ptr{Cvoid}"]}  # a function pointer: @cfunction gives a Ptr{Cvoid}
 
 
 def julia_types(ctype):

@@ -72,6 +72,9 @@ _pi32 = ctypes.POINTER(ctypes.c_int32)
 _pi64 = ctypes.POINTER(ctypes.c_int64)
 _s = ctypes.c_char_p
 
+#: void (*mc_log_fn)(void *user_data, mc_log_level level, const char *message)
+LOG_FN = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.c_int, ctypes.c_char_p)
+
 #: name -> (restype, argtypes); one line per function of mortarcontact.h, in header order.
 PROTOTYPES = {
     "mc_create": (_i, [ctypes.POINTER(ctypes.c_void_p)]),
@@ -92,9 +95,11 @@ PROTOTYPES = {
     "mc_set_body_force": (_i, [_p, _i, _d, _d]),
     "mc_clear_loads": (_i, [_p, _i]),
     "mc_set_contact": (_i, [_p, _i, _i32, _pi32]),
+    "mc_set_gap_offset": (_i, [_p, _i32, _pi32, _pd]),
     "mc_set_option_int": (_i, [_p, _i, _i64]),
     "mc_set_option_real": (_i, [_p, _i, _d]),
     "mc_solve": (_i, [_p]),
+    "mc_set_log_callback": (_i, [_p, LOG_FN, _p]),
     "mc_get_info_int": (_i, [_p, _i, _pi64]),
     "mc_get_info_real": (_i, [_p, _i, _pd]),
     "mc_get_displacement": (_i, [_p, _i, _pd]),
@@ -107,6 +112,7 @@ PROTOTYPES = {
     "mc_get_contact_gap": (_i, [_p, _pd]),
     "mc_get_contact_initial_gap": (_i, [_p, _pd]),
     "mc_get_contact_normal": (_i, [_p, _pd]),
+    "mc_write_vtu": (_i, [_p, _s]),
 }
 
 

@@ -58,6 +58,10 @@ MC_ORDERING_METIS = 2
 MC_Q1_FULL = 0
 MC_Q1_BBAR = 1
 
+# Levels of the log callback's messages (mc_log_level).
+MC_LOG_PHASE = 1
+MC_LOG_ITERATION = 2
+
 # Infos (mc_get_info_int / mc_get_info_real).
 MC_INFO_DOFS = 1
 MC_INFO_FACTOR_NNZ = 2

@@ -1,6 +1,7 @@
 """The :class:`Model` class: one contact scene, a thin wrapper of ``mc_model``."""
 
 import ctypes
+import os
 
 import numpy as np
 
@@ -142,6 +143,8 @@ class Model:
         if status != MC_OK:
             raise MortarContactError(status, "mc_create failed")
         self._handle = handle
+        self._log_callback = None
+        self._log_error = None
         self._n_nodes = {}
         self._n_cells = {}
         if index_base != 0:
@@ -290,6 +293,13 @@ class Model:
         edges = _ids(edges, (None, 2), "edges")
         self._check(self._lib.mc_set_contact(self._h(), int(body), edges.shape[0], _ip(edges)))
 
+    def set_gap_offset(self, nodes, offset):
+        """Adds ``offset`` (a length; > 0 clearance, < 0 interference) to the initial gap of the
+        body-1 contact ``nodes``: (n,) or a scalar for all nodes. Replaces earlier offsets."""
+        nodes = _ids(nodes, (None,), "nodes")
+        off = _reals_rows(offset, nodes.shape[0], None, "offset")
+        self._check(self._lib.mc_set_gap_offset(self._h(), nodes.shape[0], _ip(nodes), _dp(off)))
+
     # ---- options and solving ---------------------------------------------------------
 
     def set_option_int(self, option, value):
@@ -309,7 +319,37 @@ class Model:
 
     def solve(self):
         """Solves the scene (``mc_solve``)."""
-        self._check(self._lib.mc_solve(self._h()))
+        self._log_error = None
+        status = self._lib.mc_solve(self._h())
+        error, self._log_error = self._log_error, None
+        self._check(status)
+        if error is not None:
+            raise error
+
+    def set_log_callback(self, fn):
+        """Installs ``fn(level, message)`` (level ``MC_LOG_PHASE`` or ``MC_LOG_ITERATION``,
+        message a one-line str) to receive the progress of :meth:`solve`; ``None`` removes it.
+        An exception raised by ``fn`` cannot cross the C library: the first one is kept, the
+        callback is not called again during that solve, and :meth:`solve` re-raises it after
+        the solve returns."""
+        if fn is None:
+            self._check(self._lib.mc_set_log_callback(self._h(), _library.LOG_FN(), None))
+            self._log_callback = None
+            return
+        if not callable(fn):
+            raise ArgumentError("the log callback must be callable or None, got %r" % (fn,))
+
+        def relay(_user_data, level, message):
+            if self._log_error is not None:
+                return
+            try:
+                fn(int(level), message.decode(errors="replace"))
+            except BaseException as exc:  # noqa: B902 - must not unwind into C
+                self._log_error = exc
+
+        c_fn = _library.LOG_FN(relay)
+        self._check(self._lib.mc_set_log_callback(self._h(), c_fn, None))
+        self._log_callback = c_fn  # the C library holds only a pointer: keep the thunk alive
 
     # ---- results ---------------------------------------------------------------------
 
@@ -388,3 +428,14 @@ class Model:
     def get_contact_normal(self):
         """Unit outward normals of body 1 at the contact nodes: (m, 2)."""
         return self._contact(self._lib.mc_get_contact_normal, 2)
+
+    # ---- output --------------------------------------------------------------------------
+
+    def write_vtu(self, path):
+        """Writes the solved scene for ParaView: ``path`` ending in ``.pvd`` gives a collection
+        plus ``<stem>_body1.vtu`` and ``<stem>_body2.vtu``; any other path one .vtu with both
+        bodies. ``path`` is a str or os.PathLike (encoded with the file-system encoding)."""
+        encoded = os.fsencode(path)
+        if b"\0" in encoded:
+            raise ArgumentError("path contains a NUL character")
+        self._check(self._lib.mc_write_vtu(self._h(), encoded))

@@ -3,6 +3,7 @@ model's life cycle. None of them needs a working contact solve."""
 import gc
 import os
 import re
+import tempfile
 import unittest
 
 import numpy as np
@@ -164,6 +165,62 @@ class TestModel(unittest.TestCase):
             self.assertEqual(s.shape, (2, 4))
             self.assertGreater(m.get_info(mc.MC_INFO_DOFS), 0)
             self.assertGreater(m.get_info(mc.MC_INFO_STRAIN_ENERGY), 0.0)
+
+    @staticmethod
+    def pulled_square(m):
+        """The unit square of test_single_body_solve_one_based, 0-based ids."""
+        m.set_mesh(1, SQUARE_XY, SQUARE_TRI)
+        m.set_material(1, 1.0, 0.3)
+        m.fix(1, [0, 1], mc.MC_XY)
+        m.add_traction(1, [[2, 3]], (0.0, 1e-3))
+
+    def test_log_callback(self):
+        """Phase messages reach a Python callable; no iterations without contact; None removes it;
+        an exception in the callable is re-raised by solve() and the model stays usable."""
+        with mc.Model() as m:
+            self.pulled_square(m)
+            messages = []
+            m.set_log_callback(lambda level, text: messages.append((level, text)))
+            gc.collect()  # the binding keeps the C thunk alive, not the caller
+            m.solve()
+            levels = {level for level, _ in messages}
+            self.assertEqual(levels, {mc.MC_LOG_PHASE})
+            text = "\n".join(t for _, t in messages)
+            for phase in ("assembly: body 1", "analysis: body 1", "factorization: body 1", "recovery:", "solve: done"):
+                self.assertIn(phase, text)
+            self.assertTrue(all(isinstance(t, str) and "\n" not in t for _, t in messages))
+            count = len(messages)
+            m.set_log_callback(None)
+            m.solve()
+            self.assertEqual(len(messages), count)
+
+            def broken(level, text):
+                raise RuntimeError("log failed")
+            m.set_log_callback(broken)
+            with self.assertRaises(RuntimeError):
+                m.solve()
+            m.set_log_callback(None)
+            m.solve()  # usable, and the solve itself had succeeded
+            self.assertGreater(m.get_info(mc.MC_INFO_STRAIN_ENERGY), 0.0)
+            with self.assertRaises(mc.ArgumentError):
+                m.set_log_callback(42)
+
+    def test_write_vtu(self):
+        with mc.Model() as m, tempfile.TemporaryDirectory() as tmp:
+            self.pulled_square(m)
+            path = os.path.join(tmp, "square.vtu")
+            with self.assertRaises(mc.MortarContactError) as cm:
+                m.write_vtu(path)  # before a solve
+            self.assertEqual(cm.exception.status, mc.MC_ERROR_STATE)
+            m.solve()
+            m.write_vtu(path)
+            with open(path) as f:
+                text = f.read()
+            self.assertIn('NumberOfPoints="4" NumberOfCells="2"', text)
+            with self.assertRaises(mc.MortarContactError) as cm:
+                m.write_vtu(os.path.join(tmp, "missing", "square.vtu"))
+            self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
+            self.assertIn("missing", cm.exception.message)
 
 
 if __name__ == "__main__":

@@ -60,6 +60,37 @@ class TestPatch(unittest.TestCase):
             np.testing.assert_allclose(m.get_displacement(1), 2 * u, rtol=0, atol=1e-9 * np.abs(u).max())
 
 
+    def test_gap_offset_shifts_the_floating_block(self):
+        """Body 1 floats vertically, held by contact: a uniform clearance c lowers it rigidly by
+        c more, with the same stresses and pressure; the initial gap reports the offset."""
+        c = 2e-3
+        with mc.Model() as m:
+            xy1, xy2 = patch_scene.build(m)
+            m.solve()
+            nodes = m.get_contact_nodes()
+            m.set_gap_offset(nodes, c)
+            m.solve()
+            self.assertEqual(m.get_info_int(mc.MC_INFO_FACTORIZATIONS), 0)
+            u1, u2 = patch_scene.exact(xy1, xy2)
+            scale = max(np.abs(u1).max(), np.abs(u2).max())
+            np.testing.assert_allclose(m.get_displacement(1), u1 - [0.0, c], rtol=0, atol=1e-9 * scale)
+            np.testing.assert_allclose(m.get_displacement(2), u2, rtol=0, atol=1e-9 * scale)
+            np.testing.assert_allclose(m.get_contact_pressure(), patch_scene.PRESSURE, rtol=1e-8)
+            np.testing.assert_allclose(m.get_contact_initial_gap(), c, atol=1e-14)
+            with self.assertRaises(mc.MortarContactError) as cm:
+                m.set_gap_offset([1], [c])  # node (0, 1) of body 1: on its left side, not its bottom
+            self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
+
+    def test_log_reports_iterations(self):
+        with mc.Model() as m:
+            patch_scene.build(m)
+            iterations = []
+            m.set_log_callback(lambda level, text: iterations.append(text) if level == mc.MC_LOG_ITERATION else None)
+            m.solve()
+            self.assertEqual(len(iterations), m.get_info_int(mc.MC_INFO_ITERATIONS))
+            self.assertTrue(all(t.startswith("active-set iteration %d:" % (k + 1)) for k, t in enumerate(iterations)))
+
+
 class TestHertz(unittest.TestCase):
     def test_hertz(self):
         h = float(os.environ.get("MC_HERTZ_H", "0.008"))

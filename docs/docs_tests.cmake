@@ -1,0 +1,74 @@
+# Tests that keep the user documentation honest, included from examples/CMakeLists.txt (which
+# builds the C tutorial and registers tutorial_c) when MC_BUILD_TESTS is on. Label "docs".
+#   tutorial_python      examples/python/tutorial_hertz.py runs and passes its checks
+#   docs_tutorial_sync   the code blocks of docs/tutorial_{c,python}.md are verbatim excerpts of
+#                        the two programs, and their "Step N" headings match the programs' steps
+#   docs_api             docs/api.md declares every header function exactly as the header does;
+#                        its example program compiles and runs
+#   docs_theory_names    the lib/ functions and files docs/theory.md names exist
+#   docs_links           relative links between the docs resolve
+set(_mc_docs ${PROJECT_SOURCE_DIR}/docs)
+set(_mc_check_docs ${PROJECT_SOURCE_DIR}/tools/check_docs.py)
+
+# A Python 3 with numpy for the Python tutorial, found as bindings/CMakeLists.txt finds it
+# (/usr/bin/python3 first: a python3 earlier on PATH may lack numpy); the same cache variable.
+if(NOT MC_PYTHON)
+  find_program(_mc_path_python3 NAMES python3)
+  foreach(_py /usr/bin/python3 ${_mc_path_python3})
+    if(EXISTS ${_py})
+      execute_process(COMMAND ${_py} -c "import numpy, ctypes" RESULT_VARIABLE _rc OUTPUT_QUIET ERROR_QUIET)
+      if(_rc EQUAL 0)
+        set(MC_PYTHON ${_py} CACHE FILEPATH "Python 3 interpreter with numpy for the bindings' tests")
+        break()
+      endif()
+    endif()
+  endforeach()
+endif()
+if(MC_PYTHON)
+  set(_mc_tutorial_env "MORTARCONTACT_LIBRARY=$<TARGET_FILE:mortarcontact>"
+      "PYTHONPATH=${PROJECT_SOURCE_DIR}/bindings/python" "PYTHONDONTWRITEBYTECODE=1")
+  if(MC_SANITIZE)  # the library then needs the ASan runtime loaded first into the host process
+    execute_process(COMMAND ${CMAKE_C_COMPILER} -print-file-name=libasan.so OUTPUT_VARIABLE _mc_asan
+                    OUTPUT_STRIP_TRAILING_WHITESPACE)
+    list(APPEND _mc_tutorial_env "LD_PRELOAD=${_mc_asan}" "ASAN_OPTIONS=detect_leaks=0")
+  endif()
+  add_test(NAME tutorial_python
+    COMMAND ${MC_PYTHON} ${PROJECT_SOURCE_DIR}/examples/python/tutorial_hertz.py 0.01
+            ${CMAKE_CURRENT_BINARY_DIR}/tutorial_hertz_python.pvd)
+  set_tests_properties(tutorial_python PROPERTIES ENVIRONMENT "${_mc_tutorial_env}"
+    LABELS "docs;python;contact" TIMEOUT 600)
+else()
+  message(WARNING "docs: no Python 3 with numpy (Debian: python3-numpy): tutorial_python will fail")
+  add_test(NAME tutorial_python COMMAND ${CMAKE_COMMAND} -E echo "a Python 3 with numpy was not found")
+  set_tests_properties(tutorial_python PROPERTIES WILL_FAIL ON LABELS "docs;python")
+endif()
+
+# The checks need only a plain Python 3.
+find_program(MC_DOCS_PYTHON NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
+if(NOT MC_DOCS_PYTHON)
+  find_program(MC_DOCS_PYTHON NAMES python3)
+endif()
+if(MC_DOCS_PYTHON)
+  add_test(NAME docs_tutorial_sync
+    COMMAND ${MC_DOCS_PYTHON} ${_mc_check_docs} sync
+            ${_mc_docs}/tutorial_c.md ${PROJECT_SOURCE_DIR}/examples/tutorial_hertz.c
+            ${_mc_docs}/tutorial_python.md ${PROJECT_SOURCE_DIR}/examples/python/tutorial_hertz.py)
+  set(_mc_docs_cflags -std=c99 -Wall -Wextra -Werror -I${PROJECT_SOURCE_DIR}/include)
+  if(MC_SANITIZE)
+    list(APPEND _mc_docs_cflags -fsanitize=address,undefined)
+  endif()
+  add_test(NAME docs_api
+    COMMAND ${MC_DOCS_PYTHON} ${_mc_check_docs} api ${PROJECT_SOURCE_DIR}/include/mortarcontact.h
+            ${_mc_docs}/api.md ${CMAKE_CURRENT_BINARY_DIR}/docs_api ${CMAKE_C_COMPILER} ${_mc_docs_cflags}
+            -- $<TARGET_FILE:mortarcontact> -Wl,-rpath,$<TARGET_FILE_DIR:mortarcontact>)
+  add_test(NAME docs_theory_names
+    COMMAND ${MC_DOCS_PYTHON} ${_mc_check_docs} names ${_mc_docs}/theory.md ${PROJECT_SOURCE_DIR}/lib)
+  add_test(NAME docs_links
+    COMMAND ${MC_DOCS_PYTHON} ${_mc_check_docs} links ${_mc_docs}/README.md ${_mc_docs}/theory.md
+            ${_mc_docs}/api.md ${_mc_docs}/tutorial_c.md ${_mc_docs}/tutorial_python.md)
+  set_tests_properties(docs_tutorial_sync docs_api docs_theory_names docs_links PROPERTIES LABELS "docs")
+else()
+  message(WARNING "docs: python3 not found: the docs_* tests will fail")
+  add_test(NAME docs_tutorial_sync COMMAND ${CMAKE_COMMAND} -E echo "python3 not found")
+  set_tests_properties(docs_tutorial_sync PROPERTIES WILL_FAIL ON LABELS "docs")
+endif()

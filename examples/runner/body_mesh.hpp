@@ -1,0 +1,55 @@
+// body_mesh.hpp - one body's mesh taken out of a Gmsh file, in the form mc_set_mesh wants:
+// nodes renumbered compactly (in file order), cells counter-clockwise, and the physical groups
+// turned into node lists (supports, nodal forces) or boundary edges oriented as their cell, the
+// body on the left (loads, contact surfaces).
+#ifndef MC_RUNNER_BODY_MESH_HPP
+#define MC_RUNNER_BODY_MESH_HPP
+
+#include "gmsh_reader.hpp"
+
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace mcrun {
+
+struct BodyMesh {
+  const GmshMesh *file = nullptr;
+  int body = 0;                 // 1 or 2, for messages
+  int nodes_per_cell = 0;       // 3 triangles, 4 quadrilaterals
+  std::vector<double> xy;       // 2 per node
+  std::vector<int> cells;       // nodes_per_cell per cell, counter-clockwise, 0-based ids
+  std::vector<long> cell_tags;  // file element tag of each cell
+  std::vector<long> node_tags;  // file node tag of each node
+  std::vector<int> compact;     // file node index -> node id, -1 when not a node of this body
+
+  int n_nodes() const { return int(node_tags.size()); }
+  int n_cells() const { return int(cell_tags.size()); }
+
+  // Boundary edges: key of the unordered node pair -> the pair in its cell's order.
+  struct DirectedEdge {
+    int from, to, cells;
+  };
+  std::unordered_map<uint64_t, DirectedEdge> edges;
+};
+
+// The body made of the 2D elements of physical surface group `domain` ("" = every 2D element
+// of the file). Throws MeshError naming the file, element and line of what is wrong: no cells,
+// triangles mixed with quadrilaterals, a degenerate cell.
+BodyMesh extract_body(const GmshMesh &file, const std::string &domain, int body);
+
+// The body's nodes on elements of the physical group(s) called `name`, of any dimension,
+// increasing ids. Nodes of the group on other bodies are left out; throws MeshError if the
+// group does not exist or has no node on this body.
+std::vector<int> group_nodes(const BodyMesh &mesh, const std::string &name);
+
+// The body's boundary edges in the line group `name` (2 node ids each), each oriented as the
+// cell it bounds (the body on its left). Lines with no node on this body are left out (they
+// belong to the other body); throws MeshError if the group does not exist, is not a line
+// group, has no line on this body, or has a line that is not a boundary edge of its cells.
+std::vector<int> group_edges(const BodyMesh &mesh, const std::string &name);
+
+}  // namespace mcrun
+
+#endif

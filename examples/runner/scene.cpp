@@ -1,0 +1,353 @@
+// scene.cpp - parse and validate a scene file (docs/scene_format.md) with nlohmann::json.
+//
+// Strictness is the point: a typo in a key must not silently fall back to a default, so every
+// object is checked against the keys it may hold, duplicated keys are refused (JSON parsers
+// otherwise keep the last one), and every value is checked for type and range.
+#include "scene.hpp"
+
+#include "mortarcontact.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <utility>
+
+namespace mcrun {
+
+namespace {
+
+using json = nlohmann::json;
+
+// Edit distance, to suggest the key a typo meant.
+size_t edit_distance(const std::string &a, const std::string &b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// A JSON value together with its key path ("bodies[0].material.nu") for messages.
+class Value {
+ public:
+  Value(const json &j, std::string key, const std::string &file) : j_(j), key_(std::move(key)), file_(file) {}
+
+  [[noreturn]] void fail(const std::string &message) const {
+    throw SceneError(file_ + ": " + (key_.empty() ? "top level" : key_) + ": " + message);
+  }
+
+  const std::string &key() const { return key_; }
+
+  // An object whose keys are all among `allowed`.
+  void expect_object(std::initializer_list<const char *> allowed) const {
+    if (!j_.is_object()) fail("must be an object {...}, got " + describe());
+    for (auto it = j_.begin(); it != j_.end(); ++it) {
+      bool known = false;
+      std::string best;
+      size_t best_distance = 3;  // suggest only close matches
+      for (const char *a : allowed) {
+        if (it.key() == a) known = true;
+        size_t d = edit_distance(it.key(), a);
+        if (d < best_distance) best_distance = d, best = a;
+      }
+      if (known) continue;
+      std::string list;
+      for (const char *a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
+      child(it.key()).fail("unknown key" + (best.empty() ? std::string() : " (did you mean '" + best + "'?)") +
+                           "; allowed here: " + list);
+    }
+  }
+
+  bool has(const char *name) const { return j_.contains(name); }
+
+  Value at(const char *name) const {
+    if (!has(name)) child(name).fail("missing (required)");
+    return child(name);
+  }
+
+  Value child(const std::string &name) const {
+    static const json null_value;
+    auto it = j_.find(name);
+    return Value(it == j_.end() ? null_value : *it, key_.empty() ? name : key_ + "." + name, file_);
+  }
+
+  std::vector<Value> items() const {
+    if (!j_.is_array()) fail("must be an array [...], got " + describe());
+    std::vector<Value> values;
+    for (size_t i = 0; i < j_.size(); ++i) values.emplace_back(j_[i], key_ + "[" + std::to_string(i) + "]", file_);
+    return values;
+  }
+
+  double number() const {
+    if (!j_.is_number()) fail("must be a number, got " + describe());
+    double v = j_.get<double>();
+    if (!std::isfinite(v)) fail("must be finite");
+    return v;
+  }
+
+  double positive() const {
+    double v = number();
+    if (!(v > 0)) fail("must be > 0, got " + j_.dump());
+    return v;
+  }
+
+  int positive_integer() const {
+    if (!j_.is_number_integer() || j_.get<long long>() < 1 || j_.get<long long>() > 1000000000)
+      fail("must be an integer >= 1, got " + describe());
+    return int(j_.get<long long>());
+  }
+
+  std::string string() const {
+    if (!j_.is_string()) fail("must be a string, got " + describe());
+    std::string s = j_.get<std::string>();
+    if (s.empty()) fail("must not be empty");
+    return s;
+  }
+
+  // One of the named choices; returns its value.
+  int choice(std::initializer_list<std::pair<const char *, int>> choices) const {
+    std::string s = string(), list;
+    for (const auto &c : choices) {
+      if (s == c.first) return c.second;
+      list += std::string(list.empty() ? "\"" : ", \"") + c.first + "\"";
+    }
+    fail("\"" + s + "\" is not one of " + list);
+  }
+
+  void pair(double out[2]) const {
+    if (!j_.is_array() || j_.size() != 2) fail("must be an array of two numbers [x, y], got " + describe());
+    std::vector<Value> v = items();
+    out[0] = v[0].number();
+    out[1] = v[1].number();
+  }
+
+  std::string describe() const {
+    std::string text = j_.dump();
+    if (text.size() > 40) text = text.substr(0, 37) + "...";
+    return std::string(j_.type_name()) + " " + text;
+  }
+
+ private:
+  const json &j_;
+  std::string key_;
+  const std::string &file_;
+};
+
+// Refuses duplicated keys during parsing (nlohmann keeps the last one silently), naming the
+// key path. A frame per open object or array tracks the keys seen and the element index.
+class DuplicateKeyCheck {
+ public:
+  explicit DuplicateKeyCheck(const std::string &file) : file_(file) {}
+
+  bool operator()(int, json::parse_event_t event, json &parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start: frames_.push_back({false, 0, "", {}}); break;
+      case json::parse_event_t::array_start: frames_.push_back({true, 0, "", {}}); break;
+      case json::parse_event_t::key: {
+        Frame &f = frames_.back();
+        f.key = parsed.get<std::string>();
+        if (!f.seen.insert(f.key).second) throw SceneError(file_ + ": " + path() + ": duplicated key");
+        break;
+      }
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        frames_.pop_back();
+        element_done();
+        break;
+      case json::parse_event_t::value: element_done(); break;
+    }
+    return true;
+  }
+
+ private:
+  struct Frame {
+    bool array;
+    size_t index;
+    std::string key;
+    std::set<std::string> seen;
+  };
+
+  void element_done() {
+    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+  }
+
+  std::string path() const {
+    std::string p;
+    for (const Frame &f : frames_)
+      p += f.array ? "[" + std::to_string(f.index) + "]" : (p.empty() ? "" : ".") + f.key;
+    return p;
+  }
+
+  const std::string &file_;
+  std::vector<Frame> frames_;
+};
+
+json parse_json(const std::string &text, const std::string &path) {
+  try {
+    return json::parse(text, DuplicateKeyCheck(path));
+  } catch (const json::parse_error &e) {
+    std::string what = e.what();
+    size_t bracket = what.find("] ");  // drop nlohmann's "[json.exception.parse_error.101] "
+    throw SceneError(path + ": invalid JSON: " + (bracket == std::string::npos ? what : what.substr(bracket + 2)));
+  }
+}
+
+std::string resolve(const std::string &base_dir, const std::string &relative) {
+  std::filesystem::path p(relative);
+  return p.is_absolute() ? relative : (std::filesystem::path(base_dir) / p).string();
+}
+
+Support parse_support(const Value &v) {
+  v.expect_object({"group", "components", "value"});
+  Support s{v.key(), v.at("group").string(), 0, {0, 0}};
+  s.components = v.at("components").choice({{"x", MC_X}, {"y", MC_Y}, {"both", MC_XY}});
+  if (v.has("value")) {
+    if (s.components == MC_XY) {
+      v.child("value").pair(s.value);
+    } else {
+      const double u = v.child("value").number();  // one component: one number
+      s.value[s.components == MC_X ? 0 : 1] = u;
+    }
+  }
+  return s;
+}
+
+Load parse_load(const Value &v) {
+  v.expect_object({"type", "group", "value"});
+  const LoadType type = LoadType(v.at("type").choice({{"pressure", int(LoadType::Pressure)},
+                                                     {"traction", int(LoadType::Traction)},
+                                                     {"body_force", int(LoadType::BodyForce)},
+                                                     {"nodal_force", int(LoadType::NodalForce)}}));
+  Load load{v.key(), type, "", {0, 0}};
+  if (type == LoadType::BodyForce) {
+    if (v.has("group")) v.child("group").fail("a body force acts on the whole body: no group");
+  } else {
+    load.group = v.at("group").string();
+  }
+  if (type == LoadType::Pressure)
+    load.value[0] = v.at("value").number();
+  else
+    v.at("value").pair(load.value);
+  return load;
+}
+
+Body parse_body(const Value &v, int index, const std::string &base_dir) {
+  v.expect_object({"mesh", "domain", "material", "supports", "loads", "contact", "gap_offset"});
+  Body b;
+  b.key = v.key();
+  b.mesh = v.at("mesh").string();
+  b.mesh_path = resolve(base_dir, b.mesh);
+  if (v.has("domain")) b.domain = v.child("domain").string();
+  Value material = v.at("material");
+  material.expect_object({"E", "nu"});
+  b.young = material.at("E").positive();
+  b.poisson = material.at("nu").number();
+  if (!(b.poisson > -1 && b.poisson < 0.5))
+    material.child("nu").fail("must be in (-1, 0.5), got " + std::to_string(b.poisson));
+  if (v.has("supports"))
+    for (const Value &s : v.child("supports").items()) b.supports.push_back(parse_support(s));
+  if (v.has("loads"))
+    for (const Value &l : v.child("loads").items()) b.loads.push_back(parse_load(l));
+  b.contact = v.at("contact").string();
+  if (v.has("gap_offset")) {
+    if (index != 0) v.child("gap_offset").fail("only body 1 (the non-mortar side, bodies[0]) takes a gap offset");
+    b.has_gap_offset = true;
+    b.gap_offset = v.child("gap_offset").number();
+  }
+  return b;
+}
+
+Solver parse_solver(const Value &v) {
+  // Defaults: the library's (mortarcontact.h).
+  Solver s{MC_METHOD_MORTAR, 1e-10, 200, MC_NORMAL_NONMORTAR, MC_Q1_FULL, MC_ORDERING_AUTO};
+  if (!v.has("solver")) return s;
+  Value o = v.child("solver");
+  o.expect_object({"method", "tolerance", "max_iterations", "contact_normal", "q1_integration", "ordering"});
+  if (o.has("method"))
+    s.method = o.child("method").choice({{"mortar", MC_METHOD_MORTAR},
+                                         {"dual_mortar", MC_METHOD_DUAL_MORTAR},
+                                         {"node_to_segment", MC_METHOD_NODE_TO_SEGMENT}});
+  if (o.has("tolerance")) s.tolerance = o.child("tolerance").positive();
+  if (o.has("max_iterations")) s.max_iterations = o.child("max_iterations").positive_integer();
+  if (o.has("contact_normal"))
+    s.contact_normal = o.child("contact_normal").choice({{"nonmortar", MC_NORMAL_NONMORTAR}, {"mortar", MC_NORMAL_MORTAR}});
+  if (o.has("q1_integration"))
+    s.q1_integration = o.child("q1_integration").choice({{"full", MC_Q1_FULL}, {"bbar", MC_Q1_BBAR}});
+  if (o.has("ordering"))
+    s.ordering = o.child("ordering").choice({{"auto", MC_ORDERING_AUTO}, {"amd", MC_ORDERING_AMD}, {"metis", MC_ORDERING_METIS}});
+  return s;
+}
+
+Output parse_output(const Value &v, const std::string &base_dir) {
+  Output out;
+  if (!v.has("output")) return out;
+  Value o = v.child("output");
+  o.expect_object({"vtu", "pressure_csv"});
+  if (o.has("vtu")) out.vtu = resolve(base_dir, o.child("vtu").string());
+  if (o.has("pressure_csv")) out.pressure_csv = resolve(base_dir, o.child("pressure_csv").string());
+  return out;
+}
+
+HertzCheck parse_analytic(const Value &v) {
+  HertzCheck h;
+  if (!v.has("analytic")) return h;
+  Value a = v.child("analytic");
+  a.expect_object({"type", "radius", "load"});
+  a.at("type").choice({{"hertz", 1}});
+  h.enabled = true;
+  h.radius = a.at("radius").positive();
+  h.load = a.at("load").positive();
+  return h;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string &text, const std::string &path) {
+  const json root = parse_json(text, path);
+  const Value v(root, "", path);
+  v.expect_object({"description", "plane", "thickness", "bodies", "solver", "output", "analytic"});
+  const std::string base_dir = std::filesystem::path(path).parent_path().string();
+  Scene s;
+  s.path = path;
+  if (v.has("description")) s.description = v.child("description").string();
+  s.plane = v.has("plane") ? v.child("plane").choice({{"strain", MC_PLANE_STRAIN}, {"stress", MC_PLANE_STRESS}})
+                           : MC_PLANE_STRAIN;
+  s.thickness = v.has("thickness") ? v.child("thickness").positive() : 1.0;
+  std::vector<Value> bodies = v.at("bodies").items();
+  if (bodies.size() != 2)
+    v.child("bodies").fail("must list exactly two bodies (body 1, the non-mortar side, first), got " +
+                           std::to_string(bodies.size()));
+  for (int b = 0; b < 2; ++b) s.bodies[b] = parse_body(bodies[size_t(b)], b, base_dir);
+  // Two bodies from one file need their surface groups, or each would take every cell.
+  if (std::filesystem::path(s.bodies[0].mesh_path).lexically_normal() ==
+          std::filesystem::path(s.bodies[1].mesh_path).lexically_normal() &&
+      (s.bodies[0].domain.empty() || s.bodies[1].domain.empty()))
+    v.child(s.bodies[0].domain.empty() ? "bodies[0].domain" : "bodies[1].domain")
+        .fail("missing: both bodies use the mesh " + s.bodies[0].mesh +
+              ", so each must name its physical surface group");
+  s.solver = parse_solver(v);
+  s.output = parse_output(v, base_dir);
+  s.hertz = parse_analytic(v);
+  return s;
+}
+
+Scene load_scene(const std::string &path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(path + ": cannot open the scene file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_scene(text.str(), path);
+}
+
+}  // namespace mcrun

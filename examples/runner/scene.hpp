@@ -1,0 +1,85 @@
+// scene.hpp - the scene file of mortarcontact-run (docs/scene_format.md): JSON parsed and
+// validated into plain structs. Every mistake (bad JSON, unknown or duplicated key, missing key,
+// wrong type, value out of range) is a SceneError whose message names the file and the key,
+// e.g. "hertz.json: bodies[0].material.nu: must be in (-1, 0.5), got 0.6".
+#ifndef MC_RUNNER_SCENE_HPP
+#define MC_RUNNER_SCENE_HPP
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace mcrun {
+
+struct SceneError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Support {
+  std::string key;    // "bodies[0].supports[1]", for messages
+  std::string group;  // physical group (points, lines or a surface)
+  int components;     // MC_X, MC_Y or MC_XY
+  double value[2];    // prescribed displacement (x, y); only the components fixed matter
+};
+
+enum class LoadType { Pressure, Traction, BodyForce, NodalForce };
+
+struct Load {
+  std::string key;
+  LoadType type;
+  std::string group;  // empty for a body force
+  double value[2];    // pressure: value[0]; the others: (x, y)
+};
+
+struct Body {
+  std::string key;           // "bodies[0]"
+  std::string mesh;          // path as written in the scene file
+  std::string mesh_path;     // resolved against the scene file's directory
+  std::string domain;        // physical surface group, "" = every 2D cell of the file
+  double young, poisson;
+  std::vector<Support> supports;
+  std::vector<Load> loads;
+  std::string contact;       // line group of the candidate contact surface
+  bool has_gap_offset = false;
+  double gap_offset = 0;     // body 1 only: clearance (> 0) or interference (< 0) on every contact node
+};
+
+struct Solver {
+  int method;          // MC_METHOD_*
+  double tolerance;
+  int max_iterations;
+  int contact_normal;  // MC_NORMAL_*
+  int q1_integration;  // MC_Q1_*
+  int ordering;        // MC_ORDERING_*
+};
+
+struct Output {
+  std::string vtu;           // resolved path, "" = none (.vtu: one file; .pvd: collection + one per body)
+  std::string pressure_csv;  // resolved path, "" = none
+};
+
+struct HertzCheck {
+  bool enabled = false;
+  double radius = 0;  // of the curved body
+  double load = 0;    // total force per unit thickness pressing the bodies together
+};
+
+struct Scene {
+  std::string path;  // the scene file, for messages
+  std::string description;
+  int plane;         // MC_PLANE_STRAIN or MC_PLANE_STRESS
+  double thickness;
+  Body bodies[2];    // bodies[0] = body 1, the non-mortar side
+  Solver solver;
+  Output output;
+  HertzCheck hertz;
+};
+
+// Reads and validates a scene file; relative paths inside are taken from the file's directory.
+Scene load_scene(const std::string &path);
+// The same from JSON text; `path` names the file in messages and gives the base directory.
+Scene parse_scene(const std::string &text, const std::string &path);
+
+}  // namespace mcrun
+
+#endif

@@ -1,0 +1,404 @@
+// test_runner_units.cpp - unit tests of mortarcontact-run's parts (Check):
+// - the Gmsh reader on the hand-written tiny_v22.msh / tiny_v41.msh (the same mesh in both
+//   formats, with sparse node tags, a clockwise triangle and quadrilateral, a reversed line and
+//   lines in two groups) and on malformed texts: each error names the file and the line;
+// - body extraction: compact numbering, counter-clockwise cells, boundary edges oriented with
+//   the body on their left, groups split between the two bodies;
+// - scene validation: unknown, duplicated and missing keys, wrong types and ranges, each
+//   message naming the key;
+// - the runner end to end on the tiny meshes: the contact patch test (a uniform pressure
+//   reaches the non-matching contact surface exactly) in both formats, identical results; an
+//   interference fit (prescribed displacement + gap offset) with its exact pressure.
+//
+// usage: test_runner_units DATA_DIR RUNNER   (DATA_DIR: a copy of examples/runner/tests/data)
+#include "body_mesh.hpp"
+#include "gmsh_reader.hpp"
+#include "scene.hpp"
+
+#include "mortarcontact.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <check.h>  // last: it defines a macro fail() that clashes with std::ios::fail
+
+using namespace mcrun;
+
+namespace {
+
+std::string data_dir;
+std::string runner;
+
+GmshMesh tiny(const char *version) { return read_gmsh(data_dir + "/tiny_v" + version + ".msh"); }
+
+// The message of the exception `f` throws, "" if it throws none.
+template <class E>
+std::string error_of(const std::function<void()> &f) {
+  try {
+    f();
+  } catch (const E &e) {
+    return e.what();
+  }
+  return "";
+}
+
+#define ASSERT_HAS(text, piece) \
+  ck_assert_msg(std::string(text).find(piece) != std::string::npos, "'%s' does not contain '%s'", \
+                std::string(text).c_str(), std::string(piece).c_str())
+
+double twice_area(const BodyMesh &m, int c) {
+  double sum = 0;
+  const int n = m.nodes_per_cell;
+  for (int k = 0; k < n; ++k) {
+    int a = m.cells[size_t(c * n + k)], b = m.cells[size_t(c * n + (k + 1) % n)];
+    sum += m.xy[2 * size_t(a)] * m.xy[2 * size_t(b) + 1] - m.xy[2 * size_t(b)] * m.xy[2 * size_t(a) + 1];
+  }
+  return sum;
+}
+
+// ---- the reader ----------------------------------------------------------------------------
+
+START_TEST(both_formats_read_the_same_mesh) {
+  const GmshMesh v2 = tiny("22"), v4 = tiny("41");
+  ck_assert_str_eq(v2.version.c_str(), "2.2");
+  ck_assert_str_eq(v4.version.c_str(), "4.1");
+  ck_assert_int_eq(v2.node_tags.size(), 14);
+  ck_assert_msg(v2.node_tags == v4.node_tags, "node tags differ");
+  ck_assert_msg(v2.xy == v4.xy, "coordinates differ");
+  ck_assert_int_eq(v2.node_tags[6], 201);
+  ck_assert_double_eq(v2.xy[2 * 7], 0.3333333333333333);
+  // 2.2 writes the lines of two groups twice: merged, both formats have 20 elements
+  ck_assert_int_eq(v2.elements.size(), 20);
+  ck_assert_int_eq(v4.elements.size(), 20);
+  for (size_t e = 0; e < v2.elements.size(); ++e) {
+    ck_assert_int_eq(v2.elements[e].dim, v4.elements[e].dim);
+    ck_assert_msg(v2.elements[e].nodes == v4.elements[e].nodes, "element %zu nodes differ", e);
+    std::vector<int> p2 = v2.elements[e].physical_tags, p4 = v4.elements[e].physical_tags;
+    std::sort(p2.begin(), p2.end());
+    std::sort(p4.begin(), p4.end());
+    ck_assert_msg(p2 == p4, "element %zu groups differ", e);
+  }
+  ck_assert_int_eq(v2.groups.size(), 10);
+  ck_assert_int_eq(v4.groups_named("upper corner").size(), 1);  // a name with a space
+  ck_assert_int_eq(v4.groups_named("upper corner")[0]->dim, 0);
+  ck_assert_int_eq(v2.elements[1].physical_tags.size(), 2);  // upper_bottom and interface
+}
+END_TEST
+
+START_TEST(body_nodes_compact_cells_counter_clockwise) {
+  for (const char *version : {"22", "41"}) {
+    const GmshMesh file = tiny(version);
+    const BodyMesh upper = extract_body(file, "upper", 1), lower = extract_body(file, "lower", 2);
+    ck_assert_int_eq(upper.n_nodes(), 6);
+    ck_assert_int_eq(upper.n_cells(), 4);
+    ck_assert_int_eq(upper.nodes_per_cell, 3);
+    ck_assert_int_eq(lower.n_nodes(), 8);
+    ck_assert_int_eq(lower.n_cells(), 3);
+    ck_assert_int_eq(lower.nodes_per_cell, 4);
+    // file order kept: upper = 101..106 -> 0..5, lower = 201..208 -> 0..7
+    for (int i = 0; i < 6; ++i) ck_assert_int_eq(upper.node_tags[size_t(i)], 101 + i);
+    for (int i = 0; i < 8; ++i) ck_assert_int_eq(lower.node_tags[size_t(i)], 201 + i);
+    ck_assert_double_eq(lower.xy[2 * 5], std::strtod("0.3333333333333333", nullptr));  // as written
+    // every cell counter-clockwise, with its own area (1/4 per triangle, 1/3 per quad)
+    for (int c = 0; c < 4; ++c) ck_assert_double_eq_tol(twice_area(upper, c), 0.5, 1e-15);
+    for (int c = 0; c < 3; ++c) ck_assert_double_eq_tol(twice_area(lower, c), 2.0 / 3.0, 1e-15);
+    // the clockwise ones were reversed, the others kept as written
+    const std::vector<int> reversed_triangle(upper.cells.begin() + 9, upper.cells.begin() + 12);
+    const std::vector<int> kept_triangle(upper.cells.begin(), upper.cells.begin() + 3);
+    const std::vector<int> reversed_quad(lower.cells.begin() + 4, lower.cells.begin() + 8);
+    ck_assert_msg(reversed_triangle == std::vector<int>({1, 5, 4}), "clockwise triangle 102 105 106 not reversed");
+    ck_assert_msg(kept_triangle == std::vector<int>({0, 1, 4}), "triangle 101 102 105 changed");
+    ck_assert_msg(reversed_quad == std::vector<int>({1, 2, 6, 5}), "clockwise quad 202 206 207 203 not reversed");
+    // the library accepts both (it rejects clockwise cells)
+    mc_model *m = nullptr;
+    ck_assert_int_eq(mc_create(&m), MC_OK);
+    ck_assert_int_eq(mc_set_mesh(m, 1, upper.n_nodes(), upper.xy.data(), upper.n_cells(), 3, upper.cells.data()), MC_OK);
+    ck_assert_int_eq(mc_set_mesh(m, 2, lower.n_nodes(), lower.xy.data(), lower.n_cells(), 4, lower.cells.data()), MC_OK);
+    mc_destroy(m);
+  }
+}
+END_TEST
+
+START_TEST(group_edges_oriented_body_on_the_left) {
+  for (const char *version : {"22", "41"}) {
+    const GmshMesh file = tiny(version);
+    const BodyMesh upper = extract_body(file, "upper", 1), lower = extract_body(file, "lower", 2);
+    // top of the upper body: right to left (106->105 as written, 104->105 reversed)
+    ck_assert_msg(group_edges(upper, "upper_top") == std::vector<int>({5, 4, 4, 3}), "upper_top");
+    // 'interface' holds lines of both bodies: each body takes its own, oriented as its cells
+    ck_assert_msg(group_edges(upper, "interface") == std::vector<int>({0, 1, 1, 2}), "interface on upper");
+    ck_assert_msg(group_edges(lower, "interface") == std::vector<int>({7, 6, 6, 5, 5, 4}), "interface on lower");
+    ck_assert_msg(group_edges(lower, "lower_left") == std::vector<int>({4, 0}), "lower_left");
+    ck_assert_msg(group_nodes(upper, "upper corner") == std::vector<int>({0}), "point group");
+    ck_assert_msg(group_nodes(lower, "lower_top") == std::vector<int>({4, 5, 6, 7}), "line group nodes");
+    ASSERT_HAS(error_of<MeshError>([&] { group_nodes(lower, "upper corner"); }), "has no node on body 2");
+    ASSERT_HAS(error_of<MeshError>([&] { group_edges(lower, "upper_top"); }), "has no line on body 2");
+    const std::string missing = error_of<MeshError>([&] { group_edges(upper, "top"); });
+    ASSERT_HAS(missing, "no physical group named 'top'");
+    ASSERT_HAS(missing, "'upper_top' (dim 1)");
+    ASSERT_HAS(error_of<MeshError>([&] { group_edges(upper, "upper"); }), "has dimension 2, but edges need a line group");
+  }
+}
+END_TEST
+
+START_TEST(body_errors_name_element_and_line) {
+  const GmshMesh file = tiny("41");
+  // without a domain the file's triangles and quadrilaterals would make one body
+  const std::string mixed = error_of<MeshError>([&] { extract_body(file, "", 1); });
+  ASSERT_HAS(mixed, "tiny_v41.msh:");
+  ASSERT_HAS(mixed, "a body takes one cell type");
+  ASSERT_HAS(error_of<MeshError>([&] { extract_body(file, "upper_top", 1); }), "must be a surface group");
+  ASSERT_HAS(error_of<MeshError>([&] { extract_body(file, "uper", 1); }), "no physical group named 'uper'");
+
+  const std::string head = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 2 0 0\n4 0 1 0\n$EndNodes\n";
+  const GmshMesh flat = parse_gmsh(head + "$Elements\n2\n7 2 0 1 2 4\n8 2 0 1 2 3\n$EndElements\n", "flat.msh");
+  ASSERT_HAS(error_of<MeshError>([&] { extract_body(flat, "", 1); }), "flat.msh:14: element 8 is a degenerate cell");
+  // a line between two cells is no boundary: no load or contact on it
+  const GmshMesh inner = parse_gmsh(
+      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n1\n1 5 \"diagonal\"\n$EndPhysicalNames\n"
+      "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n$EndNodes\n"
+      "$Elements\n3\n1 2 0 1 2 3\n2 2 0 1 3 4\n3 1 2 5 1 1 3\n$EndElements\n",
+      "inner.msh");
+  const BodyMesh square = extract_body(inner, "", 1);
+  ASSERT_HAS(error_of<MeshError>([&] { group_edges(square, "diagonal"); }), "inner.msh:19: element 3");
+  ASSERT_HAS(error_of<MeshError>([&] { group_edges(square, "diagonal"); }), "need boundary edges");
+  ck_assert_msg(group_nodes(square, "diagonal") == std::vector<int>({0, 2}), "supports may use inner lines");
+}
+END_TEST
+
+// Each malformed text gives a MeshError starting "bad.msh:<line>: " and containing `piece`.
+void expect_mesh_error(const std::string &text, int line, const std::string &piece) {
+  const std::string message = error_of<MeshError>([&] { parse_gmsh(text, "bad.msh"); });
+  ASSERT_HAS(message, "bad.msh:" + std::to_string(line) + ": ");
+  ASSERT_HAS(message, piece);
+}
+
+START_TEST(malformed_files_name_file_and_line) {
+  const std::string format = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
+  const std::string nodes = "$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$EndNodes\n";  // lines 4-9
+  expect_mesh_error("", 1, "empty file");
+  expect_mesh_error("hello\n", 1, "not a Gmsh mesh file");
+  expect_mesh_error("$MeshFormat\n2.2 1 8\n$EndMeshFormat\n", 1, "binary .msh files are not supported");
+  expect_mesh_error("$MeshFormat\n4 0 8\n$EndMeshFormat\n", 2, "format version 4 is not supported");
+  expect_mesh_error(format + "$Nodes\n3\n1 0 0 0\n2 1 x 0\n", 7, "expected a finite number (a node's y), found 'x'");
+  expect_mesh_error(format + "$Nodes\n3\n1 0 0 0\n2 1 0 0\n", 8, "unexpected end of file");
+  expect_mesh_error(format + "$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$Elements\n", 9, "expected $EndNodes, found '$Elements'");
+  expect_mesh_error(format + "$Nodes\n2\n1 0 0 0\n2 1 0 0\n1 0 1 0\n$EndNodes\n", 8, "expected $EndNodes");
+  expect_mesh_error(format + "$Nodes\n2\n1 0 0 0\n1 1 0 0\n$EndNodes\n", 7, "node 1 is defined twice");
+  expect_mesh_error(format + "$Nodes\n2\n1 0 0 0\n2 1 0 0.5\n$EndNodes\n", 7, "plane z = 0");
+  expect_mesh_error(format + nodes + "$Elements\n1\n1 2 2 1 1 1 2 4\n$EndElements\n", 12,
+                    "element 1 refers to node 4, which $Nodes does not define");
+  expect_mesh_error(format + nodes + "$Elements\n1\n1 9 2 1 1 1 2 3 1 2 3\n$EndElements\n", 12,
+                    "6-node triangle, higher order) is not supported");
+  expect_mesh_error(format + nodes + "$Elements\n1\n1 4 2 1 1 1 2 3 1\n$EndElements\n", 12, "3D) is not supported");
+  expect_mesh_error(format + "$Elements\n0\n$EndElements\n", 4, "$Elements before $Nodes");
+  expect_mesh_error(format + nodes, 10, "no $Elements section");
+  expect_mesh_error(format + "$PhysicalNames\n1\n1 2 \"open\n$EndPhysicalNames\n", 6, "unterminated quoted name");
+  // 4.1: counts that do not add up, an unknown entity, an element of the wrong dimension
+  const std::string v4 = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 1 0\n1 0 0 0 1 1 0 1 7 0\n$EndEntities\n";
+  const std::string v4_nodes = "$Nodes\n1 3 1 3\n2 1 0 3\n1\n2\n3\n0 0 0\n1 0 0\n0 1 0\n$EndNodes\n";  // lines 8-17
+  expect_mesh_error(v4 + "$Nodes\n1 4 1 4\n2 1 0 3\n1\n2\n3\n0 0 0\n1 0 0\n0 1 0\n$EndNodes\n", 16,
+                    "$Nodes announces 4 nodes but its blocks hold 3");
+  expect_mesh_error(v4 + v4_nodes + "$Elements\n1 1 1 1\n2 9 2 1\n1 1 2 3\n$EndElements\n", 20,
+                    "entity (dimension 2, tag 9) that $Entities does not list");
+  expect_mesh_error(v4 + v4_nodes + "$Elements\n1 1 1 1\n1 1 2 1\n1 1 2 3\n$EndElements\n", 20,
+                    "element type 2 has dimension 2 but its block's entity has dimension 1");
+  // and the well-formed 4.1 text: its triangle is in group 7 through its entity
+  const GmshMesh good = parse_gmsh(v4 + v4_nodes + "$Elements\n1 1 1 1\n2 1 2 1\n5 1 2 3\n$EndElements\n", "good.msh");
+  ck_assert_int_eq(good.elements.size(), 1);
+  ck_assert_int_eq(good.elements[0].physical_tags.size(), 1);
+  ck_assert_int_eq(good.elements[0].physical_tags[0], 7);
+  ck_assert_int_eq(good.elements[0].tag, 5);
+  ck_assert_int_eq(good.elements[0].line, 21);
+  ASSERT_HAS(error_of<MeshError>([] { read_gmsh("/nonexistent/x.msh"); }), "/nonexistent/x.msh: cannot open");
+}
+END_TEST
+
+// ---- the scene -----------------------------------------------------------------------------
+
+// A valid scene; `edit` replaces its first occurrence of `from` by `to`.
+std::string scene_text(const std::string &from = "", const std::string &to = "") {
+  std::string s = R"({
+  "bodies": [
+    { "mesh": "m.msh", "domain": "a", "material": { "E": 2, "nu": 0.3 },
+      "supports": [ { "group": "left", "components": "x" } ],
+      "loads": [ { "type": "pressure", "group": "top", "value": 0.25 },
+                 { "type": "body_force", "value": [0, -1] } ],
+      "contact": "c1" },
+    { "mesh": "m.msh", "domain": "b", "material": { "E": 5, "nu": 0.25 },
+      "supports": [ { "group": "bottom", "components": "both", "value": [0, 0.1] } ],
+      "contact": "c2" }
+  ],
+  "solver": { "method": "dual_mortar" },
+  "output": { "pressure_csv": "out/p.csv" }
+})";
+  if (!from.empty()) {
+    size_t at = s.find(from);
+    ck_assert_msg(at != std::string::npos, "test bug: '%s' not in the scene", from.c_str());
+    s.replace(at, from.size(), to);
+  }
+  return s;
+}
+
+std::string scene_error(const std::string &text) {
+  return error_of<SceneError>([&] { parse_scene(text, "dir/s.json"); });
+}
+
+START_TEST(valid_scene_parsed_with_defaults) {
+  const Scene s = parse_scene(scene_text(), "dir/s.json");
+  ck_assert_int_eq(s.plane, MC_PLANE_STRAIN);
+  ck_assert_double_eq(s.thickness, 1.0);
+  ck_assert_int_eq(s.solver.method, MC_METHOD_DUAL_MORTAR);
+  ck_assert_int_eq(s.solver.contact_normal, MC_NORMAL_NONMORTAR);
+  ck_assert_double_eq(s.solver.tolerance, 1e-10);
+  ck_assert_str_eq(s.bodies[0].mesh_path.c_str(), "dir/m.msh");  // relative to the scene file
+  ck_assert_str_eq(s.output.pressure_csv.c_str(), "dir/out/p.csv");
+  ck_assert(s.output.vtu.empty());
+  ck_assert_double_eq(s.bodies[1].poisson, 0.25);
+  ck_assert_int_eq(s.bodies[0].supports[0].components, MC_X);
+  ck_assert_int_eq(s.bodies[1].supports[0].components, MC_XY);
+  ck_assert_double_eq(s.bodies[1].supports[0].value[1], 0.1);
+  ck_assert_int_eq(int(s.bodies[0].loads[1].type), int(LoadType::BodyForce));
+  ck_assert_double_eq(s.bodies[0].loads[1].value[1], -1.0);
+  ck_assert(!s.hertz.enabled);
+}
+END_TEST
+
+START_TEST(scene_errors_name_the_key) {
+  std::string e = scene_error(scene_text("\"material\": { \"E\": 2", "\"materail\": { \"E\": 2"));
+  ASSERT_HAS(e, "dir/s.json: bodies[0].materail: unknown key (did you mean 'material'?)");
+  e = scene_error(scene_text("\"E\": 2, \"nu\": 0.3", "\"E\": 2, \"nu\": 0.3, \"E\": 3"));
+  ASSERT_HAS(e, "dir/s.json: bodies[0].material.E: duplicated key");
+  e = scene_error(scene_text("\"value\": [0, 0.1]", "\"value\": [0, 0.1], \"value\": [0, 0.1]"));
+  ASSERT_HAS(e, "bodies[1].supports[0].value: duplicated key");
+  ASSERT_HAS(scene_error(scene_text(",\n      \"contact\": \"c2\"", "")), "bodies[1].contact: missing");
+  ASSERT_HAS(scene_error(scene_text("\"E\": 2", "\"E\": \"2\"")), "bodies[0].material.E: must be a number");
+  ASSERT_HAS(scene_error(scene_text("\"E\": 2", "\"E\": 0")), "bodies[0].material.E: must be > 0");
+  ASSERT_HAS(scene_error(scene_text("\"nu\": 0.3", "\"nu\": 0.5")), "bodies[0].material.nu: must be in (-1, 0.5)");
+  ASSERT_HAS(scene_error(scene_text("\"dual_mortar\"", "\"dual\"")),
+             "solver.method: \"dual\" is not one of \"mortar\", \"dual_mortar\", \"node_to_segment\"");
+  ASSERT_HAS(scene_error(scene_text("\"components\": \"x\"", "\"components\": \"z\"")),
+             "bodies[0].supports[0].components: \"z\" is not one of");
+  ASSERT_HAS(scene_error(scene_text("\"value\": [0, -1]", "\"value\": [0, -1], \"group\": \"a\"")),
+             "bodies[0].loads[1].group: a body force acts on the whole body");
+  ASSERT_HAS(scene_error(scene_text("\"value\": 0.25", "\"value\": [0.25]")),
+             "bodies[0].loads[0].value: must be a number");
+  ASSERT_HAS(scene_error(scene_text("\"value\": [0, 0.1]", "\"value\": [0]")),
+             "bodies[1].supports[0].value: must be an array of two numbers");
+  ASSERT_HAS(scene_error(scene_text("\"domain\": \"b\", ", "")),
+             "bodies[1].domain: missing: both bodies use the mesh m.msh");
+  ASSERT_HAS(scene_error(scene_text("\"contact\": \"c2\"", "\"contact\": \"c2\", \"gap_offset\": 0.1")),
+             "bodies[1].gap_offset: only body 1");
+  ASSERT_HAS(scene_error(scene_text("\"solver\"", "\"solvr\"")), "solvr: unknown key (did you mean 'solver'?)");
+  ASSERT_HAS(scene_error(scene_text("\"solver\": {", "\"analytic\": { \"type\": \"hertz\", \"radius\": 1 },\n \"solver\": {")),
+             "analytic.load: missing");
+  ASSERT_HAS(scene_error(scene_text("\"method\": \"dual_mortar\"", "\"max_iterations\": 2.5")),
+             "solver.max_iterations: must be an integer >= 1");
+  ASSERT_HAS(scene_error("{ \"bodies\": [ {} ] }"), "bodies: must list exactly two bodies");
+  ASSERT_HAS(scene_error("[1, 2]"), "top level: must be an object");
+  e = scene_error("{\n  \"bodies\": [\n  ,\n]}");
+  ASSERT_HAS(e, "dir/s.json: invalid JSON: ");
+  ASSERT_HAS(e, "line 3");
+  ASSERT_HAS(error_of<SceneError>([] { load_scene("/nonexistent/s.json"); }), "/nonexistent/s.json: cannot open");
+}
+END_TEST
+
+// ---- the runner, end to end ----------------------------------------------------------------
+
+std::vector<std::vector<double>> read_csv(const std::string &path, std::string *text) {
+  std::ifstream in(path);
+  ck_assert_msg(bool(in), "cannot read %s", path.c_str());
+  std::stringstream all;
+  all << in.rdbuf();
+  *text = all.str();
+  std::istringstream lines(*text);
+  std::string line;
+  std::getline(lines, line);
+  ck_assert_str_eq(line.c_str(), "x,y,pressure,gap");
+  std::vector<std::vector<double>> rows;
+  while (std::getline(lines, line)) {
+    std::vector<double> row;
+    std::istringstream fields(line);
+    std::string field;
+    while (std::getline(fields, field, ',')) row.push_back(std::strtod(field.c_str(), nullptr));
+    ck_assert_int_eq(row.size(), 4);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+START_TEST(runner_patch_test_both_formats) {
+  std::string text[2];
+  const char *versions[2] = {"22", "41"};
+  for (int k = 0; k < 2; ++k) {
+    const std::string out = data_dir + "/out_v" + versions[k];
+    const std::string command = "rm -rf '" + out + "' && '" + runner + "' --quiet '" + data_dir + "/tiny_v" +
+                                versions[k] + ".json'";
+    ck_assert_int_eq(std::system(command.c_str()), 0);
+    const auto rows = read_csv(out + "/pressure.csv", &text[k]);
+    // body 1's bottom: 3 nodes at y = 0; uniform pressure 0.25 through non-matching meshes
+    ck_assert_int_eq(rows.size(), 3);
+    for (const auto &r : rows) {
+      ck_assert_double_eq(r[1], 0.0);
+      ck_assert_msg(std::fabs(r[2] - 0.25) < 1e-12, "pressure %.17g at x = %g", r[2], r[0]);
+      ck_assert_msg(std::fabs(r[3]) < 1e-12, "gap %.3g at x = %g", r[3], r[0]);
+    }
+    std::ifstream vtu(out + "/patch.vtu");
+    ck_assert_msg(bool(vtu) && vtu.peek() != EOF, "no VTU written");
+  }
+  ck_assert_msg(text[0] == text[1], "the two formats give different results:\n%s\n%s", text[0].c_str(), text[1].c_str());
+}
+END_TEST
+
+// Body 1's top pushed down by 0.004 plus an interference of 0.006 (gap offset): the two blocks,
+// free to expand sideways, are compressed by 0.01 in total under uniaxial stress (plane strain):
+// 0.01 = (1 - nu^2) p (h1/E1 + h2/E2), which linear elements reproduce exactly.
+START_TEST(runner_interference_gap_offset_exact) {
+  const std::string out = data_dir + "/out_interference";
+  const std::string command = "rm -rf '" + out + "' && '" + runner + "' --quiet '" + data_dir + "/interference.json'";
+  ck_assert_int_eq(std::system(command.c_str()), 0);
+  std::string text;
+  const auto rows = read_csv(out + "/pressure.csv", &text);
+  const double nu = 0.3, expected = 0.01 / ((1 - nu * nu) * (1 / 2.0 + 1 / 5.0));
+  ck_assert_int_eq(rows.size(), 3);
+  for (const auto &r : rows) {
+    ck_assert_msg(std::fabs(r[2] / expected - 1) < 1e-12, "pressure %.17g, expected %.17g", r[2], expected);
+    ck_assert_msg(std::fabs(r[3]) < 1e-14, "gap %.3g at x = %g", r[3], r[0]);
+  }
+}
+END_TEST
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  if (argc != 3) {
+    std::fprintf(stderr, "usage: %s DATA_DIR RUNNER\n", argv[0]);
+    return 2;
+  }
+  data_dir = argv[1];
+  runner = argv[2];
+  Suite *suite = suite_create("runner");
+  TCase *tc = tcase_create("runner");
+  tcase_set_timeout(tc, 60);
+  tcase_add_test(tc, both_formats_read_the_same_mesh);
+  tcase_add_test(tc, body_nodes_compact_cells_counter_clockwise);
+  tcase_add_test(tc, group_edges_oriented_body_on_the_left);
+  tcase_add_test(tc, body_errors_name_element_and_line);
+  tcase_add_test(tc, malformed_files_name_file_and_line);
+  tcase_add_test(tc, valid_scene_parsed_with_defaults);
+  tcase_add_test(tc, scene_errors_name_the_key);
+  tcase_add_test(tc, runner_patch_test_both_formats);
+  tcase_add_test(tc, runner_interference_gap_offset_exact);
+  suite_add_tcase(suite, tc);
+  SRunner *sr = srunner_create(suite);
+  srunner_run_all(sr, CK_NORMAL);
+  const int failed = srunner_ntests_failed(sr);
+  srunner_free(sr);
+  return failed == 0 ? 0 : 1;
+}

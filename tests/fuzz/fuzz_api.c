@@ -1,0 +1,652 @@
+/*
+ * fuzz_api.c - a libFuzzer target that drives the whole C API from a byte stream.
+ *
+ * The input is read as a little program: one opcode byte (taken modulo OP_COUNT), then that
+ * operation's operands, until the bytes run out (a read past the end gives 0). Sizes are
+ * bounded (grid meshes up to 8 x 6 cells, raw arrays up to 16 entries, 128 operations and 6
+ * solves per input), so one input runs in milliseconds.
+ *
+ * Nothing here asserts on a status: bad input is the point. What is checked after every call:
+ *   - the status is one of the mc_status values;
+ *   - mc_errmsg(m) is a NUL-terminated string, "" after MC_OK and non-empty after a failure;
+ *   - every output array is exactly as large as the header says (heap blocks of that size,
+ *     so AddressSanitizer reports a write beyond it);
+ * and, by the sanitizers, no crash, no leak, no undefined behaviour, no C++ exception across
+ * the C ABI (it would abort). A violated check calls abort().
+ *
+ * Encoding of operands (see read_real, read_id, read_count below):
+ *   real : byte b < 16: a special value (0, 1, -1, 0.3, 0.5, NaN, +-inf, 1e300, ...);
+ *          16 <= b < 240: (b - 128) / 8; b >= 240: the next 8 bytes as a little-endian double.
+ *   id   : byte b < 240: b - 4 (so -4 .. 235); b >= 240: a special (INT_MIN, INT_MAX, ...) or
+ *          the next 4 bytes as a little-endian int32.
+ *   count: byte b: b % (max + 1), except 255, which gives -1.
+ *   body : byte b: 1 + (b & 1), except b >= 250: 0, 3 or -1 (bad bodies).
+ * The seed corpus (tests/fuzz/corpus/) is written by tests/fuzz/make_corpus.py, which
+ * documents the operations' operand order once more; keep the two in step.
+ *
+ * Built two ways: with -fsanitize=fuzzer (CMake option MC_BUILD_FUZZ, clang only) it is the
+ * fuzz target; with replay_main.c it is a plain program that runs the files named on its
+ * command line (the ctest fuzz_corpus_replay, also under ASan/UBSan and valgrind).
+ */
+#include <float.h>
+#include <limits.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mortarcontact.h"
+
+/* Entry points other work may add later: called only when the library defines them. */
+#pragma weak mc_set_gap_offset
+#pragma weak mc_set_log_callback
+#pragma weak mc_write_vtu
+
+/* Counters for the replay driver (how far the corpus reaches); not used by the library. */
+long fuzz_api_solves_ok = 0, fuzz_api_contact_solves_ok = 0;
+
+enum {
+  MAX_OPS = 128,
+  MAX_SOLVES = 6,
+  MAX_RAW = 16,
+  MAX_NX = 8,
+  MAX_NY = 6
+};
+
+typedef struct {
+  const uint8_t *p;
+  size_t n;
+} stream;
+
+static uint8_t read_u8(stream *s) {
+  if (s->n == 0) return 0;
+  s->n--;
+  return *s->p++;
+}
+
+static uint64_t read_bytes(stream *s, int count) {
+  uint64_t v = 0;
+  int k;
+  for (k = 0; k < count; ++k) v |= (uint64_t)read_u8(s) << (8 * k);
+  return v;
+}
+
+static double read_real(stream *s) {
+  static const double special[16] = {0.0, 1.0, -1.0, 0.3, 0.5, 0.4999999, -0.9999999, 1e-300,
+                                     1e300, DBL_MAX, 0.0 /* NaN */, 0.0 /* inf */, 0.0 /* -inf */, 1e-8, 100.0, -0.5};
+  uint8_t b = read_u8(s);
+  if (b < 16) {
+    if (b == 10) return NAN;
+    if (b == 11) return INFINITY;
+    if (b == 12) return -INFINITY;
+    return special[b];
+  }
+  if (b < 240) return (b - 128) / 8.0;
+  {
+    uint64_t bits = read_bytes(s, 8);
+    double v;
+    memcpy(&v, &bits, sizeof v);
+    return v;
+  }
+}
+
+static mc_int read_id(stream *s) {
+  uint8_t b = read_u8(s);
+  if (b < 240) return (mc_int)b - 4;
+  switch (b) {
+    case 240: return INT32_MIN;
+    case 241: return INT32_MAX;
+    case 242: return INT32_MIN + 1;
+    case 243: return INT32_MAX - 1;
+    case 244: return -1000000;
+    case 245: return 1000000;
+    default: return (mc_int)(int32_t)(uint32_t)read_bytes(s, 4);
+  }
+}
+
+/* id + base without int overflow (INT32_MAX stays INT32_MAX: the extremes are tested as such) */
+static mc_int plus_base(mc_int id, int base) {
+  int64_t v = (int64_t)id + base;
+  return v > INT32_MAX || v < INT32_MIN ? id : (mc_int)v;
+}
+
+static mc_int read_count(stream *s, int max) {
+  uint8_t b = read_u8(s);
+  if (b == 255) return -1;
+  return (mc_int)(b % (max + 1));
+}
+
+static int read_body(stream *s) {
+  uint8_t b = read_u8(s);
+  if (b >= 250) return b == 250 ? 0 : b == 251 ? 3 : -1;
+  return 1 + (b & 1);
+}
+
+/* ---- the contract checks ------------------------------------------------------------- */
+
+static void fuzz_fail(const char *what, const char *call) {
+  fprintf(stderr, "fuzz_api: %s after %s\n", what, call);
+  abort();
+}
+
+static void check_message(const char *msg, const char *call) {
+  size_t len;
+  if (!msg) fuzz_fail("mc_errmsg returned NULL", call);
+  len = strlen(msg); /* reads up to the NUL: ASan reports if the string is not valid memory */
+  if (len > 4096) fuzz_fail("mc_errmsg is implausibly long", call);
+}
+
+static mc_status checked(mc_model *m, mc_status st, const char *call) {
+  static int trace = -1; /* FUZZ_API_TRACE=1 prints every call (for writing seeds) */
+  const char *msg = mc_errmsg(m);
+  if (trace < 0) trace = getenv("FUZZ_API_TRACE") != NULL;
+  if (trace) fprintf(stderr, "%-60.60s %-22s %s\n", call, mc_status_string(st), msg ? msg : "(null)");
+  if ((int)st < (int)MC_OK || (int)st > (int)MC_ERROR_INTERNAL) fuzz_fail("status out of range", call);
+  check_message(msg, call);
+  if (strcmp(mc_status_string(st), "unknown status") == 0) fuzz_fail("no name for a status", call);
+  if (m) {
+    if (st == MC_OK && msg[0] != '\0') fuzz_fail("message after MC_OK", call);
+    if (st != MC_OK && msg[0] == '\0') fuzz_fail("empty message after a failure", call);
+  }
+  return st;
+}
+
+#define CALL(expr) checked(m, (expr), #expr)
+
+/* ---- what the harness knows about the model ------------------------------------------ */
+
+typedef struct {
+  int meshed;
+  mc_int n_nodes, n_cells;
+  /* side edges of the last grid mesh (0-based), if the mesh came from OP_GRID_MESH */
+  int grid;
+  mc_int n_side[4];
+  mc_int side[4][2 * (MAX_NX > MAX_NY ? MAX_NX : MAX_NY)];
+} body_state;
+
+typedef struct {
+  mc_model *m;
+  int base;
+  body_state body[2];
+  int solves;
+  long log_lines;
+} harness;
+
+static void log_callback(void *user_data, mc_log_level level, const char *message) {
+  harness *h = (harness *)user_data;
+  if (level != MC_LOG_PHASE && level != MC_LOG_ITERATION) fuzz_fail("bad log level", "log callback");
+  check_message(message, "log callback");
+  h->log_lines++;
+}
+
+static void reset_model(harness *h) {
+  mc_destroy(h->m);
+  h->m = NULL;
+  memset(h->body, 0, sizeof h->body);
+  h->base = 0;
+  if (mc_create(&h->m) != MC_OK || !h->m) fuzz_fail("mc_create failed", "mc_create");
+}
+
+static body_state *tracked(harness *h, int body) { return body == 1 || body == 2 ? &h->body[body - 1] : NULL; }
+
+/* ---- queries with exactly sized buffers ---------------------------------------------- */
+
+static void *exact(size_t count, size_t size) {
+  void *p = malloc(count ? count * size : 1);
+  if (!p) abort();
+  return p;
+}
+
+static void query_all(harness *h) {
+  mc_model *m = h->m;
+  int body, info;
+  for (info = 0; info <= 30; ++info) {
+    int64_t iv;
+    double rv;
+    CALL(mc_get_info_int(m, info, &iv));
+    CALL(mc_get_info_real(m, info, &rv));
+  }
+  for (body = 0; body <= 3; ++body) {
+    const body_state *b = tracked(h, body);
+    size_t nodes = b && b->meshed ? (size_t)b->n_nodes : 0, cells = b && b->meshed ? (size_t)b->n_cells : 0;
+    double *u = exact(2 * nodes, sizeof(double)), *sigma = exact(4 * cells, sizeof(double));
+    double *r = exact(2 * nodes, sizeof(double));
+    mc_status su = CALL(mc_get_displacement(m, body, u));
+    CALL(mc_get_stress(m, body, sigma));
+    CALL(mc_get_reaction(m, body, r));
+    if (su == MC_OK && !(b && b->meshed)) fuzz_fail("displacements of a body without a mesh", "mc_get_displacement");
+    free(u), free(sigma), free(r);
+  }
+  {
+    mc_int n = -1;
+    if (CALL(mc_get_contact_count(m, &n)) == MC_OK) {
+      size_t c;
+      mc_int *nodes;
+      double *p, *f, *g, *g0, *nrm;
+      if (n < 0) fuzz_fail("negative contact count", "mc_get_contact_count");
+      c = (size_t)n;
+      nodes = exact(c, sizeof(mc_int));
+      p = exact(c, sizeof(double)), f = exact(c, sizeof(double)), g = exact(c, sizeof(double));
+      g0 = exact(c, sizeof(double)), nrm = exact(2 * c, sizeof(double));
+      CALL(mc_get_contact_nodes(m, nodes));
+      CALL(mc_get_contact_pressure(m, p));
+      CALL(mc_get_contact_force(m, f));
+      CALL(mc_get_contact_gap(m, g));
+      CALL(mc_get_contact_initial_gap(m, g0));
+      CALL(mc_get_contact_normal(m, nrm));
+      free(nodes), free(p), free(f), free(g), free(g0), free(nrm);
+    }
+  }
+}
+
+/* Every entry point with NULL for the model or for an output. */
+static void null_calls(harness *h) {
+  mc_model *m = NULL;
+  mc_int id = 0, edge[2] = {0, 1};
+  double v[2] = {0, 0};
+  int64_t iv;
+  double rv;
+  check_message(mc_errmsg(NULL), "mc_errmsg(NULL)");
+  check_message(mc_status_string((mc_status)1234), "mc_status_string");
+  check_message(mc_version_string(), "mc_version_string");
+  if (mc_create(NULL) != MC_ERROR_ARGUMENT) fuzz_fail("mc_create(NULL) accepted", "mc_create");
+  mc_destroy(NULL);
+  CALL(mc_set_index_base(m, 0));
+  CALL(mc_set_plane(m, 0, 1));
+  CALL(mc_set_mesh(m, 1, 3, v, 1, 3, edge));
+  CALL(mc_set_material(m, 1, 1, 0.3));
+  CALL(mc_set_cell_elasticity(m, 1, v));
+  CALL(mc_fix(m, 1, 1, &id, MC_XY, NULL));
+  CALL(mc_add_traction(m, 1, 1, edge, v));
+  CALL(mc_add_pressure(m, 1, 1, edge, v));
+  CALL(mc_add_nodal_force(m, 1, 1, &id, v));
+  CALL(mc_set_body_force(m, 1, 0, 0));
+  CALL(mc_clear_loads(m, 1));
+  CALL(mc_set_contact(m, 1, 1, edge));
+  CALL(mc_set_option_int(m, MC_OPTION_METHOD, 0));
+  CALL(mc_set_option_real(m, MC_OPTION_TOLERANCE, 1e-8));
+  CALL(mc_solve(m));
+  CALL(mc_get_info_int(m, MC_INFO_DOFS, &iv));
+  CALL(mc_get_info_real(m, MC_INFO_STRAIN_ENERGY, &rv));
+  CALL(mc_get_displacement(m, 1, v));
+  CALL(mc_get_stress(m, 1, v));
+  CALL(mc_get_reaction(m, 1, v));
+  CALL(mc_get_contact_count(m, &id));
+  CALL(mc_get_contact_nodes(m, &id));
+  CALL(mc_get_contact_pressure(m, v));
+  CALL(mc_get_contact_force(m, v));
+  CALL(mc_get_contact_gap(m, v));
+  CALL(mc_get_contact_initial_gap(m, v));
+  CALL(mc_get_contact_normal(m, v));
+  if (mc_set_gap_offset) CALL(mc_set_gap_offset(m, 1, &id, v));
+  if (mc_set_log_callback) CALL(mc_set_log_callback(m, NULL, NULL));
+  if (mc_write_vtu) CALL(mc_write_vtu(m, "/dev/null"));
+  /* NULL outputs on a real model */
+  m = h->m;
+  CALL(mc_get_info_int(m, MC_INFO_DOFS, NULL));
+  CALL(mc_get_info_real(m, MC_INFO_STRAIN_ENERGY, NULL));
+  CALL(mc_get_displacement(m, 1, NULL));
+  CALL(mc_get_stress(m, 2, NULL));
+  CALL(mc_get_reaction(m, 1, NULL));
+  CALL(mc_get_contact_count(m, NULL));
+  CALL(mc_get_contact_nodes(m, NULL));
+  CALL(mc_get_contact_pressure(m, NULL));
+  CALL(mc_get_contact_force(m, NULL));
+  CALL(mc_get_contact_gap(m, NULL));
+  CALL(mc_get_contact_initial_gap(m, NULL));
+  CALL(mc_get_contact_normal(m, NULL));
+  if (mc_write_vtu) CALL(mc_write_vtu(m, NULL));
+}
+
+/* ---- operations ---------------------------------------------------------------------- */
+
+enum {
+  OP_NEW_MODEL,      /* -                                                           */
+  OP_INDEX_BASE,     /* byte: base = byte % 4 - 1                                   */
+  OP_PLANE,          /* byte: plane = byte % 3 - (byte >= 128); real: thickness     */
+  OP_GRID_MESH,      /* body, byte npc (3 + b&1), byte nx, byte ny, real x0, y0, lx, ly,
+                        byte distortion, real bow, byte corrupt [, corruption operands] */
+  OP_RAW_MESH,       /* body, count n_nodes, 2n reals, count n_cells, byte npc (2..5), ids, byte nulls */
+  OP_MATERIAL,       /* body, real young, real poisson                              */
+  OP_CELL_LAW,       /* body, real young, real poisson, byte cell, byte entry, real value, byte null */
+  OP_FIX_SIDE,       /* body, byte side, byte mask (b % 5), byte has_values, [real vx, vy] */
+  OP_FIX_RAW,        /* body, count n, n ids, byte mask, byte has_values, [2n reals] */
+  OP_TRACTION_SIDE,  /* body, byte side, real tx, real ty                           */
+  OP_PRESSURE_SIDE,  /* body, byte side, real p                                     */
+  OP_EDGE_LOAD_RAW,  /* body, byte kind (0 traction, 1 pressure), count n, 2n ids, reals, byte nulls */
+  OP_NODAL_FORCE,    /* body, count n, n ids, 2n reals                              */
+  OP_BODY_FORCE,     /* body, real fx, real fy                                      */
+  OP_CLEAR_LOADS,    /* body                                                        */
+  OP_CONTACT_SIDE,   /* body, byte side, byte first, byte count (0: all)            */
+  OP_CONTACT_RAW,    /* body, count n, 2n ids                                       */
+  OP_OPTION_INT,     /* byte option (b % 10), byte kind: < 200: b % 6 - 1; else 8 raw bytes */
+  OP_OPTION_REAL,    /* byte option (b % 10), real value                            */
+  OP_SOLVE,          /* - (then queries every result)                               */
+  OP_QUERY,          /* - (queries every result)                                    */
+  OP_GAP_OFFSET,     /* count n, n ids, n reals (needs mc_set_gap_offset)           */
+  OP_LOG,            /* byte on                                                     */
+  OP_WRITE_VTU,      /* byte which path                                             */
+  OP_NULLS,          /* - (every entry point with NULL model / NULL outputs)        */
+  OP_COUNT
+};
+
+static void op_grid_mesh(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int body = read_body(s), npc = 3 + (read_u8(s) & 1), nx = 1 + read_u8(s) % MAX_NX, ny = 1 + read_u8(s) % MAX_NY;
+  double x0 = read_real(s), y0 = read_real(s), lx = read_real(s), ly = read_real(s);
+  double distortion = (read_u8(s) % 32) / 128.0, bow = read_real(s);
+  int corrupt = read_u8(s) % 4; /* 0 none, 1 one coordinate, 2 one cell id, 3 swap two ids of a cell */
+  mc_int n_nodes = (nx + 1) * (ny + 1), n_cells = npc == 4 ? nx * ny : 2 * nx * ny;
+  double xy[2 * (MAX_NX + 1) * (MAX_NY + 1)];
+  mc_int cells[6 * MAX_NX * MAX_NY]; /* P1: 2 triangles of 3 nodes per square */
+  int i, j, k;
+  unsigned state = 12345u;
+  if (lx == 0) lx = 1;
+  if (ly == 0) ly = 1;
+  for (j = 0; j <= ny; ++j)
+    for (i = 0; i <= nx; ++i) {
+      int id = j * (nx + 1) + i;
+      double t = 2.0 * i / nx - 1;
+      xy[2 * id] = x0 + lx * i / nx;
+      xy[2 * id + 1] = y0 + ly * j / ny + bow * t * t * (1.0 - (double)j / ny);
+      if (i > 0 && j > 0 && i < nx && j < ny && distortion > 0) {
+        state = state * 1103515245u + 12345u;
+        xy[2 * id] += distortion * lx / nx * (((state >> 8) & 0xffff) / 65536.0 - 0.5);
+        state = state * 1103515245u + 12345u;
+        xy[2 * id + 1] += distortion * ly / ny * (((state >> 8) & 0xffff) / 65536.0 - 0.5);
+      }
+    }
+  k = 0;
+  for (j = 0; j < ny; ++j)
+    for (i = 0; i < nx; ++i) {
+      mc_int a = j * (nx + 1) + i, b = a + 1, c = b + nx + 1, d = a + nx + 1;
+      if (npc == 4) {
+        cells[k++] = a, cells[k++] = b, cells[k++] = c, cells[k++] = d;
+      } else {
+        cells[k++] = a, cells[k++] = b, cells[k++] = c;
+        cells[k++] = a, cells[k++] = c, cells[k++] = d;
+      }
+    }
+  for (k = 0; k < npc * n_cells; ++k) cells[k] += h->base;
+  if (corrupt == 1) {
+    xy[read_u8(s) % (2 * n_nodes)] = read_real(s);
+  } else if (corrupt == 2) {
+    int where = read_u8(s) % (npc * n_cells);
+    cells[where] = plus_base(read_id(s), h->base);
+  } else if (corrupt == 3) {
+    int c = read_u8(s) % n_cells, a = read_u8(s) % npc, b = read_u8(s) % npc;
+    mc_int tmp = cells[npc * c + a];
+    cells[npc * c + a] = cells[npc * c + b], cells[npc * c + b] = tmp;
+  }
+  if (CALL(mc_set_mesh(m, body, n_nodes, xy, n_cells, npc, cells)) == MC_OK) {
+    body_state *b = tracked(h, body);
+    memset(b, 0, sizeof *b);
+    b->meshed = 1, b->n_nodes = n_nodes, b->n_cells = n_cells, b->grid = 1;
+    for (i = 0; i < nx; ++i) { /* bottom, left to right; top, right to left */
+      b->side[0][2 * i] = i, b->side[0][2 * i + 1] = i + 1;
+      b->side[2][2 * i] = ny * (nx + 1) + nx - i, b->side[2][2 * i + 1] = ny * (nx + 1) + nx - i - 1;
+    }
+    for (j = 0; j < ny; ++j) { /* right, bottom to top; left, top to bottom */
+      b->side[1][2 * j] = j * (nx + 1) + nx, b->side[1][2 * j + 1] = (j + 1) * (nx + 1) + nx;
+      b->side[3][2 * j] = (ny - j) * (nx + 1), b->side[3][2 * j + 1] = (ny - j - 1) * (nx + 1);
+    }
+    b->n_side[0] = b->n_side[2] = nx;
+    b->n_side[1] = b->n_side[3] = ny;
+  }
+}
+
+static void op_raw_mesh(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int body = read_body(s);
+  mc_int n_nodes = read_count(s, MAX_RAW), n_cells, k;
+  double xy[2 * MAX_RAW];
+  mc_int cells[5 * MAX_RAW];
+  int npc, nulls;
+  for (k = 0; k < 2 * n_nodes; ++k) xy[k] = read_real(s);
+  n_cells = read_count(s, MAX_RAW / 2);
+  npc = 2 + read_u8(s) % 4;
+  for (k = 0; k < npc * n_cells; ++k) cells[k] = plus_base(read_id(s), h->base);
+  nulls = read_u8(s) % 8;
+  if (CALL(mc_set_mesh(m, body, n_nodes, nulls == 1 ? NULL : xy, n_cells, npc, nulls == 2 ? NULL : cells)) == MC_OK) {
+    body_state *b = tracked(h, body);
+    memset(b, 0, sizeof *b);
+    b->meshed = 1, b->n_nodes = n_nodes, b->n_cells = n_cells;
+  }
+}
+
+/* The in-plane isotropic plane-strain law of (young, poisson), row-major Voigt. */
+static void isotropic(double young, double poisson, double d[9]) {
+  double f = young / ((1 + poisson) * (1 - 2 * poisson));
+  memset(d, 0, 9 * sizeof(double));
+  d[0] = d[4] = f * (1 - poisson);
+  d[1] = d[3] = f * poisson;
+  d[8] = f * (1 - 2 * poisson) / 2;
+}
+
+static void op_cell_law(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int body = read_body(s);
+  double young = read_real(s), poisson = read_real(s);
+  int cell = read_u8(s), entry = read_u8(s) % 10;
+  double value = read_real(s);
+  int null = read_u8(s) % 8 == 1;
+  const body_state *b = tracked(h, body);
+  size_t cells = b && b->meshed ? (size_t)b->n_cells : 1, c;
+  double *d = exact(9 * cells, sizeof(double));
+  for (c = 0; c < cells; ++c) isotropic(young, poisson, d + 9 * c);
+  if (entry < 9) d[9 * ((size_t)cell % cells) + (size_t)entry] = value;
+  CALL(mc_set_cell_elasticity(m, body, null ? NULL : d));
+  free(d);
+}
+
+static const mc_int *side_edges(harness *h, int body, int side, mc_int *n) {
+  const body_state *b = tracked(h, body);
+  static const mc_int none[2] = {0, 1};
+  if (!b || !b->grid) {
+    *n = 1;
+    return none;
+  }
+  *n = b->n_side[side];
+  return b->side[side];
+}
+
+/* ids of a side (0-based in the harness) with the index base added */
+static void with_base(const harness *h, const mc_int *ids, mc_int n, mc_int *out) {
+  mc_int k;
+  for (k = 0; k < n; ++k) out[k] = ids[k] + h->base;
+}
+
+static void op_fix_side(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int body = read_body(s), side = read_u8(s) % 4, mask = read_u8(s) % 5, has_values = read_u8(s) & 1;
+  double vx = has_values ? read_real(s) : 0, vy = has_values ? read_real(s) : 0;
+  mc_int n, k, nodes[MAX_NX + 1], ne;
+  const mc_int *edges = side_edges(h, body, side, &ne);
+  double values[2 * (MAX_NX + 1)];
+  n = ne + 1;
+  for (k = 0; k < ne; ++k) nodes[k] = edges[2 * k] + h->base;
+  nodes[ne] = edges[2 * ne - 1] + h->base;
+  for (k = 0; k < n; ++k) values[2 * k] = vx, values[2 * k + 1] = vy;
+  CALL(mc_fix(m, body, n, nodes, mask, has_values ? values : NULL));
+}
+
+static void op_fix_raw(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int body = read_body(s);
+  mc_int n = read_count(s, MAX_RAW), k, nodes[MAX_RAW];
+  double values[2 * MAX_RAW];
+  int mask, has_values;
+  for (k = 0; k < n; ++k) nodes[k] = plus_base(read_id(s), h->base);
+  mask = read_u8(s) % 5;
+  has_values = read_u8(s) & 1;
+  if (has_values)
+    for (k = 0; k < 2 * n; ++k) values[k] = read_real(s);
+  CALL(mc_fix(m, body, n, n > 0 ? nodes : NULL, mask, has_values ? values : NULL));
+}
+
+static void op_side_load(harness *h, stream *s, int pressure) {
+  mc_model *m = h->m;
+  int body = read_body(s), side = read_u8(s) % 4;
+  double tx = read_real(s), ty = pressure ? 0 : read_real(s);
+  mc_int ne, k, edges[2 * MAX_NX];
+  const mc_int *e = side_edges(h, body, side, &ne);
+  double t[2 * MAX_NX];
+  with_base(h, e, 2 * ne, edges);
+  for (k = 0; k < ne; ++k) {
+    if (pressure) t[k] = tx;
+    else t[2 * k] = tx, t[2 * k + 1] = ty;
+  }
+  if (pressure) CALL(mc_add_pressure(m, body, ne, edges, t));
+  else CALL(mc_add_traction(m, body, ne, edges, t));
+}
+
+static void op_edge_load_raw(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int body = read_body(s), pressure = read_u8(s) & 1, nulls;
+  mc_int n = read_count(s, MAX_RAW), k, edges[2 * MAX_RAW];
+  double t[2 * MAX_RAW];
+  for (k = 0; k < 2 * n; ++k) edges[k] = plus_base(read_id(s), h->base);
+  for (k = 0; k < (pressure ? 1 : 2) * n; ++k) t[k] = read_real(s);
+  nulls = read_u8(s) % 8;
+  if (pressure) CALL(mc_add_pressure(m, body, n, nulls == 1 ? NULL : edges, nulls == 2 ? NULL : t));
+  else CALL(mc_add_traction(m, body, n, nulls == 1 ? NULL : edges, nulls == 2 ? NULL : t));
+}
+
+static void op_nodal_force(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int body = read_body(s);
+  mc_int n = read_count(s, MAX_RAW), k, nodes[MAX_RAW];
+  double f[2 * MAX_RAW];
+  for (k = 0; k < n; ++k) nodes[k] = plus_base(read_id(s), h->base);
+  for (k = 0; k < 2 * n; ++k) f[k] = read_real(s);
+  CALL(mc_add_nodal_force(m, body, n, nodes, f));
+}
+
+static void op_contact_side(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int body = read_body(s), side = read_u8(s) % 4, first = read_u8(s), count = read_u8(s);
+  mc_int ne, edges[2 * MAX_NX];
+  const mc_int *e = side_edges(h, body, side, &ne);
+  first %= ne;
+  count = count == 0 ? ne - first : 1 + count % (ne - first);
+  with_base(h, e + 2 * first, 2 * count, edges);
+  CALL(mc_set_contact(m, body, count, edges));
+}
+
+static void op_contact_raw(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int body = read_body(s);
+  mc_int n = read_count(s, MAX_RAW), k, edges[2 * MAX_RAW];
+  for (k = 0; k < 2 * n; ++k) edges[k] = plus_base(read_id(s), h->base);
+  CALL(mc_set_contact(m, body, n, n > 0 ? edges : NULL));
+}
+
+static void op_option_int(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int option = read_u8(s) % 10;
+  uint8_t kind = read_u8(s);
+  int64_t value = kind < 200 ? (int64_t)(kind % 6) - 1 : (int64_t)read_bytes(s, 8);
+  CALL(mc_set_option_int(m, option, value));
+}
+
+static void op_gap_offset(harness *h, stream *s) {
+  mc_model *m = h->m;
+  mc_int n = read_count(s, MAX_RAW), k, nodes[MAX_RAW];
+  double offset[MAX_RAW];
+  for (k = 0; k < n; ++k) nodes[k] = plus_base(read_id(s), h->base);
+  for (k = 0; k < n; ++k) offset[k] = read_real(s);
+  if (mc_set_gap_offset) CALL(mc_set_gap_offset(m, n, n > 0 ? nodes : NULL, n > 0 ? offset : NULL));
+}
+
+static void op_write_vtu(harness *h, stream *s) {
+  mc_model *m = h->m;
+  /* never a .pvd here: it would write files next to the path */
+  static const char *paths[3] = {"/dev/null", "/nonexistent-mortarcontact-dir/out.vtu", ""};
+  int which = read_u8(s) % 3;
+  if (mc_write_vtu) CALL(mc_write_vtu(m, paths[which]));
+}
+
+static void run(harness *h, stream *s) {
+  int ops = 0;
+  while (s->n > 0 && ops++ < MAX_OPS) {
+    mc_model *m = h->m;
+    uint8_t op = read_u8(s) % OP_COUNT;
+    switch (op) {
+      case OP_NEW_MODEL: reset_model(h); break;
+      case OP_INDEX_BASE: {
+        int base = read_u8(s) % 4 - 1;
+        if (CALL(mc_set_index_base(m, base)) == MC_OK) h->base = base;
+        break;
+      }
+      case OP_PLANE: {
+        uint8_t b = read_u8(s);
+        CALL(mc_set_plane(m, b % 3 - (b >= 128), read_real(s)));
+        break;
+      }
+      case OP_GRID_MESH: op_grid_mesh(h, s); break;
+      case OP_RAW_MESH: op_raw_mesh(h, s); break;
+      case OP_MATERIAL: {
+        int body = read_body(s);
+        double young = read_real(s), poisson = read_real(s);
+        CALL(mc_set_material(m, body, young, poisson));
+        break;
+      }
+      case OP_CELL_LAW: op_cell_law(h, s); break;
+      case OP_FIX_SIDE: op_fix_side(h, s); break;
+      case OP_FIX_RAW: op_fix_raw(h, s); break;
+      case OP_TRACTION_SIDE: op_side_load(h, s, 0); break;
+      case OP_PRESSURE_SIDE: op_side_load(h, s, 1); break;
+      case OP_EDGE_LOAD_RAW: op_edge_load_raw(h, s); break;
+      case OP_NODAL_FORCE: op_nodal_force(h, s); break;
+      case OP_BODY_FORCE: {
+        int body = read_body(s);
+        double fx = read_real(s), fy = read_real(s);
+        CALL(mc_set_body_force(m, body, fx, fy));
+        break;
+      }
+      case OP_CLEAR_LOADS: CALL(mc_clear_loads(m, read_body(s))); break;
+      case OP_CONTACT_SIDE: op_contact_side(h, s); break;
+      case OP_CONTACT_RAW: op_contact_raw(h, s); break;
+      case OP_OPTION_INT: op_option_int(h, s); break;
+      case OP_OPTION_REAL: {
+        int option = read_u8(s) % 10;
+        CALL(mc_set_option_real(m, option, read_real(s)));
+        break;
+      }
+      case OP_SOLVE:
+        if (h->solves++ < MAX_SOLVES) {
+          if (CALL(mc_solve(m)) == MC_OK) {
+            mc_int n;
+            fuzz_api_solves_ok++;
+            if (mc_get_contact_count(m, &n) == MC_OK) fuzz_api_contact_solves_ok++;
+          }
+          query_all(h);
+        }
+        break;
+      case OP_QUERY: query_all(h); break;
+      case OP_GAP_OFFSET: op_gap_offset(h, s); break;
+      case OP_LOG:
+      {
+        int on = read_u8(s) & 1; /* operands are read even when the call is skipped */
+        if (mc_set_log_callback) CALL(mc_set_log_callback(m, on ? log_callback : NULL, on ? (void *)h : NULL));
+        break;
+      }
+      case OP_WRITE_VTU: op_write_vtu(h, s); break;
+      case OP_NULLS: null_calls(h); break;
+    }
+  }
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
+  harness h;
+  stream s;
+  memset(&h, 0, sizeof h);
+  s.p = data, s.n = size;
+  reset_model(&h);
+  run(&h, &s);
+  mc_destroy(h.m);
+  return 0;
+}

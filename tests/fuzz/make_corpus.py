@@ -1,0 +1,185 @@
+#!/usr/bin/env python3
+"""Writes the seed corpus of the fuzz target tests/fuzz/fuzz_api.c into tests/fuzz/corpus/.
+
+Each seed is a little program of API calls in the byte encoding fuzz_api.c reads (see its
+header comment and the OP_ enum, whose order OPS below repeats). Several seeds produce a
+successful solve, with and without contact, so that fuzzing starts from inputs that reach the
+solver; the others start from bad input and calls out of order.
+
+Usage: python3 tests/fuzz/make_corpus.py   (rewrites the corpus; commit the result)
+"""
+import os
+import struct
+
+OPS = ["NEW_MODEL", "INDEX_BASE", "PLANE", "GRID_MESH", "RAW_MESH", "MATERIAL", "CELL_LAW",
+       "FIX_SIDE", "FIX_RAW", "TRACTION_SIDE", "PRESSURE_SIDE", "EDGE_LOAD_RAW", "NODAL_FORCE",
+       "BODY_FORCE", "CLEAR_LOADS", "CONTACT_SIDE", "CONTACT_RAW", "OPTION_INT", "OPTION_REAL",
+       "SOLVE", "QUERY", "GAP_OFFSET", "LOG", "WRITE_VTU", "NULLS"]
+OP = {name: k for k, name in enumerate(OPS)}
+BOTTOM, RIGHT, TOP, LEFT = 0, 1, 2, 3
+SPECIAL = {"nan": 10, "inf": 11, "-inf": 12}
+
+
+def op(name):
+    return bytes([OP[name]])
+
+
+def u8(v):
+    return bytes([v & 0xFF])
+
+
+def real(v):
+    """A double: one byte when v is a multiple of 1/8 in [-14, 13.875], else 9 bytes."""
+    if isinstance(v, str):
+        return bytes([SPECIAL[v]])
+    b = v * 8 + 128
+    if 16 <= b < 240 and b == int(b):
+        return bytes([int(b)])
+    return bytes([240]) + struct.pack("<d", v)
+
+
+def ident(v):
+    """A node id (before the harness adds the index base): -4..235 in one byte, else 5 bytes."""
+    if -4 <= v < 236:
+        return bytes([v + 4])
+    return bytes([246]) + struct.pack("<i", v)
+
+
+def body(b):
+    return {1: b"\x00", 2: b"\x01", 0: b"\xfa", 3: b"\xfb", -1: b"\xfc"}[b]
+
+
+def count(n):
+    return b"\xff" if n < 0 else bytes([n])
+
+
+def grid(b, npc, nx, ny, x0, y0, lx, ly, distortion=0, bow=0.0, corrupt=b"\x00"):
+    return (op("GRID_MESH") + body(b) + u8(npc - 3) + u8(nx - 1) + u8(ny - 1) + real(x0) + real(y0)
+            + real(lx) + real(ly) + u8(distortion) + real(bow) + corrupt)
+
+
+def material(b, young, poisson):
+    return op("MATERIAL") + body(b) + real(young) + real(poisson)
+
+
+def fix_side(b, side, mask, values=None):
+    out = op("FIX_SIDE") + body(b) + u8(side) + u8(mask)
+    return out + (u8(1) + real(values[0]) + real(values[1]) if values else u8(0))
+
+
+def fix_raw(b, nodes, mask, values=None):
+    out = op("FIX_RAW") + body(b) + count(len(nodes)) + b"".join(ident(n) for n in nodes) + u8(mask)
+    return out + (u8(1) + b"".join(real(v) for v in values) if values else u8(0))
+
+
+def traction_side(b, side, tx, ty):
+    return op("TRACTION_SIDE") + body(b) + u8(side) + real(tx) + real(ty)
+
+
+def pressure_side(b, side, p):
+    return op("PRESSURE_SIDE") + body(b) + u8(side) + real(p)
+
+
+def contact_side(b, side, first=0, n=0):
+    return op("CONTACT_SIDE") + body(b) + u8(side) + u8(first) + u8(n)
+
+
+def option_int(option, value):
+    if -1 <= value <= 4:
+        return op("OPTION_INT") + u8(option) + u8(value + 1)
+    return op("OPTION_INT") + u8(option) + u8(200) + struct.pack("<q", value)
+
+
+def option_real(option, value):
+    return op("OPTION_REAL") + u8(option) + real(value)
+
+
+def solve():
+    return op("SOLVE")
+
+
+# Two stacked blocks (as in tests/test_errors.c): body 1 = [0,1]x[0,0.5] P1 6x3 on body 2 =
+# [0,1]x[-0.5,0] Q1 8x4 clamped at its bottom; body 1 held by contact and u_x = 0 at one node.
+def stack(base_mid=24):  # node (3, 3) of the 6x3 grid: top middle
+    return (grid(1, 3, 6, 3, 0, 0, 1, 0.5) + grid(2, 4, 8, 4, 0, -0.5, 1, 0.5)
+            + material(1, 100.0, 0.3) + material(2, 200.0, 0.3) + fix_side(2, BOTTOM, 3)
+            + fix_raw(1, [base_mid], 1) + traction_side(1, TOP, 0, -1)
+            + contact_side(1, BOTTOM) + contact_side(2, TOP))
+
+
+SEEDS = {
+    "solve_cantilever": grid(1, 3, 6, 3, 0, 0, 2, 1, distortion=8) + material(1, 100.0, 0.3)
+    + fix_side(1, LEFT, 3) + traction_side(1, RIGHT, 0.25, -1) + op("BODY_FORCE") + body(1) + real(0) + real(-0.5)
+    + solve() + op("CLEAR_LOADS") + body(1) + pressure_side(1, TOP, 0.5) + solve(),
+    "solve_two_bodies_q1_plane_stress": op("PLANE") + u8(1) + real(0.5) + grid(1, 4, 4, 2, 0, 0, 2, 1)
+    + grid(2, 4, 3, 3, 5, 0, 1, 1) + material(1, 10.0, 0.25) + material(2, 20.0, 0.125)
+    + fix_side(1, LEFT, 3) + fix_side(2, BOTTOM, 3, (0.0, -0.125)) + option_int(6, 1) + solve(),
+    "contact_stack": stack() + solve() + traction_side(1, TOP, 0.5, -2) + solve() + op("QUERY"),
+    "contact_methods": stack() + option_int(1, 1) + solve() + option_int(1, 2) + solve()
+    + option_int(7, 1) + option_int(1, 0) + solve(),
+    "contact_curved": grid(1, 3, 8, 3, -1, 0, 2, 1, bow=0.25) + grid(2, 4, 8, 2, -1.5, -1, 3, 1)
+    + material(1, 100.0, 0.3) + material(2, 100.0, 0.3) + fix_side(1, TOP, 3, (0.0, -0.125))
+    + fix_side(2, BOTTOM, 3) + contact_side(1, BOTTOM) + contact_side(2, TOP) + solve()
+    + option_real(2, 1e-12) + option_int(3, 1) + solve() + option_int(3, 200) + solve(),
+    "index_base_one": op("INDEX_BASE") + u8(2) + stack() + solve() + op("QUERY")
+    + fix_raw(1, [0], 3) + fix_raw(1, [1000], 3) + solve(),
+    "bad_mesh_then_good": op("RAW_MESH") + body(1) + count(4) + b"".join(real(v) for v in (0, 0, 1, 0, 1, 1, 0, 1))
+    + count(2) + u8(1) + b"".join(ident(v) for v in (0, 2, 1, 0, 2, 3)) + u8(0)
+    + op("RAW_MESH") + body(1) + count(4) + b"".join(real(v) for v in (0, 0, 1, 0, 1, 1, 0, 1))
+    + count(1) + u8(2) + b"".join(ident(v) for v in (0, 1, 2, 7)) + u8(0)
+    + grid(1, 3, 2, 2, 0, 0, 1, 1, corrupt=u8(2) + u8(5) + ident(-1))
+    + grid(1, 3, 2, 2, 0, 0, 1, 1, corrupt=u8(1) + u8(3) + real("nan"))
+    + grid(1, 4, 2, 2, 0, 0, 1, 1, corrupt=u8(3) + u8(0) + u8(0) + u8(1))
+    + grid(1, 3, 2, 2, 0, 0, 1, 1) + material(1, 1.0, 0.3) + fix_side(1, BOTTOM, 3) + solve(),
+    "out_of_order": op("QUERY") + solve() + material(1, 1.0, 0.3) + contact_side(1, BOTTOM)
+    + grid(1, 3, 3, 2, 0, 0, 1, 1) + solve() + material(1, 0.0, 0.3) + material(1, 1.0, 0.5)
+    + material(3, 1.0, 0.3) + material(1, 1.0, 0.3) + op("QUERY") + contact_side(1, BOTTOM) + solve()
+    + op("NULLS") + fix_side(1, BOTTOM, 3) + grid(2, 3, 3, 2, 0, 0, 1, 1) + material(2, 1.0, 0.3)
+    + contact_side(2, BOTTOM) + solve() + op("QUERY"),
+    "singular_and_options": grid(1, 4, 3, 3, 0, 0, 1, 1) + material(1, 1.0, 0.3) + solve()
+    + fix_side(1, LEFT, 1) + solve() + fix_side(1, BOTTOM, 2) + option_int(4, 1) + solve()
+    + option_int(4, 2) + option_int(0, 1) + option_int(1, 7) + option_real(2, 0.0) + option_real(2, "nan")
+    + option_real(1, 0.5) + option_int(3, 1 << 40) + solve(),
+    "cell_law": grid(1, 3, 3, 2, 0, 0, 1, 1) + op("CELL_LAW") + body(1) + real(10.0) + real(0.25)
+    + u8(0) + u8(9) + real(0) + u8(0) + fix_side(1, LEFT, 3) + traction_side(1, RIGHT, 1, 0) + solve()
+    + op("CELL_LAW") + body(1) + real(10.0) + real(0.25) + u8(2) + u8(2) + real(3.0) + u8(0),
+    "new_features": stack() + op("LOG") + u8(1) + solve() + op("GAP_OFFSET") + count(2) + ident(1) + ident(2)
+    + real(0.125) + real(-0.125) + solve() + op("WRITE_VTU") + u8(0) + op("WRITE_VTU") + u8(1)
+    + op("LOG") + u8(0) + op("NEW_MODEL") + op("WRITE_VTU") + u8(0),
+    "edge_loads_raw": grid(1, 3, 2, 2, 0, 0, 1, 1) + material(1, 1.0, 0.3) + fix_side(1, LEFT, 3)
+    + op("EDGE_LOAD_RAW") + body(1) + u8(0) + count(2) + b"".join(ident(v) for v in (2, 5, 4, 5))
+    + b"".join(real(v) for v in (1, 0, 0, 1)) + u8(0)
+    + op("EDGE_LOAD_RAW") + body(1) + u8(1) + count(1) + ident(2) + ident(5) + real(1) + u8(0)
+    + op("NODAL_FORCE") + body(1) + count(2) + ident(8) + ident(9) + b"".join(real(v) for v in (1, 0, 0, 1))
+    + op("CONTACT_RAW") + body(1) + count(2) + b"".join(ident(v) for v in (0, 1, 1, 0))
+    + solve(),
+    # regressions: a bow-tie body 1 whose contact surface passes twice through a node (used to
+    # hang mc_solve), a fully supported body (used to give MC_ERROR_INTERNAL), overflow
+    "pinched_contact": op("RAW_MESH") + body(1) + count(5)
+    + b"".join(real(v) for v in (0, 0, 1, -1, 1, 1, -1, 1, -1, -1)) + count(2) + u8(1)
+    + b"".join(ident(v) for v in (0, 1, 2, 0, 3, 4)) + u8(0)
+    + grid(2, 4, 1, 1, -2, -3, 4, 1) + material(1, 1.0, 0.3) + material(2, 1.0, 0.3)
+    + fix_side(2, BOTTOM, 3) + fix_side(2, TOP, 3) + contact_side(2, TOP)
+    + op("CONTACT_RAW") + body(1) + count(4) + b"".join(ident(v) for v in (4, 0, 0, 1, 1, 2, 2, 0)) + solve()
+    + op("CONTACT_RAW") + body(1) + count(2) + b"".join(ident(v) for v in (3, 4, 4, 0))
+    + fix_raw(1, [0, 1, 3], 3) + op("BODY_FORCE") + body(1) + real(0) + real(-1) + solve(),
+    "fully_supported_and_overflow": grid(2, 4, 1, 1, 0, -1, 2, 1) + material(2, 1.0, 0.3)
+    + fix_side(2, BOTTOM, 3) + fix_side(2, TOP, 3) + solve()
+    + grid(1, 4, 2, 2, 0, 0, 1, 1) + material(1, 1.0, 0.3) + fix_side(1, TOP, 3, (0.0, -0.125))
+    + contact_side(1, BOTTOM) + contact_side(2, TOP) + solve()
+    + material(1, 1.7976931348623157e308, 0.3) + solve() + material(1, 1.0, 0.3)
+    + op("PLANE") + u8(0) + real(1e300) + solve(),
+}
+
+
+def main():
+    out = os.path.join(os.path.dirname(os.path.abspath(__file__)), "corpus")
+    os.makedirs(out, exist_ok=True)
+    for name, data in SEEDS.items():
+        with open(os.path.join(out, name), "wb") as f:
+            f.write(data)
+    print(f"wrote {len(SEEDS)} seeds to {out}")
+
+
+if __name__ == "__main__":
+    main()
