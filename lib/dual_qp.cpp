@@ -84,14 +84,18 @@ double nonnegative_least_squares(int k, int q, const std::vector<double> &a, con
 // Solves the equality-constrained problem on the active set A:
 //   S_AA l_A - G_A a = d_A,  G_A^T l_A = e.
 // Returns false if the system is singular (G_A does not hold the floating modes).
-// shift (>= 0) is added to the diagonal of S_AA (see primal_active_set).
+// shift (>= 0) is added to the diagonal of S_AA (see primal_active_set). With shift > 0 a G_A
+// of deficient rank is accepted: the primal method only asks this of sets on which G_A^T l = e
+// is consistent (its current feasible iterate lives there); the alpha block then gets -shift
+// on its diagonal, which picks the alpha of least norm (the rows outside A decide the rest of
+// alpha once they enter).
 bool solve_on_active_set(const DualQp &p, const std::vector<int> &act, double g_scale,
                          std::vector<double> &lambda, std::vector<double> &alpha, double shift = 0) {
   const int na = int(act.size()), k = p.k, n = na + k;
   lambda.assign(p.q, 0.0);
   alpha.assign(k, 0.0);
   if (n == 0) return true;
-  if (k > 0) {  // rank of G_A: its Gram matrix must be well conditioned
+  if (k > 0 && shift == 0) {  // rank of G_A: its Gram matrix must be well conditioned
     if (na < k) return false;
     std::vector<double> gram(size_t(k) * k, 0.0), eig(k);
     for (int a = 0; a < k; ++a)
@@ -107,6 +111,7 @@ bool solve_on_active_set(const DualQp &p, const std::vector<int> &act, double g_
   for (int b = 0; b < na; ++b)
     for (int a = 0; a < na; ++a) m[size_t(b) * n + a] = p.s[size_t(act[b]) * p.q + act[a]];
   for (int a = 0; a < na; ++a) m[size_t(a) * n + a] += shift;
+  for (int c = 0; c < k; ++c) m[size_t(na + c) * n + na + c] -= shift;
   for (int c = 0; c < k; ++c)
     for (int a = 0; a < na; ++a) {
       double v = -g_scale * p.g[size_t(c) * p.q + act[a]];

@@ -188,6 +188,7 @@ void Model::build_contact_operator() {
     double one = 1.0;
     dtrsm_("L", "L", "N", "N", &ng, &q, &one, l.data(), &ng, w.data(), &ng);
     dsyrk_("U", "T", &q, &ng, &one, w.data(), &ng, &one, cs.s.data(), &q);
+    cs.w[b] = std::move(w), cs.w_rows[b] = ng;
   }
   for (int j = 0; j < q; ++j)
     for (int i = j + 1; i < q; ++i) cs.s[size_t(j) * q + i] = cs.s[size_t(i) * q + j];
@@ -223,7 +224,7 @@ void Model::solve() {
 
   // Loads with the prescribed displacements lifted: f_eff = f - K u_prescribed.
   const double t_loads = now();
-  std::vector<double> f[2], lifted[2], v[2];
+  std::vector<double> f[2], lifted[2], v[2], y[2];
   for (int b = 0; b < 2; ++b) {
     if (!system_[b]) continue;
     BodySystem &sys = *system_[b];
@@ -237,15 +238,22 @@ void Model::solve() {
       lifted[b].resize(sys.stiffness.n);
       for (int i = 0; i < sys.stiffness.n; ++i) lifted[b][i] = body[b].prescribed[i] ? 0 : f[b][i] - kup[i];
     }
-    // v = K^+ f_eff
-    v[b].assign(sys.stiffness.n, 0.0);
+    // Without contact v = K^+ f_eff; with contact only its first half y = L^-1 P f_eff, which
+    // is all the interface problem needs (B v = W^T y_G); the recovery finishes the solve.
     std::vector<double> x(sys.solve_dofs.size());
     for (size_t k = 0; k < x.size(); ++k) x[k] = lifted[b][sys.solve_dofs[k]];
     {
       Stopwatch watch(infos.t_solve);
-      sys.cholesky.solve(x.data());
+      if (contact_) {
+        y[b].resize(x.size());
+        sys.cholesky.forward(x.data(), y[b].data());
+      } else {
+        sys.cholesky.solve(x.data());
+      }
     }
-    for (size_t k = 0; k < x.size(); ++k) v[b][sys.solve_dofs[k]] = x[k];
+    v[b].assign(sys.stiffness.n, 0.0);
+    if (!contact_)
+      for (size_t k = 0; k < x.size(); ++k) v[b][sys.solve_dofs[k]] = x[k];
     infos.dofs += long(sys.solve_dofs.size() + sys.rigid.pinned_dofs.size());
     infos.factor_nnz += sys.cholesky.factor_nnz();
   }
@@ -261,16 +269,26 @@ void Model::solve() {
     {
       Stopwatch watch(infos.t_contact);
       qp.s = cs.s;
+      // d = B K^+ f_eff - g0 (with the prescribed values' share of the gap): B K^+ f_eff is
+      // sum W_b^T y_G.
+      std::vector<double> bv(q, 0.0);
+      for (int b = 0; b < 2; ++b) {
+        const int ng = cs.w_rows[b];
+        if (ng == 0 || q == 0) continue;
+        int one = 1;
+        double plus = 1.0;
+        const double *y_interface = y[b].data() + system_[b]->cholesky.interface_start();
+        dgemv_("T", &ng, &q, &plus, cs.w[b].data(), &ng, y_interface, &one, &plus, bv.data(), &one);
+      }
       qp.d.assign(q, 0.0);
       for (int r = 0; r < q; ++r) {
-        double g = initial_gap(cs.rows.position[r]), bv = 0;
+        double g = initial_gap(cs.rows.position[r]);
         for (int b = 0; b < 2; ++b)
           for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) {
             int dof = cs.b_dof[b][p];
             if (body[b].prescribed[dof]) g -= cs.b_value[b][p] * body[b].prescribed_value[dof];
-            else bv += cs.b_value[b][p] * v[b][dof];
           }
-        qp.d[r] = bv - g;
+        qp.d[r] = bv[r] - g;
       }
       for (int b = 0; b < 2; ++b) {
         const RigidModes &rm = system_[b]->rigid;
@@ -350,17 +368,23 @@ void Model::solve() {
     if (!system_[b]) continue;
     BodySystem &sys = *system_[b];
     const int ndof = sys.stiffness.n;
-    std::vector<double> rhs(lifted[b]), contact_force(ndof, 0.0), rigid_motion(ndof, 0.0);  // R alpha
+    std::vector<double> contact_force(ndof, 0.0), rigid_motion(ndof, 0.0);  // rigid_motion: R alpha
     if (contact_) {
       for (int r = 0; r < contact_->rows.size(); ++r)
         for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
           contact_force[contact_->b_dof[b][p]] -= contact_->b_value[b][p] * lambda[r];
-      for (int i = 0; i < ndof; ++i) if (!body[b].prescribed[i]) rhs[i] += contact_force[i];
-      std::vector<double> x(sys.solve_dofs.size());
-      for (size_t k = 0; k < x.size(); ++k) x[k] = rhs[sys.solve_dofs[k]];
+      // u = K^+ (f_eff - B^T lambda) = P^T L^-T (y - [0; W lambda]): the backward half only.
+      std::vector<double> x(sys.solve_dofs.size()), z(y[b]);
+      const int ng = contact_->w_rows[b], q = contact_->rows.size();
+      if (ng > 0 && q > 0) {
+        int one = 1;
+        double minus = -1.0, plus = 1.0;
+        double *z_interface = z.data() + sys.cholesky.interface_start();
+        dgemv_("N", &ng, &q, &minus, contact_->w[b].data(), &ng, lambda.data(), &one, &plus, z_interface, &one);
+      }
       {
         Stopwatch watch(infos.t_solve);
-        sys.cholesky.solve(x.data());
+        sys.cholesky.backward(z.data(), x.data());
       }
       std::fill(v[b].begin(), v[b].end(), 0.0);
       for (size_t k = 0; k < x.size(); ++k) v[b][sys.solve_dofs[k]] = x[k];

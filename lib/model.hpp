@@ -59,6 +59,11 @@ struct ContactSystem {
   std::vector<int> b_start[2], b_dof[2];
   std::vector<double> b_value[2];
   std::vector<double> s;           // q x q interface operator B K^+ B^T
+  // W_b = L_GG^-1 (P B_b^T)_G per body (rows: the factor's trailing interface unknowns, q
+  // columns): S = sum W_b^T W_b, B K^-1 f = sum W_b^T (L^-1 P f)_G, and the recovery needs
+  // only L^-1 P B^T lambda = [0; W_b lambda]: one forward and one backward solve per body.
+  std::vector<double> w[2];
+  int w_rows[2] = {0, 0};
   std::vector<char> last_active;
 };
 

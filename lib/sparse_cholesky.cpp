@@ -168,6 +168,46 @@ void SparseCholesky::solve(double *x, int nrhs) const {
   cholmod_free_dense(&solution, &d.common);
 }
 
+namespace {
+// One triangular solve with the factor (system CHOLMOD_L or CHOLMOD_Lt) in place on x.
+void triangular_solve(cholmod_factor *factor, cholmod_common &common, int system, double *x, int n) {
+  cholmod_dense b;
+  std::memset(&b, 0, sizeof b);
+  b.nrow = b.d = b.nzmax = size_t(n);
+  b.ncol = 1;
+  b.x = x;
+  b.xtype = CHOLMOD_REAL;
+  b.dtype = CHOLMOD_DOUBLE;
+  cholmod_dense *solution;
+  {
+    CholmodWithoutOpenMpTeam serial_openmp;
+    solution = cholmod_solve(system, factor, &b, &common);
+  }
+  if (!solution) fail(MC_ERROR_INTERNAL, "CHOLMOD failed in a triangular solve (status %d)", common.status);
+  std::memcpy(x, solution->x, sizeof(double) * size_t(n));
+  cholmod_free_dense(&solution, &common);
+}
+}  // namespace
+
+void SparseCholesky::forward(const double *b, double *y) const {
+  Impl &d = *impl_;
+  if (n_ == 0) return;
+  const int *perm = static_cast<const int *>(d.factor->Perm);
+  for (int k = 0; k < n_; ++k) y[k] = b[perm[k]];
+  triangular_solve(d.factor, d.common, CHOLMOD_L, y, n_);
+}
+
+void SparseCholesky::backward(const double *z, double *x) const {
+  Impl &d = *impl_;
+  if (n_ == 0) return;
+  std::vector<double> t(z, z + n_);
+  triangular_solve(d.factor, d.common, CHOLMOD_Lt, t.data(), n_);
+  const int *perm = static_cast<const int *>(d.factor->Perm);
+  for (int k = 0; k < n_; ++k) x[perm[k]] = t[k];
+}
+
+int SparseCholesky::interface_start() const { return n_ - int(impl_->interface.size()); }
+
 std::vector<double> SparseCholesky::interface_factor(std::vector<int> &order) const {
   const Impl &d = *impl_;
   const cholmod_factor *f = d.factor;

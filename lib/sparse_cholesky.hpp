@@ -25,6 +25,12 @@ public:
   void factorize(const SymmetricCsc &a);
   // x <- A^-1 x, for nrhs right-hand sides stored one after the other (n each).
   void solve(double *x, int nrhs = 1) const;
+  // The two halves of a solve, A = P^T L L^T P: y = L^-1 P b (y in the factor's order) and
+  // x = P^T L^-T z. The contact solve works between them: the interface unknowns are the
+  // trailing ones (from interface_start()), where L^-1 P B^T is the only nonzero part.
+  void forward(const double *b, double *y) const;
+  void backward(const double *z, double *x) const;
+  int interface_start() const;
   // The trailing block L_GG (dense, column-major, |interface|^2, lower triangular) in the
   // factor's order; order[k] is the position in the interface list (given to analyze) of
   // the factor's k-th interface unknown.

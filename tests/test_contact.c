@@ -374,6 +374,46 @@ START_TEST(gap_offset_is_a_clearance_or_an_interference) {
 }
 END_TEST
 
+/* Found by the fuzz corpus (tests/fuzz/corpus/new_features): body 1 free to sink and to tilt
+   (u_x held at one node), one gap opened and its neighbour's closed by offsets. The primal-dual
+   iteration loses the floating body, and the primal active-set fallback then passes through a
+   set whose rows hold only some of the modes; it must still reach the solution. */
+START_TEST(gap_offsets_tilting_a_floating_body) {
+  const double offsets[4] = {0.01, 0.05, 0.125, 0.3};
+  for (int method = 0; method < 3; ++method)
+    for (int k = 0; k < 4; ++k) {
+      blocks s;
+      mc_model *m = NULL;
+      ck_assert_int_eq(mc_create(&m), MC_OK);
+      s.m = m;
+      ck_assert_int_eq(sc_mesh_rect(&s.mesh[0], 3, 6, 3, 0, 0, 1, 0.5, 0, 1), 0);
+      ck_assert_int_eq(sc_mesh_rect(&s.mesh[1], 4, 8, 4, 0, -0.5, 1, 0.5, 0, 2), 0);
+      for (int b = 0; b < 2; ++b) OK(sc_set_mesh(m, b + 1, &s.mesh[b], 0));
+      OK(mc_set_material(m, 1, 100, 0.3));
+      OK(mc_set_material(m, 2, 200, 0.3));
+      OK(sc_fix_side(m, 2, &s.mesh[1], SC_BOTTOM, MC_XY, 0));
+      mc_int top_middle = sc_node(&s.mesh[0], 3, 3);
+      OK(mc_fix(m, 1, 1, &top_middle, MC_X, NULL));
+      const sc_mesh *b1 = &s.mesh[0];
+      double *t = malloc(sizeof(double) * 2 * b1->n_side_edges[SC_TOP]);
+      for (int e = 0; e < b1->n_side_edges[SC_TOP]; ++e) t[2 * e] = 0, t[2 * e + 1] = -1;
+      OK(mc_add_traction(m, 1, b1->n_side_edges[SC_TOP], b1->side_edges[SC_TOP], t));
+      free(t);
+      OK(mc_set_contact(m, 1, b1->n_side_edges[SC_BOTTOM], b1->side_edges[SC_BOTTOM]));
+      OK(mc_set_contact(m, 2, s.mesh[1].n_side_edges[SC_TOP], s.mesh[1].side_edges[SC_TOP]));
+      OK(mc_set_option_int(m, MC_OPTION_METHOD, method));
+      OK(mc_solve(m));
+      mc_int nodes[2] = {sc_node(b1, 1, 0), sc_node(b1, 2, 0)};
+      double offset[2] = {offsets[k], -offsets[k]};
+      OK(mc_set_gap_offset(m, 2, nodes, offset));
+      OK(mc_solve(m));
+      double load1[2] = {0, -1}, load2[2] = {0, 0};
+      check_kkt_and_equilibrium(&s, load1, load2);
+      blocks_free(&s);
+    }
+}
+END_TEST
+
 /* ---- floating bodies ---------------------------------------------------- */
 
 START_TEST(floating_body_pulled_away_is_singular) {
@@ -540,6 +580,7 @@ int main(void) {
   tcase_add_test(tc, kkt_and_equilibrium_non_matching);
   tcase_add_test(tc, no_contact_is_exactly_zero);
   tcase_add_test(tc, gap_offset_is_a_clearance_or_an_interference);
+  tcase_add_test(tc, gap_offsets_tilting_a_floating_body);
   tcase_add_test(tc, floating_body_pulled_away_is_singular);
   tcase_add_test(tc, floating_in_all_modes_without_contact_is_singular);
   tcase_add_test(tc, partial_overlap_drops_unseen_nodes);
