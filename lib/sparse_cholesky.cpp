@@ -39,6 +39,9 @@ public:
 
 private:
   int dynamic_, threads_;
+#else
+  CholmodWithoutOpenMpTeam() {}  // (user-provided: a guard object, not an unused variable)
+  ~CholmodWithoutOpenMpTeam() {}
 #endif
 };
 }  // namespace
