@@ -231,10 +231,12 @@ void Model::solve() {
     {
       Stopwatch watch(infos.t_assembly);
       f[b] = load_vector(b);
-      std::vector<double> up(sys.stiffness.n, 0.0), kup(sys.stiffness.n);
+      std::vector<double> up(sys.stiffness.n, 0.0), kup(sys.stiffness.n, 0.0);
+      bool any_prescribed_motion = false;  // supports at rest (the usual case) lift nothing
       for (int i = 0; i < sys.stiffness.n; ++i)
-        if (body[b].prescribed[i]) up[i] = body[b].prescribed_value[i];
-      sys.stiffness.multiply(up.data(), kup.data());
+        if (body[b].prescribed[i] && body[b].prescribed_value[i] != 0)
+          up[i] = body[b].prescribed_value[i], any_prescribed_motion = true;
+      if (any_prescribed_motion) sys.stiffness.multiply(up.data(), kup.data());
       lifted[b].resize(sys.stiffness.n);
       for (int i = 0; i < sys.stiffness.n; ++i) lifted[b][i] = body[b].prescribed[i] ? 0 : f[b][i] - kup[i];
     }
@@ -257,7 +259,8 @@ void Model::solve() {
     infos.dofs += long(sys.solve_dofs.size() + sys.rigid.pinned_dofs.size());
     infos.factor_nnz += sys.cholesky.factor_nnz();
   }
-  progress(MC_LOG_PHASE, "loads: load vectors and v = K^+ f, %.3g s", now() - t_loads);
+  progress(MC_LOG_PHASE, "loads: load vectors and %s, %.3g s", contact_ ? "forward solves y = L^-1 P f" : "solves v = K^-1 f",
+           now() - t_loads);
 
   std::vector<double> lambda;
   std::vector<double> alpha;
