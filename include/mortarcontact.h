@@ -118,7 +118,8 @@ enum {
   MC_INFO_TIME_TOTAL = 25,         /* real, seconds: the whole mc_solve */
   MC_INFO_STRAIN_ENERGY = 26,      /* real: 1/2 u^T K u over both bodies */
   MC_INFO_COMPLEMENTARITY = 27,    /* real: largest relative violation of lambda>=0, gap>=0, lambda*gap=0 */
-  MC_INFO_EQUILIBRIUM = 28         /* real: ||K u + B^T lambda - f|| / ||f|| on the free unknowns */
+  MC_INFO_EQUILIBRIUM = 28         /* real: ||K u + B^T lambda - f|| / ||f - K u_prescribed, B^T lambda||
+                                      on the free unknowns (u without its rigid-mode part) */
 };
 
 /* ---- lifecycle, errors, version ---------------------------------------- */
@@ -189,8 +190,8 @@ MC_API mc_status mc_set_contact(mc_model *m, int body, mc_int n_edges, const mc_
 /* Adds offset[k] (a length, may be negative) to the initial gap g0 of body-1 node nodes[k]:
    a clearance (> 0) or an interference (< 0) that the meshes do not show, e.g. a coating or a
    shrink fit. Replaces earlier offsets of those nodes; nodes not on body 1's contact surface
-   are an MC_ERROR_ARGUMENT. Like loads, changing offsets keeps the factorizations and the
-   interface operator for the next solve. */
+   are an MC_ERROR_ARGUMENT; before mc_set_contact of body 1, MC_ERROR_STATE. Like loads,
+   changing offsets keeps the factorizations and the interface operator for the next solve. */
 MC_API mc_status mc_set_gap_offset(mc_model *m, mc_int n, const mc_int *nodes, const double *offset);
 
 /* ---- options and solving ------------------------------------------------ */
