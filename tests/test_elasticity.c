@@ -692,11 +692,4 @@ static Suite *elasticity_suite(void) {
   return s;
 }
 
-int main(void) {
-  SRunner *sr = srunner_create(elasticity_suite());
-  int failed;
-  srunner_run_all(sr, CK_NORMAL);
-  failed = srunner_ntests_failed(sr);
-  srunner_free(sr);
-  return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
-}
+int main(void) { return sc_run_suite(elasticity_suite()); }

@@ -369,11 +369,4 @@ static Suite *mesh_suite(void) {
   return s;
 }
 
-int main(void) {
-  SRunner *sr = srunner_create(mesh_suite());
-  int failed;
-  srunner_run_all(sr, CK_NORMAL);
-  failed = srunner_ntests_failed(sr);
-  srunner_free(sr);
-  return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
-}
+int main(void) { return sc_run_suite(mesh_suite()); }
