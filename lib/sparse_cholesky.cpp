@@ -196,8 +196,11 @@ void SparseCholesky::forward(const double *b, double *y) const {
   Impl &d = *impl_;
   if (n_ == 0) return;
   const int *perm = static_cast<const int *>(d.factor->Perm);
-  for (int k = 0; k < n_; ++k) y[k] = b[perm[k]];
-  triangular_solve(d.factor, d.common, CHOLMOD_L, y, n_);
+  bool zero = true;
+  for (int k = 0; k < n_; ++k) y[k] = b[perm[k]], zero = zero && y[k] == 0;
+  // A body loaded only through contact (a foundation held by supports at rest): L^-1 0 = 0,
+  // and a quarter of a re-solve's work is saved.
+  if (!zero) triangular_solve(d.factor, d.common, CHOLMOD_L, y, n_);
 }
 
 void SparseCholesky::backward(const double *z, double *x) const {
