@@ -10,20 +10,7 @@
 set(_mc_docs ${PROJECT_SOURCE_DIR}/docs)
 set(_mc_check_docs ${PROJECT_SOURCE_DIR}/tools/check_docs.py)
 
-# A Python 3 with numpy for the Python tutorial, found as bindings/CMakeLists.txt finds it
-# (/usr/bin/python3 first: a python3 earlier on PATH may lack numpy); the same cache variable.
-if(NOT MC_PYTHON)
-  find_program(_mc_path_python3 NAMES python3)
-  foreach(_py /usr/bin/python3 ${_mc_path_python3})
-    if(EXISTS ${_py})
-      execute_process(COMMAND ${_py} -c "import numpy, ctypes" RESULT_VARIABLE _rc OUTPUT_QUIET ERROR_QUIET)
-      if(_rc EQUAL 0)
-        set(MC_PYTHON ${_py} CACHE FILEPATH "Python 3 interpreter with numpy for the bindings' tests")
-        break()
-      endif()
-    endif()
-  endforeach()
-endif()
+# A Python 3 with numpy for the Python tutorial: MC_PYTHON (cmake/PythonWithNumpy.cmake).
 if(MC_PYTHON)
   set(_mc_tutorial_env "MORTARCONTACT_LIBRARY=$<TARGET_FILE:mortarcontact>"
       "PYTHONPATH=${PROJECT_SOURCE_DIR}/bindings/python" "PYTHONDONTWRITEBYTECODE=1")
