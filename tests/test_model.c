@@ -75,39 +75,6 @@ START_TEST(test_status_strings) {
 END_TEST
 
 /* Every entry point taking a model rejects NULL with MC_ERROR_ARGUMENT. */
-START_TEST(test_null_model) {
-  double xy[6] = {0, 0, 1, 0, 0, 1}, v[8];
-  mc_int cells[3] = {0, 1, 2}, id = 0, n;
-  int64_t iv;
-  ck_assert_int_eq(mc_set_index_base(NULL, 0), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_set_plane(NULL, MC_PLANE_STRAIN, 1), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_set_mesh(NULL, 1, 3, xy, 1, 3, cells), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_set_material(NULL, 1, 1, 0.3), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_set_cell_elasticity(NULL, 1, v), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_fix(NULL, 1, 1, &id, MC_XY, NULL), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_add_traction(NULL, 1, 1, cells, v), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_add_pressure(NULL, 1, 1, cells, v), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_add_nodal_force(NULL, 1, 1, &id, v), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_set_body_force(NULL, 1, 0, 0), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_clear_loads(NULL, 1), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_set_contact(NULL, 1, 1, cells), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_set_option_int(NULL, MC_OPTION_METHOD, 0), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_set_option_real(NULL, MC_OPTION_TOLERANCE, 1e-8), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_solve(NULL), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_get_info_int(NULL, MC_INFO_DOFS, &iv), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_get_info_real(NULL, MC_INFO_STRAIN_ENERGY, v), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_get_displacement(NULL, 1, v), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_get_stress(NULL, 1, v), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_get_reaction(NULL, 1, v), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_get_contact_count(NULL, &n), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_get_contact_nodes(NULL, &n), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_get_contact_pressure(NULL, v), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_get_contact_force(NULL, v), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_get_contact_gap(NULL, v), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_get_contact_initial_gap(NULL, v), MC_ERROR_ARGUMENT);
-  ck_assert_int_eq(mc_get_contact_normal(NULL, v), MC_ERROR_ARGUMENT);
-}
-END_TEST
 
 /* ---- a small solved scene ----------------------------------------------------- */
 
@@ -622,7 +589,6 @@ static Suite *model_suite(void) {
   tcase_add_test(tc, test_version);
   tcase_add_test(tc, test_create_destroy);
   tcase_add_test(tc, test_status_strings);
-  tcase_add_test(tc, test_null_model);
   tcase_add_test(tc, test_models_independent);
   suite_add_tcase(s, tc);
   tc = tcase_create("options_infos");
