@@ -75,7 +75,10 @@ enum {
   MC_OPTION_MAX_ITERATIONS = 3, /* int: active-set iterations before MC_ERROR_NOT_CONVERGED; default 200 */
   MC_OPTION_ORDERING = 4,       /* int: MC_ORDERING_*; fill-reducing ordering; default MC_ORDERING_AUTO */
   MC_OPTION_Q1_INTEGRATION = 6, /* int: MC_Q1_*; default MC_Q1_FULL */
-  MC_OPTION_CONTACT_NORMAL = 7  /* int: MC_NORMAL_*; default MC_NORMAL_NONMORTAR */
+  MC_OPTION_CONTACT_NORMAL = 7, /* int: MC_NORMAL_*; default MC_NORMAL_NONMORTAR */
+  MC_OPTION_CONTACT_SURFACE = 8, /* int: MC_SURFACE_*; the geometry of gaps and normals; default MC_SURFACE_SMOOTH */
+  MC_OPTION_FEATURE_ANGLE = 9    /* real, degrees in (0, 180): a contact chain is split into separately
+                                    smoothed runs where adjacent edges turn by more than this; default 45 */
 };
 
 /* Values of MC_OPTION_METHOD: how the non-penetration condition is discretized. */
@@ -91,6 +94,14 @@ enum {
 enum {
   MC_NORMAL_NONMORTAR = 0, /* body 1's nodal normal: mean of its adjacent edge normals */
   MC_NORMAL_MORTAR = 1     /* minus body 2's normal at the closest point of its surface */
+};
+
+/* Values of MC_OPTION_CONTACT_SURFACE: the geometry the contact constraint is measured on.
+   The mesh itself never moves; only gaps and constraint normals use the chosen surface. */
+enum {
+  MC_SURFACE_SMOOTH = 0, /* a C1 curve through each surface's nodes (cubic Hermite, nodal normals
+                            exact on circles); split at corners sharper than MC_OPTION_FEATURE_ANGLE */
+  MC_SURFACE_FACETED = 1 /* the straight mesh edges, nodal normals the mean of the edge normals (0.1) */
 };
 
 /* Values of MC_OPTION_ORDERING. */

@@ -454,8 +454,16 @@ mc_status mc_set_option_int(mc_model *m, int option, int64_t value) {
         model.options.contact_normal = int(value);
         model.structure_changed();
         break;
+      case MC_OPTION_CONTACT_SURFACE:
+        if (value != MC_SURFACE_SMOOTH && value != MC_SURFACE_FACETED)
+          fail(MC_ERROR_ARGUMENT, "value = %lld: MC_OPTION_CONTACT_SURFACE takes MC_SURFACE_SMOOTH (0) or "
+               "MC_SURFACE_FACETED (1)", (long long)value);
+        model.options.contact_surface = int(value);
+        model.structure_changed();
+        break;
       case MC_OPTION_TOLERANCE:
-        fail(MC_ERROR_ARGUMENT, "option = %d (MC_OPTION_TOLERANCE) is real-valued: use mc_set_option_real", option);
+      case MC_OPTION_FEATURE_ANGLE:
+        fail(MC_ERROR_ARGUMENT, "option = %d is real-valued: use mc_set_option_real", option);
       default:
         fail(MC_ERROR_ARGUMENT, "option = %d: not an integer option", option);
     }
@@ -464,9 +472,17 @@ mc_status mc_set_option_int(mc_model *m, int option, int64_t value) {
 
 mc_status mc_set_option_real(mc_model *m, int option, double value) {
   return guard(m, [&](mc::Model &model) {
+    if (option == MC_OPTION_FEATURE_ANGLE) {
+      if (!(value > 0 && value < 180))
+        fail(MC_ERROR_ARGUMENT, "value = %g: MC_OPTION_FEATURE_ANGLE must lie in (0, 180) degrees", value);
+      model.options.feature_angle = value;
+      model.structure_changed();
+      return;
+    }
     if (option != MC_OPTION_TOLERANCE) {
       if (option == MC_OPTION_METHOD || option == MC_OPTION_MAX_ITERATIONS || option == MC_OPTION_ORDERING ||
-          option == MC_OPTION_Q1_INTEGRATION || option == MC_OPTION_CONTACT_NORMAL)
+          option == MC_OPTION_Q1_INTEGRATION || option == MC_OPTION_CONTACT_NORMAL ||
+          option == MC_OPTION_CONTACT_SURFACE)
         fail(MC_ERROR_ARGUMENT, "option = %d is integer-valued: use mc_set_option_int", option);
       fail(MC_ERROR_ARGUMENT, "option = %d: not a real option", option);
     }

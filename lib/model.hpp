@@ -74,6 +74,8 @@ struct Options {
   int ordering = MC_ORDERING_AUTO;
   int q1_integration = MC_Q1_FULL;
   int contact_normal = MC_NORMAL_NONMORTAR;
+  int contact_surface = MC_SURFACE_SMOOTH;
+  double feature_angle = 45;  // degrees
 };
 
 struct Infos {
