@@ -19,6 +19,9 @@ struct mc_model {
 
 namespace {
 
+// Consecutive contact edges turning by more than this fold back on themselves (mc_set_contact).
+constexpr double kFoldAngleDegrees = 175;
+
 using mc::fail;
 
 template <class F>
@@ -389,6 +392,21 @@ mc_status mc_set_contact(mc_model *m, int body, mc_int n_edges, const mc_int *ed
              int(edges[2 * size_t(other)]), int(edges[2 * size_t(other) + 1]),
              leaving[seg.a] >= 0 ? "leave" : "arrive at", (leaving[seg.a] >= 0 ? seg.a : seg.b) + model.index_base);
       leaving[seg.a] = arriving[seg.b] = int(e);
+    }
+    // A chain that folds back on itself (consecutive edges turning by nearly 180 degrees) has no
+    // normal where it turns and its two faces overlap: no contact surface.
+    for (int node = 0; node < b.mesh.n_nodes(); ++node) {
+      const int in = arriving[node], out = leaving[node];
+      if (in < 0 || out < 0) continue;
+      const mc::Point p = b.mesh.node(surface[in].a), q = b.mesh.node(node), r = b.mesh.node(surface[out].b);
+      const double dx1 = q.x - p.x, dy1 = q.y - p.y, dx2 = r.x - q.x, dy2 = r.y - q.y;
+      const double turn = std::atan2(dx1 * dy2 - dy1 * dx2, dx1 * dx2 + dy1 * dy2) * 180 / 3.14159265358979323846;
+      if (std::fabs(turn) > kFoldAngleDegrees)
+        fail(MC_ERROR_CONTACT, "edges[%d..%d] = (%d, %d) and edges[%d..%d] = (%d, %d) fold back at node %d: the surface "
+             "turns by %.1f degrees there (more than %.0f): a contact surface must not fold back on itself",
+             2 * in, 2 * in + 1, int(edges[2 * size_t(in)]), int(edges[2 * size_t(in) + 1]), 2 * out, 2 * out + 1,
+             int(edges[2 * size_t(out)]), int(edges[2 * size_t(out) + 1]), node + model.index_base, turn,
+             kFoldAngleDegrees);
     }
     b.contact = std::move(surface);
     b.has_contact = true;

@@ -3,12 +3,14 @@
 #include "mortarcontact.h"
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace mc {
 
 namespace {
 
 double cross(Point u, Point v) { return u.x * v.y - u.y * v.x; }
+double dot(Point u, Point v) { return u.x * v.x + u.y * v.y; }
 Point minus(Point u, Point v) { return {u.x - v.x, u.y - v.y}; }
 Point lerp(Point u, Point v, double s) { return {u.x + s * (v.x - u.x), u.y + s * (v.y - u.y)}; }
 Point unit(Point u) {
@@ -18,108 +20,8 @@ Point unit(Point u) {
 // Outward normal of an edge a->b with the body on its left.
 Point edge_normal(Point a, Point b) { return unit({b.y - a.y, a.x - b.x}); }
 
-// Chains of a surface: sequences of nodes following the edges' orientation.
-struct Chain {
-  std::vector<int> nodes;
-  bool closed = false;
-};
-
-std::vector<Chain> chains_of(const std::vector<SurfaceSegment> &surface) {
-  std::vector<std::pair<int, int>> next;  // (from, to), sorted by from
-  for (auto &s : surface) next.push_back({s.a, s.b});
-  std::sort(next.begin(), next.end());
-  auto successor = [&](int node) {
-    auto it = std::lower_bound(next.begin(), next.end(), std::make_pair(node, -1));
-    return it != next.end() && it->first == node ? it->second : -1;
-  };
-  std::vector<int> heads;
-  {
-    std::vector<int> targets;
-    for (auto &s : surface) targets.push_back(s.b);
-    std::sort(targets.begin(), targets.end());
-    for (auto &s : surface)
-      if (!std::binary_search(targets.begin(), targets.end(), s.a)) heads.push_back(s.a);
-    std::sort(heads.begin(), heads.end());
-  }
-  std::vector<char> used_edge(next.size(), 0);
-  auto take = [&](int from) {
-    auto it = std::lower_bound(next.begin(), next.end(), std::make_pair(from, -1));
-    used_edge[it - next.begin()] = 1;
-  };
-  std::vector<Chain> chains;
-  for (int head : heads) {
-    Chain c;
-    for (int node = head; node >= 0; node = successor(node)) {
-      c.nodes.push_back(node);
-      if (successor(node) >= 0) take(node);
-    }
-    chains.push_back(c);
-  }
-  for (size_t e = 0; e < next.size(); ++e) {  // what is left are closed loops
-    if (used_edge[e]) continue;
-    Chain c;
-    c.closed = true;
-    int start = next[e].first;
-    int node = start;
-    do {
-      c.nodes.push_back(node);
-      take(node);
-      node = successor(node);
-    } while (node != start);
-    chains.push_back(c);
-  }
-  return chains;
-}
-
-// Ray p + t n against body 2's segments: the facing segment hit nearest to p (|t| least).
-// Returns t (kNoGap if no hit) and the point.
-double cast_ray(Point p, Point n, const Mesh &body2, const std::vector<SurfaceSegment> &segments,
-                SurfacePoint &hit) {
-  double best = kNoGap;
-  hit = SurfacePoint{};
-  for (size_t s = 0; s < segments.size(); ++s) {
-    Point a = body2.node(segments[s].a), b = body2.node(segments[s].b);
-    Point e = minus(b, a);
-    double det = cross(n, e);
-    Point n2 = edge_normal(a, b);
-    if (n.x * n2.x + n.y * n2.y >= 0 || std::fabs(det) < 1e-14 * std::hypot(e.x, e.y)) continue;
-    Point w = minus(a, p);
-    double t = cross(w, e) / det, eta = cross(w, n) / det;
-    if (eta < -1e-12 || eta > 1 + 1e-12) continue;
-    if (std::fabs(t) < std::fabs(best)) best = t, hit = SurfacePoint{int(s), std::clamp(eta, 0.0, 1.0)};
-  }
-  return best;
-}
-
-// eta on the (infinite) line of segment s of the ray p + t n.
-double eta_on_line(Point p, Point n, Point a, Point b) {
-  Point e = minus(b, a);
-  return cross(minus(a, p), n) / cross(n, e);
-}
-
-// The xi in [0,1] at which the normal line of body-1 segment (xa,na)-(xb,nb), normals
-// interpolated linearly, passes through y: cross(x(xi) - y, n(xi)) = 0, a quadratic.
-bool inverse_projection(Point xa, Point xb, Point na, Point nb, Point y, double &xi) {
-  Point dx = minus(xb, xa), dn = minus(nb, na), w = minus(xa, y);
-  double c0 = cross(w, na), c1 = cross(w, dn) + cross(dx, na), c2 = cross(dx, dn);
-  double scale = std::fabs(c1) + std::fabs(c0) + std::fabs(c2);
-  std::vector<double> roots;
-  if (std::fabs(c2) <= 1e-12 * scale) {
-    if (c1 != 0) roots.push_back(-c0 / c1);
-  } else {
-    double disc = c1 * c1 - 4 * c2 * c0;
-    if (disc < 0) return false;
-    double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
-    if (q != 0) roots.push_back(c0 / q);
-    roots.push_back(q / c2);
-  }
-  for (double r : roots)
-    if (r > 1e-12 && r < 1 - 1e-12) {
-      xi = r;
-      return true;
-    }
-  return false;
-}
+// The direction along which body 1 looks for body 2 at (segment, parameter) of its curve.
+using LookDirection = std::function<Point(int, double)>;
 
 // Minus body 2's outward normal at the point of its surface closest to p, among the segments
 // facing p's own normal; at a vertex of body 2, the mean of its two edges' normals. Keeps
@@ -142,6 +44,194 @@ Point mortar_side_normal(Point p, Point fallback, const Mesh &body2, const std::
     }
   }
   return result;
+}
+
+// The xi in (0,1) at which the look direction of body-1 segment `seg` passes through y:
+// a root of f(xi) = cross(y - x(xi), n(xi)), bracketed by the segment's ends (Illinois method).
+bool inverse_projection(const SurfaceCurve &curve, int seg, const LookDirection &look, Point y, double &xi) {
+  auto f = [&](double s) { return cross(minus(y, curve.point(seg, s)), look(seg, s)); };
+  double a = 0, b = 1, fa = f(a), fb = f(b);
+  if (fa == 0 || fb == 0 || (fa > 0) == (fb > 0)) return false;
+  int side = 0;
+  for (int it = 0; it < 100 && b - a > 1e-15; ++it) {
+    const double c = (a * fb - b * fa) / (fb - fa), fc = f(c);
+    if (fc == 0) {
+      a = b = c;
+      break;
+    }
+    if ((fc > 0) == (fb > 0)) {
+      b = c, fb = fc;
+      if (side == -1) fa *= 0.5;
+      side = -1;
+    } else {
+      a = c, fa = fc;
+      if (side == +1) fb *= 0.5;
+      side = +1;
+    }
+  }
+  xi = 0.5 * (a + b);
+  return xi > 1e-12 && xi < 1 - 1e-12;
+}
+
+// A covered piece of edge k of a body-1 face: [xi0, xi1] sees body-2 segment `mortar` along the
+// look direction. `shift` places it on the face's parameter line t = shift + k + xi (a closed
+// face's run that wraps past its first node shifts the pieces before it by -edges).
+struct CoveredPiece {
+  int k;
+  double xi0, xi1;
+  int mortar;
+  double shift = 0;
+  double t0() const { return shift + k + xi0; }
+  double t1() const { return shift + k + xi1; }
+};
+
+// Gauss-Legendre points on [0,1]: exact for polynomials of degree 5.
+constexpr double kGaussPoint[3] = {0.1127016653792583, 0.5, 0.8872983346207417};
+constexpr double kGaussWeight[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
+// Trace points closer than this (in the segment's parameter) to a node are that node: a shorter
+// end element would make its multiplier's row ill-conditioned (its integrals scale with its length),
+// and snapping moves the answer by O(kSnap) only.
+constexpr double kSnap = 1e-6;
+
+// What building the runs of one body-1 face needs.
+struct FaceContext {
+  const ContactGeometry &g;
+  int face, edges;
+  bool closed;
+  int first_position;  // position of face node 0; node k is first_position + k (mod size if closed)
+  LookDirection look;
+
+  int position(int k) const {
+    const int m = closed ? edges : edges + 1;
+    return first_position + ((k % m) + m) % m;
+  }
+  int segment(int k) const { return g.nonmortar.segment_of(face, k); }
+};
+
+// Projects the body-1 point x along n onto body-2 segment `mortar` (the one the adjacent
+// covered piece sees): used at the ends of Gamma_c, where a ray may just miss. Returns the
+// body-2 point and sets the distance t along n.
+SurfacePoint project_onto(const SurfaceCurve &mortar_curve, int mortar, Point x, Point n, double &t) {
+  double s;
+  if (mortar_curve.intersect_line(mortar, x, n, 1e-6, s, t)) return {mortar, std::clamp(s, 0.0, 1.0)};
+  const CurveSegment &c = mortar_curve.segments()[mortar];
+  Point e = minus(c.pb, c.pa);
+  s = std::clamp(dot(minus(x, c.pa), e) / dot(e, e), 0.0, 1.0);
+  t = dot(minus(mortar_curve.point(mortar, s), x), n);
+  return {mortar, s};
+}
+
+// The trace point at face parameter t: a position (t at a node) or a point inside a segment.
+// `adjacent` is a covered piece next to it, whose body-2 segment it projects onto if its own
+// ray misses body 2.
+TracePoint trace_point(const FaceContext &f, double t, const CoveredPiece &adjacent) {
+  TracePoint p;
+  const double nearest = std::round(t);
+  Point x, n;
+  if (std::fabs(t - nearest) <= kSnap) {
+    p.a = f.position(int(nearest));
+    if (f.g.projection[p.a].segment >= 0) {
+      p.normal = f.g.normals[p.a], p.gap0 = f.g.gap0[p.a], p.projection = f.g.projection[p.a];
+      return p;
+    }
+    x = f.g.nonmortar.point(f.segment(int(nearest)), 0);
+    if (!f.closed && int(nearest) == f.edges) x = f.g.nonmortar.point(f.segment(f.edges - 1), 1);
+    n = f.g.normals[p.a];
+  } else {
+    const int k = int(std::floor(t));
+    p.a = f.position(k), p.b = f.position(k + 1), p.xi = t - k;
+    x = f.g.nonmortar.point(f.segment(k), p.xi);
+    n = f.look(f.segment(k), p.xi);
+  }
+  p.normal = n;
+  p.projection = project_onto(f.g.mortar, adjacent.mortar, x, n, p.gap0);
+  return p;
+}
+
+// Quadrature points of piece p inside the element [t0, t1] of a run, and its share of the
+// positions' tributary lengths (the integral of each body-1 hat function over Gamma_c). The
+// length measure is the chord's: the mortar integrals only need one measure used throughout,
+// and with it Wohlmuth's biorthogonal basis keeps D diagonal on curved surfaces too.
+void add_quadrature(const FaceContext &f, const CoveredPiece &p, double t0, double t1, std::vector<QuadraturePoint> &element,
+                    std::vector<double> &tributary) {
+  const int seg = f.segment(p.k);
+  const double chord = f.g.nonmortar.segments()[seg].length;
+  for (int q = 0; q < 3; ++q) {
+    const double xi = p.xi0 + (p.xi1 - p.xi0) * kGaussPoint[q];
+    const double weight = kGaussWeight[q] * (p.xi1 - p.xi0) * chord;
+    const double t = p.shift + p.k + xi;
+    Point x = f.g.nonmortar.point(seg, xi), n = f.look(seg, xi);
+    double distance;
+    element.push_back({(t - t0) / (t1 - t0), weight, project_onto(f.g.mortar, p.mortar, x, n, distance)});
+    tributary[f.position(p.k)] += weight * (1 - xi);
+    tributary[f.position(p.k + 1)] += weight * xi;
+  }
+}
+
+// Turns one maximal covered interval of a face into a run.
+ContactRun open_run(const FaceContext &f, const std::vector<CoveredPiece> &pieces, std::vector<double> &tributary) {
+  ContactRun run;
+  auto snapped = [](double t) { return std::fabs(t - std::round(t)) <= kSnap ? std::round(t) : t; };
+  const double t_begin = snapped(pieces.front().t0()), t_end = snapped(pieces.back().t1());
+  std::vector<double> trace_t{t_begin};
+  run.trace.push_back(trace_point(f, t_begin, pieces.front()));
+  for (const CoveredPiece &p : pieces) {  // the nodes strictly inside the interval
+    const double t = snapped(p.t1());
+    if (t > std::max(t_begin, trace_t.back()) + kSnap && t < t_end - kSnap && t == std::round(t)) {
+      trace_t.push_back(t);
+      run.trace.push_back(trace_point(f, t, p));
+    }
+  }
+  trace_t.push_back(t_end);
+  run.trace.push_back(trace_point(f, t_end, pieces.back()));
+  run.elements.resize(run.trace.size() - 1);
+  size_t element = 0;
+  for (const CoveredPiece &p : pieces) {
+    while (element + 1 < run.elements.size() && p.t0() >= trace_t[element + 1] - kSnap) ++element;
+    add_quadrature(f, p, trace_t[element], trace_t[element + 1], run.elements[element], tributary);
+  }
+  return run;
+}
+
+// A closed face covered all round: every node a trace point, element k the face's edge k.
+ContactRun closed_run(const FaceContext &f, const std::vector<CoveredPiece> &pieces, std::vector<double> &tributary) {
+  ContactRun run;
+  run.closed = true;
+  run.elements.resize(f.edges);
+  for (int k = 0; k < f.edges; ++k) {
+    const CoveredPiece *adjacent = &pieces.front();
+    for (const CoveredPiece &p : pieces)
+      if (p.k == k) { adjacent = &p; break; }
+    run.trace.push_back(trace_point(f, k, *adjacent));
+  }
+  for (const CoveredPiece &p : pieces) add_quadrature(f, p, p.k, p.k + 1, run.elements[p.k], tributary);
+  return run;
+}
+
+// Merges a face's covered pieces (sorted along the face) into maximal intervals and builds a
+// run of each.
+void runs_of_face(const FaceContext &f, std::vector<CoveredPiece> pieces, std::vector<ContactRun> &runs,
+                  std::vector<double> &tributary) {
+  if (pieces.empty()) return;
+  std::vector<std::vector<CoveredPiece>> intervals;
+  for (const CoveredPiece &p : pieces) {
+    if (intervals.empty() || std::fabs(p.t0() - intervals.back().back().t1()) > 1e-12) intervals.emplace_back();
+    intervals.back().push_back(p);
+  }
+  if (f.closed && intervals.front().front().t0() <= 1e-12 && intervals.back().back().t1() >= f.edges - 1e-12) {
+    if (intervals.size() == 1) {
+      runs.push_back(closed_run(f, intervals.front(), tributary));
+      return;
+    }
+    // The last interval continues through node 0 into the first: join them.
+    std::vector<CoveredPiece> joined = intervals.back();
+    for (CoveredPiece &p : joined) p.shift = -f.edges;
+    joined.insert(joined.end(), intervals.front().begin(), intervals.front().end());
+    intervals.front() = joined;
+    intervals.pop_back();
+  }
+  for (const auto &interval : intervals)  // (an interval shorter than the snapping tolerance is no run)
+    if (interval.back().t1() - interval.front().t0() > 2 * kSnap) runs.push_back(open_run(f, interval, tributary));
 }
 
 }  // namespace
@@ -169,108 +259,98 @@ std::vector<SurfaceSegment> oriented_surface(const Mesh &mesh, const int *edges,
 
 ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<SurfaceSegment> &surface1,
                                        const Mesh &body2, const std::vector<SurfaceSegment> &surface2,
-                                       int normal_choice) {
+                                       int normal_choice, const SurfaceOptions &surface_options) {
   ContactGeometry g;
-  g.mortar_segments = surface2;
-  std::vector<Chain> chains = chains_of(surface1);
-  // Nodal normals: the mean of the unit normals of the adjacent edges, exact on straight pieces.
-  std::vector<std::pair<int, int>> chain_range;
-  for (Chain &c : chains) {
-    const size_t first = g.nodes.size(), m = c.nodes.size();
-    for (size_t k = 0; k < m; ++k) {
-      Point p = body1.node(c.nodes[k]), sum{0, 0};
-      bool has_prev = c.closed || k > 0, has_next = c.closed || k + 1 < m;
-      double tributary = 0;
-      if (has_prev) {
-        Point o = body1.node(c.nodes[(k + m - 1) % m]), q = edge_normal(o, p);
-        sum.x += q.x, sum.y += q.y;
-        tributary += 0.5 * std::hypot(p.x - o.x, p.y - o.y);
-      }
-      if (has_next) {
-        Point o = body1.node(c.nodes[(k + 1) % m]), q = edge_normal(p, o);
-        sum.x += q.x, sum.y += q.y;
-        tributary += 0.5 * std::hypot(p.x - o.x, p.y - o.y);
-      }
-      g.nodes.push_back(c.nodes[k]);
-      g.normals.push_back(unit(sum));
-      g.tributary.push_back(tributary);
-    }
-    chain_range.push_back({int(first), int(m)});
+  g.nonmortar = SurfaceCurve(body1, surface1, surface_options);
+  g.mortar = SurfaceCurve(body2, surface2, surface_options);
+  const SurfaceCurve &curve1 = g.nonmortar, &curve2 = g.mortar;
+
+  // Positions: the nodes of each face of body 1, with the face's nodal normals.
+  std::vector<int> first_position;
+  for (const SurfaceFace &face : curve1.faces()) {
+    first_position.push_back(int(g.nodes.size()));
+    for (size_t k = 0; k < face.nodes.size(); ++k) g.nodes.push_back(face.nodes[k]), g.normals.push_back(face.normals[k]);
   }
   const size_t n = g.nodes.size();
   if (normal_choice == MC_NORMAL_MORTAR)
-    for (size_t j = 0; j < n; ++j) g.normals[j] = mortar_side_normal(body1.node(g.nodes[j]), g.normals[j], body2, surface2);
+    for (size_t j = 0; j < n; ++j) {
+      Point p = body1.node(g.nodes[j]);
+      if (!curve2.smooth()) {
+        g.normals[j] = mortar_side_normal(p, g.normals[j], body2, surface2);
+        continue;
+      }
+      int seg;
+      double s;
+      if (curve2.closest_point(p, g.normals[j], seg, s)) {
+        Point m = curve2.surface_normal(seg, s);
+        g.normals[j] = {-m.x, -m.y};
+      }
+    }
   g.gap0.assign(n, kNoGap);
   g.projection.assign(n, SurfacePoint{});
   bool any = false;
   for (size_t j = 0; j < n; ++j) {
-    g.gap0[j] = cast_ray(body1.node(g.nodes[j]), g.normals[j], body2, surface2, g.projection[j]);
-    any = any || g.projection[j].segment >= 0;
+    int seg;
+    double s, t;
+    if (curve2.cast(body1.node(g.nodes[j]), g.normals[j], seg, s, t)) g.gap0[j] = t, g.projection[j] = {seg, s}, any = true;
   }
   if (!any)
     fail(MC_ERROR_CONTACT,
          "no node of body 1's contact surface sees body 2's contact surface along its outward normal: "
          "the surfaces do not face each other");
 
-  // Runs of consecutive seeing nodes. A closed loop is opened at a node that does not see
-  // body 2, or at its first node if all do (then its last segment carries no constraint).
-  for (size_t c = 0; c < chains.size(); ++c) {
-    int first = chain_range[c].first, m = chain_range[c].second;
-    int start = 0;
-    if (chains[c].closed)
-      for (int k = 0; k < m; ++k)
-        if (g.projection[first + k].segment < 0) { start = k; break; }
-    ContactRun run;
-    auto flush = [&]() {
-      if (!run.positions.empty()) g.runs.push_back(run);
-      run = ContactRun{};
-    };
-    for (int step = 0; step < m; ++step) {
-      int pos = first + (start + step) % m;
-      if (g.projection[pos].segment < 0) flush();
-      else run.positions.push_back(pos);
-    }
-    flush();
+  // The direction along which body 1 looks for body 2 between its nodes: its smooth curve's
+  // normal, or else the interpolated nodal normals (faceted, or body 2's normals chosen: the
+  // projection then follows the constraint's own directions).
+  std::vector<int> segment_position(curve1.segments().size());
+  for (size_t seg = 0; seg < curve1.segments().size(); ++seg) {
+    const CurveSegment &c = curve1.segments()[seg];
+    segment_position[seg] = first_position[c.face] + c.k;
   }
+  LookDirection look = [&](int seg, double s) -> Point {
+    if (curve1.smooth() && normal_choice == MC_NORMAL_NONMORTAR) return curve1.look_direction(seg, s);
+    const CurveSegment &c = curve1.segments()[seg];
+    const int pa = segment_position[seg], pb = c.k + 1 < int(curve1.faces()[c.face].nodes.size())
+                                                   ? pa + 1 : first_position[c.face];
+    return unit(lerp(g.normals[pa], g.normals[pb], s));
+  };
 
-  // Segmentation of each body-1 segment of a run: breakpoints where body-2 nodes project,
-  // then each piece facing one body-2 segment.
-  std::vector<int> surface2_nodes;
-  for (auto &s : surface2) surface2_nodes.push_back(s.a), surface2_nodes.push_back(s.b);
-  std::sort(surface2_nodes.begin(), surface2_nodes.end());
-  surface2_nodes.erase(std::unique(surface2_nodes.begin(), surface2_nodes.end()), surface2_nodes.end());
-  for (ContactRun &run : g.runs) {
-    for (size_t k = 0; k + 1 < run.positions.size(); ++k) {
-      int pa = run.positions[k], pb = run.positions[k + 1];
-      Point xa = body1.node(g.nodes[pa]), xb = body1.node(g.nodes[pb]);
-      Point na = g.normals[pa], nb = g.normals[pb];
-      double seg_length = std::hypot(xb.x - xa.x, xb.y - xa.y);
-      run.segment_length.push_back(seg_length);
+  // Segmentation of each body-1 segment: breakpoints where body-2 nodes project, then each
+  // piece facing one body-2 segment (tested at its midpoint).
+  std::vector<Point> body2_points;
+  {
+    std::vector<int> ids;
+    for (const CurveSegment &c : curve2.segments()) ids.push_back(c.a), ids.push_back(c.b);
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    for (int id : ids) body2_points.push_back(body2.node(id));
+  }
+  g.tributary.assign(n, 0.0);
+  for (int face = 0; face < int(curve1.faces().size()); ++face) {
+    const SurfaceFace &sf = curve1.faces()[face];
+    FaceContext context{g, face, sf.edges(), sf.closed, first_position[face], look};
+    std::vector<CoveredPiece> pieces;
+    for (int k = 0; k < sf.edges(); ++k) {
+      const int seg = curve1.segment_of(face, k);
       std::vector<double> breaks{0.0, 1.0};
-      for (int node : surface2_nodes) {
+      for (Point y : body2_points) {
         double xi;
-        if (inverse_projection(xa, xb, na, nb, body2.node(node), xi)) breaks.push_back(xi);
+        if (inverse_projection(curve1, seg, look, y, xi)) breaks.push_back(xi);
       }
       std::sort(breaks.begin(), breaks.end());
       for (size_t b = 0; b + 1 < breaks.size(); ++b) {
-        double xi0 = breaks[b], xi1 = breaks[b + 1];
+        const double xi0 = breaks[b], xi1 = breaks[b + 1];
         if (xi1 - xi0 < 1e-12) continue;
-        double xim = 0.5 * (xi0 + xi1);
-        SurfacePoint mid;
-        if (cast_ray(lerp(xa, xb, xim), unit(lerp(na, nb, xim)), body2, surface2, mid) == kNoGap) continue;
-        const SurfaceSegment &s = surface2[mid.segment];
-        Point a2 = body2.node(s.a), b2 = body2.node(s.b);
-        MortarPiece piece;
-        piece.k = int(k);
-        piece.xi0 = xi0, piece.xi1 = xi1;
-        piece.segment = mid.segment;
-        piece.eta0 = eta_on_line(lerp(xa, xb, xi0), lerp(na, nb, xi0), a2, b2);
-        piece.eta1 = eta_on_line(lerp(xa, xb, xi1), lerp(na, nb, xi1), a2, b2);
-        piece.length = (xi1 - xi0) * seg_length;
-        run.pieces.push_back(piece);
+        const double xim = 0.5 * (xi0 + xi1);
+        int mortar;
+        double s, t;
+        if (!curve2.cast(curve1.point(seg, xim), look(seg, xim), mortar, s, t)) continue;
+        pieces.push_back({k, xi0, xi1, mortar});
       }
     }
+    runs_of_face(context, pieces, g.runs, g.tributary);
   }
+
   return g;
 }
 

@@ -1,9 +1,17 @@
 // Contact geometry between body 1 (non-mortar, the paper's Omega^1) and body 2 (mortar):
-// the chains of body 1's contact surface with nodal normals, the projection of each body-1
-// node along its normal onto body 2's surface (initial gap g0), and the segmentation of
-// Gamma_c into pieces on which both traces are linear (section 3: needed for exact mortar
-// integrals).
+// the contact positions of body 1 with their normals, the projection of each along its normal
+// onto body 2's surface (initial gap g0), and Gamma_c: the parts of body 1's surface that see
+// body 2, as runs of trace points with quadrature points on which both traces are known
+// (section 3: the mortar integrals need this segmentation).
+//
+// Gamma_c follows the covered part of body 1's surface, not its nodes: a body-1 segment that
+// body 2 covers only partly belongs to Gamma_c over its covered part, and the run then ends at
+// a trace point inside that segment (where body 2's last node projects). As body 2's end
+// moves across a body-1 node, the run's end moves continuously along the segment, so the
+// constraint, and the answer, change continuously. A closed loop covered all round is a closed
+// run without ends.
 #pragma once
+#include "contact_surface.hpp"
 #include "mesh.hpp"
 #include <limits>
 #include <utility>
@@ -11,44 +19,49 @@
 
 namespace mc {
 
-// A surface given as boundary edges, oriented like their cells (body on the left).
-struct SurfaceSegment {
-  int a, b;
-};
-
-// Where a point lands on body 2's surface: segment index and local coordinate eta in [0,1]
-// (the point is (1-eta) a + eta b).
+// A point of body 2's contact surface: curve segment and its parameter eta in [0,1] (also the
+// coordinate of the linear displacement trace on that edge).
 struct SurfacePoint {
   int segment = -1;
   double eta = 0;
 };
 
-// A piece of Gamma_c: part [xi0, xi1] of body-1 segment (node positions k, k+1 of a run),
-// facing part [eta0, eta1] of body-2 segment `segment`; the map xi -> eta is linear on it.
-struct MortarPiece {
-  int k;  // run-local index of the segment's first node
-  double xi0, xi1;
-  int segment;
-  double eta0, eta1;
-  double length;  // physical length on body 1's side
+// A trace point of Gamma_c on body 1: a contact position (b = -1, xi = 0) or a point inside the
+// segment from position a to position b, at (1 - xi) a + xi b.
+struct TracePoint {
+  int a = -1, b = -1;
+  double xi = 0;
+  Point normal{0, 0};    // unit normal of the constraint there
+  double gap0 = 0;       // initial gap along it (without the host's offsets)
+  SurfacePoint projection;
+  bool is_position() const { return b < 0; }
 };
 
-// A maximal run of consecutive body-1 nodes that see body 2: the paper's Gamma_c with ends
-// c1 = first, c2 = last (one per connected piece of contact).
+// A quadrature point of an element of a run: the element's own coordinate s in [0,1], the
+// weight (length measure included) and the body-2 point it faces.
+struct QuadraturePoint {
+  double s, weight;
+  SurfacePoint mortar;
+};
+
+// A connected piece of Gamma_c: the paper's Gamma_c with trace nodes c1 = trace.front(),
+// c2 = trace.back(), or a closed loop (element k joins trace k and k+1 mod size).
 struct ContactRun {
-  std::vector<int> positions;       // indices into ContactGeometry::nodes
-  std::vector<double> segment_length;  // body-1 segment k joins positions k and k+1
-  std::vector<MortarPiece> pieces;
+  bool closed = false;
+  std::vector<TracePoint> trace;
+  std::vector<std::vector<QuadraturePoint>> elements;
 };
 
 struct ContactGeometry {
-  std::vector<int> nodes;          // body-1 contact nodes, chain after chain
-  std::vector<Point> normals;      // unit outward normals of body 1 at those nodes
+  // Contact positions: body 1's contact-surface nodes face after face; a node where the
+  // surface is split at a corner is a position in each of its two faces, with that face's normal.
+  std::vector<int> nodes;
+  std::vector<Point> normals;      // unit outward normals of body 1 at the positions
   std::vector<double> gap0;        // along the normal; +inf where body 2 is not seen
-  std::vector<SurfacePoint> projection;  // of each node onto body 2 (segment -1: none)
-  std::vector<SurfaceSegment> mortar_segments;  // body 2's contact edges
+  std::vector<SurfacePoint> projection;  // of each position onto body 2 (segment -1: none)
+  std::vector<double> tributary;   // integral of phi_j over Gamma_c (the covered part)
   std::vector<ContactRun> runs;
-  std::vector<double> tributary;   // integral of phi_j over body 1's contact surface
+  SurfaceCurve nonmortar, mortar;  // the two surfaces as the contact constraint sees them
 };
 
 // Checks the edges (2 per edge, 0-based) are boundary edges of the mesh and returns them
@@ -59,7 +72,7 @@ std::vector<SurfaceSegment> oriented_surface(const Mesh &mesh, const int *edges,
 // normal_choice: MC_NORMAL_NONMORTAR or MC_NORMAL_MORTAR.
 ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<SurfaceSegment> &surface1,
                                        const Mesh &body2, const std::vector<SurfaceSegment> &surface2,
-                                       int normal_choice);
+                                       int normal_choice, const SurfaceOptions &surface_options);
 
 constexpr double kNoGap = std::numeric_limits<double>::infinity();
 

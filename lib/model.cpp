@@ -94,18 +94,25 @@ void Model::build_structure() {
     Stopwatch watch(infos.t_contact);
     const double t_geometry = now();
     auto cs = std::make_unique<ContactSystem>();
+    SurfaceOptions surface_options;
+    surface_options.smooth = options.contact_surface == MC_SURFACE_SMOOTH;
+    surface_options.feature_angle_degrees = options.feature_angle;
     cs->geometry = build_contact_geometry(body[0].mesh, body[0].contact, body[1].mesh, body[1].contact,
-                                          options.contact_normal);
-    cs->rows = build_constraint_rows(cs->geometry, body[1].mesh, options.method);
+                                          options.contact_normal, surface_options);
+    cs->rows = build_constraint_rows(cs->geometry, options.method);
+    const ConstraintRows &rows = cs->rows;
     for (int b = 0; b < 2; ++b) cs->b_start[b].push_back(0);
-    for (int r = 0; r < cs->rows.size(); ++r) {
-      int pos = cs->rows.position[r], node = cs->geometry.nodes[pos];
-      Point n = cs->geometry.normals[pos];
-      cs->b_dof[0].insert(cs->b_dof[0].end(), {2 * node, 2 * node + 1});
-      cs->b_value[0].insert(cs->b_value[0].end(), {n.x, n.y});
-      for (int p = cs->rows.start[r]; p < cs->rows.start[r + 1]; ++p) {
-        int l = cs->rows.body2_node[p];
-        double w = cs->rows.weight[p];
+    for (int r = 0; r < rows.size(); ++r) {
+      const Point n = rows.normal[r];
+      for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p) {
+        const int node = cs->geometry.nodes[rows.position1[p]];
+        const double w = rows.weight1[p];
+        cs->b_dof[0].insert(cs->b_dof[0].end(), {2 * node, 2 * node + 1});
+        cs->b_value[0].insert(cs->b_value[0].end(), {w * n.x, w * n.y});
+      }
+      for (int p = rows.start2[r]; p < rows.start2[r + 1]; ++p) {
+        const int l = rows.body2_node[p];
+        const double w = rows.weight2[p];
         cs->b_dof[1].insert(cs->b_dof[1].end(), {2 * l, 2 * l + 1});
         cs->b_value[1].insert(cs->b_value[1].end(), {-w * n.x, -w * n.y});
       }
@@ -202,6 +209,16 @@ double Model::initial_gap(size_t pos) const {
   return offset.empty() ? g.gap0[pos] : g.gap0[pos] + offset[g.nodes[pos]];
 }
 
+double Model::row_initial_gap(int r) const {
+  const ConstraintRows &rows = contact_->rows;
+  const std::vector<double> &offset = body[0].gap_offset;
+  double g = rows.gap0[r];
+  if (!offset.empty())  // the host's offsets, interpolated like u1 at a trace point inside a segment
+    for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p)
+      g += rows.weight1[p] * offset[contact_->geometry.nodes[rows.position1[p]]];
+  return g;
+}
+
 void Model::solve() {
   const double start = now();
   infos = Infos{};
@@ -285,7 +302,7 @@ void Model::solve() {
       }
       qp.d.assign(q, 0.0);
       for (int r = 0; r < q; ++r) {
-        double g = initial_gap(cs.rows.position[r]);
+        double g = row_initial_gap(r);
         for (int b = 0; b < 2; ++b)
           for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) {
             int dof = cs.b_dof[b][p];
@@ -442,16 +459,19 @@ void Model::solve() {
     contact_force.assign(n, 0.0);
     contact_gap.assign(n, kNoGap);
     contact_pressure.assign(n, 0.0);
-    for (int r = 0; r < contact_->rows.size(); ++r) {
-      int pos = contact_->rows.position[r];
-      double gap = initial_gap(pos);
+    // A row's force lambda_r acts on its body-1 positions with the row's weights; the pressure
+    // of a position is its force over its tributary length on Gamma_c (lumped recovery).
+    const ConstraintRows &rows = contact_->rows;
+    for (int r = 0; r < rows.size(); ++r) {
+      double gap = row_initial_gap(r);
       for (int b = 0; b < 2; ++b)
         for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
           gap -= contact_->b_value[b][p] * body[b].u[contact_->b_dof[b][p]];
-      contact_gap[pos] = gap;
-      contact_force[pos] = lambda[r];
-      contact_pressure[pos] = lambda[r] / (thickness * g.tributary[pos]);
+      if (rows.own_position[r] >= 0) contact_gap[rows.own_position[r]] = gap;
+      for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p) contact_force[rows.position1[p]] += rows.weight1[p] * lambda[r];
     }
+    for (size_t pos = 0; pos < n; ++pos)
+      if (g.tributary[pos] > 0) contact_pressure[pos] = contact_force[pos] / (thickness * g.tributary[pos]);
   }
   progress(MC_LOG_PHASE, "recovery: displacements, reactions, stresses and contact results, %.3g s", now() - t_recovery);
   infos.t_total = now() - start;

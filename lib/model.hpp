@@ -104,6 +104,8 @@ public:
   const ContactSystem *contact() const { return contact_.get(); }
   // g0 of contact node pos (ContactGeometry order) with the host's offset (mc_set_gap_offset).
   double initial_gap(size_t pos) const;
+  // g0 of constraint row r with the host's offsets.
+  double row_initial_gap(int r) const;
   // Contact results per body-1 contact node (after a contact solve).
   std::vector<double> contact_force, contact_gap, contact_pressure;
 

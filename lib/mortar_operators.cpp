@@ -1,146 +1,207 @@
 #include "mortar_operators.hpp"
 #include "error.hpp"
 #include <cmath>
+#include <functional>
 #include <map>
 
 namespace mc {
 
 namespace {
 
-// Exact integral over a piece of length `length` of the product of two functions linear on it,
-// given by their values at the piece's ends.
-double integral_of_product(double length, double f0, double f1, double g0, double g1) {
-  return length / 6 * (2 * f0 * g0 + f0 * g1 + f1 * g0 + 2 * f1 * g1);
+// The body-1 test functions of an element's two trace points at element coordinate s:
+// standard hats for the paper's mortar, biorthogonal ones (2 phi_0 - phi_1, ...) for the dual
+// method (Wohlmuth).
+void test_functions(int method, double s, double psi[2]) {
+  const double phi0 = 1 - s, phi1 = s;
+  if (method == MC_METHOD_DUAL_MORTAR) psi[0] = 2 * phi0 - phi1, psi[1] = 2 * phi1 - phi0;
+  else psi[0] = phi0, psi[1] = phi1;
 }
 
-// The body-1 test functions of the node pair (k, k+1) on a piece, at its ends: standard hats
-// for the paper's mortar, biorthogonal ones (2 phi_k - phi_k+1, ...) for the dual method.
-void test_functions(int method, const MortarPiece &p, double psi_k[2], double psi_k1[2]) {
-  double phi_k[2] = {1 - p.xi0, 1 - p.xi1}, phi_k1[2] = {p.xi0, p.xi1};
-  for (int e = 0; e < 2; ++e) {
-    if (method == MC_METHOD_DUAL_MORTAR) {
-      psi_k[e] = 2 * phi_k[e] - phi_k1[e];
-      psi_k1[e] = 2 * phi_k1[e] - phi_k[e];
-    } else {
-      psi_k[e] = phi_k[e];
-      psi_k1[e] = phi_k1[e];
-    }
-  }
-}
-
-// Interpolation weights of u2 at a surface point.
+// Interpolation weights of u2 at a body-2 surface point.
 void add_interpolation(const ContactGeometry &g, SurfacePoint at, std::map<int, double> &row) {
-  const SurfaceSegment &s = g.mortar_segments[at.segment];
+  const CurveSegment &s = g.mortar.segments()[at.segment];
   row[s.a] += 1 - at.eta;
   row[s.b] += at.eta;
 }
 
-void append_row(ConstraintRows &rows, int position, const std::map<int, double> &entries) {
-  rows.position.push_back(position);
-  for (auto &[node, w] : entries)
-    if (w != 0) rows.body2_node.push_back(node), rows.weight.push_back(w);
-  rows.start.push_back(int(rows.body2_node.size()));
+void append_row(ConstraintRows &rows, const TracePoint &t, const std::map<int, double> &body2) {
+  rows.position1.push_back(t.a);
+  rows.weight1.push_back(t.is_position() ? 1.0 : 1 - t.xi);
+  if (!t.is_position()) rows.position1.push_back(t.b), rows.weight1.push_back(t.xi);
+  rows.start1.push_back(int(rows.position1.size()));
+  for (auto &[node, w] : body2)
+    if (w != 0) rows.body2_node.push_back(node), rows.weight2.push_back(w);
+  rows.start2.push_back(int(rows.body2_node.size()));
+  rows.normal.push_back(t.normal);
+  rows.gap0.push_back(t.gap0);
+  rows.own_position.push_back(t.is_position() ? t.a : -1);
+}
+
+// The pointwise row at a trace point (node-to-segment, and the ends of Gamma_c in (3.2)).
+void append_pointwise_row(const ContactGeometry &g, ConstraintRows &rows, const TracePoint &t) {
+  std::map<int, double> w;
+  add_interpolation(g, t.projection, w);
+  append_row(rows, t, w);
+}
+
+// Solves the tridiagonal system rows first..last of (lower, diag, upper) for nc right-hand
+// sides stored row-major in rhs (Thomas algorithm; D is diagonally dominant on a covered run).
+// Returns the row of a vanishing pivot, or -1.
+int solve_tridiagonal(const std::vector<double> &lower, const std::vector<double> &diag, const std::vector<double> &upper,
+                      int first, int last, int nc, std::vector<double> &rhs) {
+  double scale = 0;
+  for (int i = first; i <= last; ++i) scale = std::max(scale, std::fabs(diag[i]));
+  std::vector<double> c_prime(diag.size(), 0.0);
+  for (int i = first; i <= last; ++i) {
+    const double pivot = diag[i] - (i > first ? lower[i] * c_prime[i - 1] : 0);
+    if (!(std::fabs(pivot) > 1e-12 * scale)) return i;
+    c_prime[i] = upper[i] / pivot;
+    for (int c = 0; c < nc; ++c) {
+      double &r = rhs[size_t(i) * nc + c];
+      if (i > first) r -= lower[i] * rhs[size_t(i - 1) * nc + c];
+      r /= pivot;
+    }
+  }
+  for (int i = last - 1; i >= first; --i)
+    for (int c = 0; c < nc; ++c) rhs[size_t(i) * nc + c] -= c_prime[i] * rhs[size_t(i + 1) * nc + c];
+  return -1;
+}
+
+// The same for a cyclic tridiagonal matrix (corners lower[0] at (0, n-1) and upper[n-1] at
+// (n-1, 0)) by the Sherman-Morrison formula: a closed loop's D.
+int solve_cyclic_tridiagonal(std::vector<double> lower, std::vector<double> diag, std::vector<double> upper, int nc,
+                             std::vector<double> &rhs) {
+  const int n = int(diag.size());
+  const double top_right = lower[0], bottom_left = upper[n - 1], gamma = -diag[0];
+  diag[0] -= gamma;
+  diag[n - 1] -= bottom_left * top_right / gamma;
+  lower[0] = 0, upper[n - 1] = 0;
+  std::vector<double> z(n, 0.0);
+  z[0] = gamma, z[n - 1] = bottom_left;
+  int bad = solve_tridiagonal(lower, diag, upper, 0, n - 1, nc, rhs);
+  if (bad >= 0) return bad;
+  solve_tridiagonal(lower, diag, upper, 0, n - 1, 1, z);
+  const double denominator = 1 + z[0] + top_right * z[n - 1] / gamma;
+  for (int c = 0; c < nc; ++c) {
+    const double factor = (rhs[c] + top_right * rhs[size_t(n - 1) * nc + c] / gamma) / denominator;
+    for (int i = 0; i < n; ++i) rhs[size_t(i) * nc + c] -= factor * z[i];
+  }
+  return -1;
 }
 
 // Rows of one run for the mortar methods: the paper's pi_h^1 (3.2).
 void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, ConstraintRows &rows) {
-  const int m = int(run.positions.size()) - 1;  // nodes x_0..x_m
+  const int n = int(run.trace.size());
+  const bool closed = run.closed;
   // Columns: the body-2 nodes this run touches.
   std::map<int, int> column;
-  for (const MortarPiece &p : run.pieces) {
-    column.emplace(g.mortar_segments[p.segment].a, 0);
-    column.emplace(g.mortar_segments[p.segment].b, 0);
-  }
-  for (int end : {0, m}) {
-    const SurfaceSegment &s = g.mortar_segments[g.projection[run.positions[end]].segment];
+  auto touch = [&](SurfacePoint p) {
+    const CurveSegment &s = g.mortar.segments()[p.segment];
     column.emplace(s.a, 0), column.emplace(s.b, 0);
-  }
+  };
+  for (const auto &element : run.elements)
+    for (const QuadraturePoint &q : element) touch(q.mortar);
+  if (!closed) touch(run.trace.front().projection), touch(run.trace.back().projection);
   std::vector<int> column_node;
   for (auto &[node, index] : column) index = int(column_node.size()), column_node.push_back(node);
   const int nc = int(column_node.size());
 
   // End rows: (pi phi)(c_i) = phi(c_i), i.e. interpolation at the projection of c_1, c_2.
   std::vector<double> end_row[2];
-  for (int e = 0; e < 2; ++e) {
-    end_row[e].assign(nc, 0.0);
-    std::map<int, double> w;
-    add_interpolation(g, g.projection[run.positions[e == 0 ? 0 : m]], w);
-    for (auto &[node, value] : w) end_row[e][column[node]] += value;
-  }
-  // Multiplier index of node k's test function: the end modification merges psi_0 into psi_1
-  // and psi_m into psi_{m-1} (M_h^1 is constant on the two end segments).
-  auto multiplier = [m](int k) { return k == 0 ? 1 : k == m ? m - 1 : k; };
-  // D (band: columns i-1, i, i+1 of row i) and M (dense over the run's columns), rows 1..m-1.
-  std::vector<double> lower(m + 1, 0.0), diag(m + 1, 0.0), upper(m + 1, 0.0);
-  std::vector<double> mm(size_t(m + 1) * nc, 0.0);
-  for (const MortarPiece &p : run.pieces) {
-    double psi[2][2], phi[2][2] = {{1 - p.xi0, 1 - p.xi1}, {p.xi0, p.xi1}};
-    test_functions(method, p, psi[0], psi[1]);
-    const SurfaceSegment &s = g.mortar_segments[p.segment];
-    double phi2[2][2] = {{1 - p.eta0, 1 - p.eta1}, {p.eta0, p.eta1}};
-    int node2[2] = {s.a, s.b};
-    for (int t = 0; t < 2; ++t) {
-      int i = multiplier(p.k + t);
-      for (int j = 0; j < 2; ++j) {
-        double dij = integral_of_product(p.length, psi[t][0], psi[t][1], phi[j][0], phi[j][1]);
-        int col = p.k + j;
-        (col == i ? diag : col < i ? lower : upper)[i] += dij;
-        mm[size_t(i) * nc + column[node2[j]]] += integral_of_product(p.length, psi[t][0], psi[t][1], phi2[j][0], phi2[j][1]);
-      }
+  if (!closed)
+    for (int e = 0; e < 2; ++e) {
+      end_row[e].assign(nc, 0.0);
+      std::map<int, double> w;
+      add_interpolation(g, run.trace[e == 0 ? 0 : n - 1].projection, w);
+      for (auto &[node, value] : w) end_row[e][column[node]] += value;
     }
-  }
-  // Interior rows: D_II P_I = M_I - D_IE P_E, solved by the Thomas algorithm (D_II is
-  // tridiagonal and diagonally dominant on a covered run).
-  std::vector<double> rhs(size_t(m + 1) * nc, 0.0);
-  for (int i = 1; i < m; ++i)
-    for (int c = 0; c < nc; ++c) rhs[size_t(i) * nc + c] = mm[size_t(i) * nc + c];
-  for (int c = 0; c < nc; ++c) {
-    rhs[size_t(1) * nc + c] -= lower[1] * end_row[0][c];
-    rhs[size_t(m - 1) * nc + c] -= upper[m - 1] * end_row[1][c];
-  }
-  double scale = 0;
-  for (int i = 1; i < m; ++i) scale = std::max(scale, std::fabs(diag[i]));
-  std::vector<double> c_prime(m + 1, 0.0);
-  for (int i = 1; i < m; ++i) {
-    double pivot = diag[i] - (i > 1 ? lower[i] * c_prime[i - 1] : 0);
-    if (!(std::fabs(pivot) > 1e-12 * scale))
-      fail(MC_ERROR_CONTACT,
-           "the mortar matrix D is singular at body-1 contact node %d: body 2's surface covers too little "
-           "of the body-1 edges around it",
-           g.nodes[run.positions[i]]);
-    c_prime[i] = upper[i] / pivot;
+  // The multipliers (rows of D and M) that trace point k's test function on element e feeds.
+  // Closed loop: its own. Open run, the paper's M_h^1: psi_0 merges into psi_1 and psi_last
+  // into its neighbour (constant on the two end elements). When an end element is only a
+  // fraction theta of its body-1 segment (Gamma_c ends inside it), the neighbouring node's hat
+  // on the next element is shared between the end multiplier (w = theta^2) and the next one
+  // (1 - w): at theta = 1 this is the paper's space, and as theta -> 0 it becomes the paper's
+  // space of the run that ends at that node, with the vanishing element's multiplier (whose
+  // integrals are O(theta), the shared part O(theta^2)) pinning pi_h to the end value there. So the cone changes continuously as body 2's end
+  // crosses a body-1 node. (The dual basis needs no sharing: its end rows already converge.)
+  auto share_of = [](double theta) { return theta * theta; };
+  const double theta_start = share_of(run.trace.front().is_position() ? 1 : 1 - run.trace.front().xi);
+  const double theta_end = share_of(run.trace.back().is_position() ? 1 : run.trace.back().xi);
+  const bool share = !closed && n >= 4 && method == MC_METHOD_MORTAR;
+  auto feed = [&](int e, int k, double value, const std::function<void(int, double)> &add) {
+    if (closed) return add(k % n, value);
+    if (k == 0) return add(1, value);
+    if (k == n - 1) return add(n - 2, value);
+    if (share && k == 1 && e == 1) return add(1, theta_start * value), add(2, (1 - theta_start) * value);
+    if (share && k == n - 2 && e == n - 3) return add(n - 2, theta_end * value), add(n - 3, (1 - theta_end) * value);
+    add(k, value);
+  };
+  // D (band: trace points i-1, i, i+1 of row i, cyclic on a loop) and M (dense over the columns).
+  std::vector<double> lower(n, 0.0), diag(n, 0.0), upper(n, 0.0), mm(size_t(n) * nc, 0.0);
+  for (int e = 0; e < int(run.elements.size()); ++e)
+    for (const QuadraturePoint &q : run.elements[e]) {
+      double psi[2];
+      test_functions(method, q.s, psi);
+      const double phi[2] = {1 - q.s, q.s};
+      const CurveSegment &s = g.mortar.segments()[q.mortar.segment];
+      const double phi2[2] = {1 - q.mortar.eta, q.mortar.eta};
+      const int node2[2] = {s.a, s.b};
+      for (int t = 0; t < 2; ++t)
+        feed(e, e + t, q.weight * psi[t], [&](int i, double w) {
+          for (int j = 0; j < 2; ++j) {
+            const int trace = closed ? (e + j) % n : e + j;
+            const int offset = closed ? ((trace - i) % n + n + 1) % n - 1 : trace - i;  // -1, 0 or +1
+            (offset == 0 ? diag : offset > 0 ? upper : lower)[i] += w * phi[j];
+            mm[size_t(i) * nc + column[node2[j]]] += w * phi2[j];
+          }
+        });
+    }
+  // Interior values: D_II P_I = M_I - D_IE P_E (open), D P = M (closed).
+  std::vector<double> rhs(mm);
+  int singular;
+  if (closed) {
+    singular = solve_cyclic_tridiagonal(lower, diag, upper, nc, rhs);
+  } else {
     for (int c = 0; c < nc; ++c) {
-      double &r = rhs[size_t(i) * nc + c];
-      if (i > 1) r -= lower[i] * rhs[size_t(i - 1) * nc + c];
-      r /= pivot;
+      rhs[size_t(1) * nc + c] -= lower[1] * end_row[0][c];
+      rhs[size_t(n - 2) * nc + c] -= upper[n - 2] * end_row[1][c];
     }
+    singular = solve_tridiagonal(lower, diag, upper, 1, n - 2, nc, rhs);
   }
-  for (int i = m - 2; i >= 1; --i)
-    for (int c = 0; c < nc; ++c) rhs[size_t(i) * nc + c] -= c_prime[i] * rhs[size_t(i + 1) * nc + c];
+  if (singular >= 0)
+    fail(MC_ERROR_CONTACT,
+         "the mortar matrix D is singular at body-1 contact node %d: body 2's surface covers too little "
+         "of the body-1 edges around it",
+         g.nodes[run.trace[singular].a]);
 
-  for (int k = 0; k <= m; ++k) {
-    const double *values = k == 0 ? end_row[0].data() : k == m ? end_row[1].data() : &rhs[size_t(k) * nc];
+  for (int k = 0; k < n; ++k) {
+    const bool end = !closed && (k == 0 || k == n - 1);
+    const double *values = end ? end_row[k == 0 ? 0 : 1].data() : &rhs[size_t(k) * nc];
     std::map<int, double> entries;
     for (int c = 0; c < nc; ++c)
       if (values[c] != 0) entries[column_node[c]] = values[c];
-    append_row(rows, run.positions[k], entries);
+    append_row(rows, run.trace[k], entries);
   }
 }
 
 }  // namespace
 
-ConstraintRows build_constraint_rows(const ContactGeometry &g, const Mesh &, int method) {
+ConstraintRows build_constraint_rows(const ContactGeometry &g, int method) {
   ConstraintRows rows;
-  rows.start.push_back(0);
-  for (const ContactRun &run : g.runs) {
-    // Node-to-segment, and runs too short to carry a multiplier (one or two nodes: only the
-    // end conditions of (3.2) remain), use the pointwise constraint.
-    if (method == MC_METHOD_NODE_TO_SEGMENT || run.positions.size() <= 2) {
-      for (int pos : run.positions) {
-        std::map<int, double> w;
-        add_interpolation(g, g.projection[pos], w);
-        append_row(rows, pos, w);
+  if (method == MC_METHOD_NODE_TO_SEGMENT) {
+    // Each body-1 node that sees body 2, against the point it projects to.
+    for (size_t pos = 0; pos < g.nodes.size(); ++pos)
+      if (g.projection[pos].segment >= 0) {
+        TracePoint t;
+        t.a = int(pos), t.normal = g.normals[pos], t.gap0 = g.gap0[pos], t.projection = g.projection[pos];
+        append_pointwise_row(g, rows, t);
       }
+    return rows;
+  }
+  for (const ContactRun &run : g.runs) {
+    // Runs of one element carry no multiplier: only the end conditions of (3.2) remain.
+    if (!run.closed && run.trace.size() <= 2) {
+      for (const TracePoint &t : run.trace) append_pointwise_row(g, rows, t);
     } else {
       mortar_rows(g, run, method, rows);
     }

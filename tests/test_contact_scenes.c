@@ -71,19 +71,24 @@ static double max_abs(const double *v, size_t n) {
 }
 
 /* KKT of (3.5) from the returned arrays: lambda >= 0, gap >= 0, lambda gap = 0 (relative to the
-   largest force and to length_scale, the size of the displacements and initial gaps), no force
-   where no mortar surface is seen; plus the library's own residual infos. */
+   largest force and to length_scale, the size of the displacements and initial gaps); plus
+   the library's own residual infos. */
 static void assert_kkt(mc_model *m, const contact_data *c, double length_scale) {
   double fmax = max_d(max_abs(c->force, (size_t)c->n), 1e-300);
   for (mc_int j = 0; j < c->n; ++j) {
     ck_assert_msg(c->force[j] >= 0, "lambda_%d = %g < 0", (int)j, c->force[j]);
     if (isfinite(c->gap[j])) {
       ck_assert_msg(c->gap[j] >= -1e-10 * length_scale, "gap_%d = %g < 0 (scale %g)", (int)j, c->gap[j], length_scale);
-      ck_assert_msg(fabs(c->force[j] * c->gap[j]) <= 1e-10 * fmax * length_scale, "lambda gap at %d = %g", (int)j,
-                    c->force[j] * c->gap[j]);
-    } else {
-      ck_assert_msg(c->force[j] == 0, "node %d sees no mortar surface but carries %g", (int)j, c->force[j]);
+      /* complementarity per node, except next to a node that sees no mortar surface: Gamma_c
+         then ends inside the segment between them, and the row there (touching, gap 0) passes a
+         share of its force to this node, whose own gap may be open */
+      const int next_to_end = (j > 0 && !isfinite(c->gap[j - 1])) || (j + 1 < c->n && !isfinite(c->gap[j + 1]));
+      if (!next_to_end)
+        ck_assert_msg(fabs(c->force[j] * c->gap[j]) <= 1e-10 * fmax * length_scale, "lambda gap at %d = %g", (int)j,
+                      c->force[j] * c->gap[j]);
     }
+    /* a node that sees no mortar surface may still carry force: its share of the row at the
+       end of Gamma_c inside its partly covered segment */
   }
   double equilibrium, complementarity;
   OK(mc_get_info_real(m, MC_INFO_EQUILIBRIUM, &equilibrium));
@@ -336,12 +341,15 @@ START_TEST(hertz_nonmortar_side_choice) {
            100 * dp0, 100 * da, 100 * dmax);
     ck_assert_msg(dp0 < 0.01, "swapping roles changes the fitted p0 by %g", dp0);
     ck_assert_msg(da < 0.01, "swapping roles changes a by %g", da);
-    /* Pointwise, the curved disc is the better non-mortar side whichever mesh is finer: its
-       nodes sample the gap on the true circle, while the block's nodes sample it on the disc's
-       chords, whose kinks put an O(h) ripple on the nodal pressures (docs/robustness_part2.md). */
+    /* Pointwise, either side serves as the non-mortar side with the smooth contact geometry
+       (the default): the block's nodes now sample the gap on the disc's Hermite curve instead
+       of its chords, whose kinks put an O(h) ripple on the nodal pressures (0.85 % / 2.1 % off
+       with the faceted geometry, docs/robustness.md). Issue 11: the largest nodal pressure with
+       the roles swapped within 0.2 % of the disc-as-non-mortar answer. */
     const double err_disc = fabs(r[1].p0 / p0_ref - 1), err_block = fabs(r[2].p0 / p0_ref - 1);
     ck_assert_msg(err_disc < 0.005, "nodal p0 with the disc as non-mortar %g off", err_disc);
-    ck_assert_msg(err_disc < err_block, "nodal p0 error disc %g, block %g", err_disc, err_block);
+    ck_assert_msg(err_block < 0.005, "nodal p0 with the block as non-mortar %g off", err_block);
+    ck_assert_msg(dmax < 0.002, "swapping roles changes the largest nodal pressure by %g", dmax);
   }
   /* For the docs: the default option (each role with its own body-1 normals) and the radial pair. */
   for (int disc_body = 1; disc_body <= 2; ++disc_body)
@@ -652,9 +660,10 @@ static double overhang_sag(int nx1, int nx2, double shift, int method, long *row
    approaches it monotonically.
    (b) A body-1 node swept across body 2's end, from half a cell inside to half a cell outside
    through 1e-13 and 1e-9 cells: every case solves with KKT and balance; 1e-13 of a cell is
-   inside the geometric tolerance (the same answer as 0); at 1e-9 the node and its segment
-   drop out and the sag jumps. The jump is the discretization error of the dropped strip: it
-   shrinks as the meshes are refined. */
+   inside the geometric tolerance (the same answer as 0). With the mortar methods the partly
+   covered segment is integrated over its covered part and Gamma_c ends inside it, so 1e-9 of
+   a cell changes the answer by O(1e-9); with node-to-segment the node drops out at 1e-9 and
+   the sag jumps by the dropped strip's discretization error, which shrinks under refinement. */
 START_TEST(partly_covered_nonmortar_edges) {
   const double reference = overhang_sag(16 * 16, 7 * 16, 0, MC_METHOD_MORTAR, NULL);
   double previous = INFINITY;
@@ -685,14 +694,30 @@ START_TEST(partly_covered_nonmortar_edges) {
                         shifts[k], fabs(sag[k] / sag[4] - 1));
         }
         if (fabs(shifts[k]) == 1e-9) jump = max_d(jump, fabs(sag[k] / sag[4] - 1));
-        /* beyond the tolerance a node has dropped out */
-        if (fabs(shifts[k]) >= 1e-9) ck_assert_msg(rows[k] == rows[4] - 1, "shift %g: %ld rows", shifts[k], rows[k]);
+        /* Beyond the tolerance: node-to-segment drops the node (a pointwise row needs the node to
+           see body 2); the mortar methods keep the run's end row, now at the end of the covered
+           part inside a segment (one more row where that segment's far node sees body 2). */
+        if (fabs(shifts[k]) >= 1e-9) {
+          if (method == MC_METHOD_NODE_TO_SEGMENT)
+            ck_assert_msg(rows[k] == rows[4] - 1, "%s shift %g: %ld rows", method_name(method), shifts[k], rows[k]);
+          else
+            ck_assert_msg(rows[k] == rows[4] || rows[k] == rows[4] + 1, "%s shift %g: %ld rows", method_name(method),
+                          shifts[k], rows[k]);
+        }
       }
       printf("partly covered, %s, %d vs %d cells: sag at node shifts -0.5 .. +0.5 cells:", method_name(method), 16 * f,
              7 * f);
       for (int k = 0; k < n_shifts; ++k) printf(" %.6f", sag[k]);
-      printf("; jump at +-1e-9 cells: %.3f %%\n", 100 * jump);
-      ck_assert_msg(jump < last_jump, "the jump does not shrink under refinement: %g then %g", last_jump, jump);
+      printf("; jump at +-1e-9 cells: %.3g %%\n", 100 * jump);
+      if (method == MC_METHOD_NODE_TO_SEGMENT) {
+        /* the dropped strip's discretization error, which shrinks under refinement */
+        ck_assert_msg(jump < last_jump, "the jump does not shrink under refinement: %g then %g", last_jump, jump);
+      } else {
+        /* the covered part is integrated: the answer is continuous in the geometry (ends of
+           Gamma_c within 1e-6 of a segment from a node snap to it: O(1e-6) at most; the faceted
+           0.1 geometry jumped by 1-9 % here) */
+        ck_assert_msg(jump < 1e-5, "%s: a shift of 1e-9 cells changes the sag by %g", method_name(method), jump);
+      }
       last_jump = jump;
     }
   }
@@ -970,8 +995,11 @@ START_TEST(interference_fit_shrink_ring_lame) {
       if (j >= 3 && j + 3 < cd.n) p_spread = max_d(p_spread, dev);
       else if (cd.force[j] > 0) p_spread_ends = max_d(p_spread_ends, dev);
     }
-    ck_assert_msg(cd.force[0] == 0 && cd.force[cd.n - 1] == 0 && isinf(cd.gap[0]) && isinf(cd.gap[cd.n - 1]),
-                  "the end nodes see body 2");
+    /* the chain's end nodes on the symmetry lines keep their rows: the smooth geometry's end
+       normals (from the circle through the last three nodes) are radial, they see body 2 */
+    ck_assert_msg(isfinite(cd.gap[0]) && isfinite(cd.gap[cd.n - 1]) && cd.force[0] > 0 && cd.force[cd.n - 1] > 0,
+                  "the end nodes lost their rows: gaps %g %g forces %g %g", cd.gap[0], cd.gap[cd.n - 1], cd.force[0],
+                  cd.force[cd.n - 1]);
     double *u = displacement(m, 1, inner.n_nodes), u_r = 0;
     for (int i = 0; i <= inner.nt; ++i) u_r += hypot(u[2 * i], u[2 * i + 1]) / (inner.nt + 1); /* j = 0: r = a */
     free(u);

@@ -43,10 +43,11 @@ module mortarcontact
   integer, parameter, public :: MC_X = 1, MC_Y = 2, MC_XY = 3
   integer, parameter, public :: MC_OPTION_METHOD = 1, MC_OPTION_TOLERANCE = 2, &
        MC_OPTION_MAX_ITERATIONS = 3, MC_OPTION_ORDERING = 4, MC_OPTION_Q1_INTEGRATION = 6, &
-       MC_OPTION_CONTACT_NORMAL = 7
+       MC_OPTION_CONTACT_NORMAL = 7, MC_OPTION_CONTACT_SURFACE = 8, MC_OPTION_FEATURE_ANGLE = 9
   integer, parameter, public :: MC_METHOD_MORTAR = 0, MC_METHOD_DUAL_MORTAR = 1, &
        MC_METHOD_NODE_TO_SEGMENT = 2
   integer, parameter, public :: MC_NORMAL_NONMORTAR = 0, MC_NORMAL_MORTAR = 1
+  integer, parameter, public :: MC_SURFACE_SMOOTH = 0, MC_SURFACE_FACETED = 1
   integer, parameter, public :: MC_ORDERING_AUTO = 0, MC_ORDERING_AMD = 1, MC_ORDERING_METIS = 2
   integer, parameter, public :: MC_Q1_FULL = 0, MC_Q1_BBAR = 1
   integer, parameter, public :: MC_LOG_PHASE = 1, MC_LOG_ITERATION = 2

@@ -1,0 +1,301 @@
+#include "contact_surface.hpp"
+#include "error.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace mc {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double cross(Point u, Point v) { return u.x * v.y - u.y * v.x; }
+double dot(Point u, Point v) { return u.x * v.x + u.y * v.y; }
+Point minus(Point u, Point v) { return {u.x - v.x, u.y - v.y}; }
+Point plus(Point u, Point v) { return {u.x + v.x, u.y + v.y}; }
+Point scaled(Point u, double s) { return {s * u.x, s * u.y}; }
+double norm(Point u) { return std::hypot(u.x, u.y); }
+Point unit(Point u) { return scaled(u, 1 / norm(u)); }
+// Outward normal of an edge a->b with the body on its left.
+Point edge_normal(Point a, Point b) { return unit({b.y - a.y, a.x - b.x}); }
+// The direction of travel whose outward normal is n (the body on the left).
+Point tangent_of(Point n) { return {-n.y, n.x}; }
+
+// Chains of a surface: sequences of nodes following the edges' orientation.
+struct Chain {
+  std::vector<int> nodes;
+  bool closed = false;
+};
+
+std::vector<Chain> chains_of(const std::vector<SurfaceSegment> &surface) {
+  std::vector<std::pair<int, int>> next;  // (from, to), sorted by from
+  for (auto &s : surface) next.push_back({s.a, s.b});
+  std::sort(next.begin(), next.end());
+  auto find = [&](int node) { return std::lower_bound(next.begin(), next.end(), std::make_pair(node, -1)); };
+  auto successor = [&](int node) {
+    auto it = find(node);
+    return it != next.end() && it->first == node ? it->second : -1;
+  };
+  std::vector<int> targets, heads;
+  for (auto &s : surface) targets.push_back(s.b);
+  std::sort(targets.begin(), targets.end());
+  for (auto &s : surface)
+    if (!std::binary_search(targets.begin(), targets.end(), s.a)) heads.push_back(s.a);
+  std::sort(heads.begin(), heads.end());
+  std::vector<char> used_edge(next.size(), 0);
+  auto take = [&](int from) { used_edge[find(from) - next.begin()] = 1; };
+  std::vector<Chain> chains;
+  for (int head : heads) {
+    Chain c;
+    for (int node = head; node >= 0; node = successor(node)) {
+      c.nodes.push_back(node);
+      if (successor(node) >= 0) take(node);
+    }
+    chains.push_back(c);
+  }
+  for (size_t e = 0; e < next.size(); ++e) {  // what is left are closed loops
+    if (used_edge[e]) continue;
+    Chain c;
+    c.closed = true;
+    const int start = next[e].first;
+    int node = start;
+    do {
+      c.nodes.push_back(node);
+      take(node);
+      node = successor(node);
+    } while (node != start);
+    chains.push_back(c);
+  }
+  return chains;
+}
+
+// Signed angle by which the direction of travel turns at node b of the path a -> b -> c.
+double turn_angle(Point a, Point b, Point c) {
+  Point d1 = minus(b, a), d2 = minus(c, b);
+  return std::atan2(cross(d1, d2), dot(d1, d2));
+}
+
+// Splits a chain into faces at corners (turns above the feature angle). A closed loop without
+// corners stays one closed face; one with corners is opened at a corner.
+std::vector<SurfaceFace> faces_of(const Mesh &mesh, const Chain &chain, bool split, double feature_angle) {
+  const int m = int(chain.nodes.size());
+  auto at = [&](int k) { return mesh.node(chain.nodes[((k % m) + m) % m]); };
+  std::vector<char> corner(m, 0);
+  if (split)
+    for (int k = 0; k < m; ++k) {
+      if (!chain.closed && (k == 0 || k == m - 1)) continue;
+      corner[k] = std::fabs(turn_angle(at(k - 1), at(k), at(k + 1))) > feature_angle;
+    }
+  std::vector<SurfaceFace> faces;
+  int first_corner = -1;
+  for (int k = 0; k < m; ++k)
+    if (corner[k]) { first_corner = k; break; }
+  if (chain.closed && first_corner < 0) {
+    SurfaceFace face;
+    face.nodes = chain.nodes;
+    face.closed = true;
+    faces.push_back(face);
+    return faces;
+  }
+  // Walk from the start (open chain) or from the first corner (closed loop), cutting at corners.
+  const int start = chain.closed ? first_corner : 0, steps = chain.closed ? m : m - 1;
+  SurfaceFace face;
+  face.nodes.push_back(chain.nodes[start]);
+  for (int step = 1; step <= steps; ++step) {
+    const int k = (start + step) % m;
+    face.nodes.push_back(chain.nodes[k]);
+    if (corner[k] || step == steps) {
+      faces.push_back(face);
+      face = SurfaceFace{};
+      face.nodes.push_back(chain.nodes[k]);
+    }
+  }
+  return faces;
+}
+
+// Unit normal at the end node p0 of an open face from the circle through p0, p1, p2 (exact on
+// a circle, the edge normal on a straight face); the edge normal `fallback` when they are
+// (nearly) collinear.
+Point end_normal_from_circle(Point p0, Point p1, Point p2, Point fallback) {
+  Point u = minus(p1, p0), v = minus(p2, p0);
+  const double d = 2 * cross(u, v);
+  const double scale = norm(u) * norm(v);
+  if (std::fabs(d) <= 1e-10 * scale) return fallback;
+  const double uu = dot(u, u), vv = dot(v, v);
+  Point centre{p0.x + (v.y * uu - u.y * vv) / d, p0.y + (u.x * vv - v.x * uu) / d};
+  Point n = unit(minus(p0, centre));
+  return dot(n, fallback) >= 0 ? n : scaled(n, -1);
+}
+
+// Nodal normals of a face. Smooth: Yang-Laursen-Meng, n ~ l2 n1 + l1 n2 (exact on circles);
+// faceted: the mean of the unit edge normals.
+void face_normals(const Mesh &mesh, SurfaceFace &face, bool smooth) {
+  const int m = int(face.nodes.size());
+  auto p = [&](int k) { return mesh.node(face.nodes[((k % m) + m) % m]); };
+  face.normals.assign(m, Point{0, 0});
+  for (int k = 0; k < m; ++k) {
+    const bool has_prev = face.closed || k > 0, has_next = face.closed || k + 1 < m;
+    if (has_prev && has_next) {
+      Point n1 = edge_normal(p(k - 1), p(k)), n2 = edge_normal(p(k), p(k + 1));
+      double l1 = norm(minus(p(k), p(k - 1))), l2 = norm(minus(p(k + 1), p(k)));
+      face.normals[k] = smooth ? unit(plus(scaled(n1, l2), scaled(n2, l1))) : unit(plus(n1, n2));
+    } else {
+      Point n = has_next ? edge_normal(p(k), p(k + 1)) : edge_normal(p(k - 1), p(k));
+      if (smooth && m >= 3) n = has_next ? end_normal_from_circle(p(k), p(k + 1), p(k + 2), n)
+                                         : end_normal_from_circle(p(k), p(k - 1), p(k - 2), n);
+      face.normals[k] = n;
+    }
+  }
+}
+
+// Cubic Hermite basis and its derivative.
+void hermite(double s, double h[4]) {
+  const double s2 = s * s, s3 = s2 * s;
+  h[0] = 2 * s3 - 3 * s2 + 1, h[1] = s3 - 2 * s2 + s, h[2] = -2 * s3 + 3 * s2, h[3] = s3 - s2;
+}
+void hermite_derivative(double s, double h[4]) {
+  const double s2 = s * s;
+  h[0] = 6 * s2 - 6 * s, h[1] = 3 * s2 - 4 * s + 1, h[2] = -6 * s2 + 6 * s, h[3] = 3 * s2 - 2 * s;
+}
+
+}  // namespace
+
+SurfaceCurve::SurfaceCurve(const Mesh &mesh, const std::vector<SurfaceSegment> &segments, const SurfaceOptions &options)
+    : smooth_(options.smooth) {
+  const double feature = options.feature_angle_degrees * kPi / 180;
+  for (const Chain &chain : chains_of(segments))
+    for (SurfaceFace &face : faces_of(mesh, chain, smooth_, feature)) {
+      face_normals(mesh, face, smooth_);
+      face.segment_begin = int(segments_.size());
+      const int m = int(face.nodes.size());
+      for (int k = 0; k < face.edges(); ++k) {
+        CurveSegment c;
+        c.face = int(faces_.size()), c.k = k;
+        c.a = face.nodes[k], c.b = face.nodes[(k + 1) % m];
+        c.pa = mesh.node(c.a), c.pb = mesh.node(c.b);
+        c.na = face.normals[k], c.nb = face.normals[(k + 1) % m];
+        c.length = norm(minus(c.pb, c.pa));
+        c.edge_normal = edge_normal(c.pa, c.pb);
+        c.ta = scaled(tangent_of(c.na), c.length), c.tb = scaled(tangent_of(c.nb), c.length);
+        segments_.push_back(c);
+      }
+      faces_.push_back(std::move(face));
+    }
+}
+
+int SurfaceCurve::segment_of(int face, int k) const {
+  const SurfaceFace &f = faces_[face];
+  const int e = f.edges();
+  return f.segment_begin + ((k % e) + e) % e;
+}
+
+Point SurfaceCurve::point(int seg, double s) const {
+  const CurveSegment &c = segments_[seg];
+  if (!smooth_) return plus(c.pa, scaled(minus(c.pb, c.pa), s));
+  double h[4];
+  hermite(s, h);
+  return {h[0] * c.pa.x + h[1] * c.ta.x + h[2] * c.pb.x + h[3] * c.tb.x,
+          h[0] * c.pa.y + h[1] * c.ta.y + h[2] * c.pb.y + h[3] * c.tb.y};
+}
+
+Point SurfaceCurve::derivative(int seg, double s) const {
+  const CurveSegment &c = segments_[seg];
+  if (!smooth_) return minus(c.pb, c.pa);
+  double h[4];
+  hermite_derivative(s, h);
+  return {h[0] * c.pa.x + h[1] * c.ta.x + h[2] * c.pb.x + h[3] * c.tb.x,
+          h[0] * c.pa.y + h[1] * c.ta.y + h[2] * c.pb.y + h[3] * c.tb.y};
+}
+
+Point SurfaceCurve::surface_normal(int seg, double s) const {
+  if (!smooth_) return segments_[seg].edge_normal;
+  Point d = derivative(seg, s);
+  return unit({d.y, -d.x});
+}
+
+Point SurfaceCurve::look_direction(int seg, double s) const {
+  if (smooth_) return surface_normal(seg, s);
+  const CurveSegment &c = segments_[seg];
+  return unit(plus(scaled(c.na, 1 - s), scaled(c.nb, s)));
+}
+
+double SurfaceCurve::speed(int seg, double s) const { return norm(derivative(seg, s)); }
+
+bool SurfaceCurve::intersect_line(int seg, Point p, Point n, double slack, double &s, double &t) const {
+  const CurveSegment &c = segments_[seg];
+  // f(s) = cross(point(s) - p, n): zero where the curve crosses the line.
+  auto f = [&](double x) { return cross(minus(point(seg, x), p), n); };
+  const double tolerance = 1e-14 * (c.length + norm(minus(c.pa, p)));
+  if (smooth_) {
+    // The curve lies in the convex hull of its Bezier points: skip it if they are all on one side.
+    Point bezier[4] = {c.pa, plus(c.pa, scaled(c.ta, 1.0 / 3)), minus(c.pb, scaled(c.tb, 1.0 / 3)), c.pb};
+    double lo = 1e300, hi = -1e300;
+    for (Point q : bezier) {
+      double v = cross(minus(q, p), n);
+      lo = std::min(lo, v), hi = std::max(hi, v);
+    }
+    const double reach = slack * 2 * (c.length + norm(c.ta) + norm(c.tb));
+    if (lo > reach + tolerance || hi < -reach - tolerance) return false;
+  }
+  double a = -slack, b = 1 + slack, fa = f(a), fb = f(b);
+  if (std::fabs(fa) <= tolerance) fa = 0;
+  if (std::fabs(fb) <= tolerance) fb = 0;
+  if ((fa > 0 && fb > 0) || (fa < 0 && fb < 0)) return false;
+  if (!smooth_) {
+    s = fa == fb ? 0.5 : a + (b - a) * fa / (fa - fb);  // f is linear in s
+  } else {
+    // Safeguarded Newton inside the bracket [a, b] (the curve turns little on one segment).
+    s = fa == fb ? 0.5 : a + (b - a) * fa / (fa - fb);
+    for (int it = 0; it < 60; ++it) {
+      const double fs = f(s);
+      if (fs == 0) break;
+      if ((fs < 0) == (fa < 0)) a = s, fa = fs;
+      else b = s;
+      const double slope = cross(derivative(seg, s), n);
+      double next = slope != 0 ? s - fs / slope : 0.5 * (a + b);
+      if (!(next > a && next < b)) next = 0.5 * (a + b);
+      const bool done = std::fabs(next - s) <= 1e-15;
+      s = next;
+      if (done || b - a <= 1e-15) break;
+    }
+  }
+  if (s < -slack || s > 1 + slack) return false;
+  if (dot(surface_normal(seg, std::clamp(s, 0.0, 1.0)), n) >= 0) return false;  // seen from behind
+  t = dot(minus(point(seg, s), p), n);
+  return true;
+}
+
+bool SurfaceCurve::cast(Point p, Point n, int &seg, double &s, double &t) const {
+  double best = 0;
+  bool found = false;
+  for (int k = 0; k < int(segments_.size()); ++k) {
+    double sk, tk;
+    if (!intersect_line(k, p, n, 1e-12, sk, tk)) continue;
+    if (!found || std::fabs(tk) < std::fabs(best)) best = tk, seg = k, s = std::clamp(sk, 0.0, 1.0), t = tk, found = true;
+  }
+  return found;
+}
+
+bool SurfaceCurve::closest_point(Point p, Point facing, int &seg, double &s) const {
+  double best = 1e300;
+  bool found = false;
+  for (int k = 0; k < int(segments_.size()); ++k) {
+    const CurveSegment &c = segments_[k];
+    Point e = minus(c.pb, c.pa);
+    double x = std::clamp(dot(minus(p, c.pa), e) / dot(e, e), 0.0, 1.0);
+    if (smooth_)  // Newton on (point(x) - p) . point'(x) = 0, kept in [0, 1]
+      for (int it = 0; it < 20; ++it) {
+        Point r = minus(point(k, x), p), d = derivative(k, x);
+        double g = dot(r, d), slope = dot(d, d);
+        double next = std::clamp(x - g / slope, 0.0, 1.0);
+        if (std::fabs(next - x) <= 1e-15) break;
+        x = next;
+      }
+    if (dot(surface_normal(k, x), facing) >= 0) continue;
+    double distance = norm(minus(point(k, x), p));
+    if (distance < best) best = distance, seg = k, s = x, found = true;
+  }
+  return found;
+}
+
+}  // namespace mc

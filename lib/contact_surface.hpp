@@ -1,0 +1,87 @@
+// The geometry a contact surface presents to the contact constraint: its chains of boundary
+// edges split into faces at corners, nodal normals, and a curve through the nodes on which
+// points, normals and gaps are measured. The mesh itself never moves.
+//
+//   smooth  : on each face a C1 cubic Hermite curve through the nodes, with tangents from
+//             nodal normals that are exact for nodes on a circle at any spacing (Yang, Laursen
+//             & Meng, IJNME 62 (2005): each edge normal weighted by the other edge's length);
+//             a straight face reconstructs as itself, parametrized like its edges.
+//   faceted : the straight edges; nodal normals the mean of the adjacent edges' unit normals
+//             (version 0.1's geometry), never split at corners.
+//
+// A segment's parameter s in [0,1] is also the coordinate of the linear finite element trace
+// on that edge: the displacement at curve point (seg, s) is (1-s) u_a + s u_b.
+#pragma once
+#include "mesh.hpp"
+#include <vector>
+
+namespace mc {
+
+// A boundary edge, oriented like its cell (body on the left).
+struct SurfaceSegment {
+  int a, b;
+};
+
+struct SurfaceOptions {
+  bool smooth = true;
+  double feature_angle_degrees = 45;  // smooth only: split a chain where edges turn by more
+};
+
+// A maximal piece of a chain on which the curve is smooth: consecutive nodes, closed if it is
+// a whole loop without corners. Face ends at a corner hold the corner node; a corner node
+// therefore belongs to two faces, with one normal in each.
+struct SurfaceFace {
+  std::vector<int> nodes;          // mesh node ids
+  std::vector<Point> normals;      // unit outward normal at each node, in this face
+  bool closed = false;
+  int segment_begin = 0;           // segments of this face: [segment_begin, segment_begin + edges)
+  int edges() const { return closed ? int(nodes.size()) : int(nodes.size()) - 1; }
+};
+
+// One edge of a face with what the curve on it needs.
+struct CurveSegment {
+  int face, k;         // edge k of face: nodes k and k+1 (mod size for a closed face)
+  int a, b;            // mesh node ids
+  Point pa, pb;        // end points
+  Point na, nb;        // unit nodal normals (in this face)
+  Point ta, tb;        // Hermite end tangents (smooth), scaled to the chord length
+  Point edge_normal;   // unit normal of the straight edge
+  double length;       // chord length
+};
+
+class SurfaceCurve {
+public:
+  SurfaceCurve() = default;
+  SurfaceCurve(const Mesh &mesh, const std::vector<SurfaceSegment> &segments, const SurfaceOptions &options);
+
+  bool smooth() const { return smooth_; }
+  const std::vector<SurfaceFace> &faces() const { return faces_; }
+  const std::vector<CurveSegment> &segments() const { return segments_; }
+  int segment_of(int face, int k) const;
+
+  Point point(int seg, double s) const;
+  Point derivative(int seg, double s) const;  // d point / d s
+  // The outward normal of the surface at (seg, s): the curve's own (smooth) or the edge's.
+  Point surface_normal(int seg, double s) const;
+  // The direction along which a non-mortar surface looks for the other body: the curve normal
+  // (smooth) or the normalized linear interpolation of the nodal normals (faceted).
+  Point look_direction(int seg, double s) const;
+  // Line element |d point / d s|.
+  double speed(int seg, double s) const;
+
+  // The intersection of the line p + t n with segment `seg`'s curve, where the curve faces
+  // against n: s in [-slack, 1+slack] and t; false if there is none.
+  bool intersect_line(int seg, Point p, Point n, double slack, double &s, double &t) const;
+  // The nearest hit of the line p + t n (|t| least) on a segment facing against n, over all
+  // segments. Returns false if the line misses the surface.
+  bool cast(Point p, Point n, int &seg, double &s, double &t) const;
+  // The point of the surface closest to p among segments facing against `facing`.
+  bool closest_point(Point p, Point facing, int &seg, double &s) const;
+
+private:
+  bool smooth_ = true;
+  std::vector<SurfaceFace> faces_;
+  std::vector<CurveSegment> segments_;
+};
+
+}  // namespace mc
