@@ -163,17 +163,19 @@ static double shrink_fit_worst(int method, int surface, double delta_cells, doub
   solve_checked(m, method, surface, n_nodes, NULL, NULL);
   const double p_lame = shrink_fit_pressure(a, b, R, c, e1, e2, nu);
   contact_data cd = contact_get(m);
-  double worst = 0, lo = INFINITY, hi = 0;
+  double worst = 0, lo = INFINITY, hi = 0, total = 0;
   int blind = 0;
+  for (mc_int j = 0; j < cd.n; ++j) total += cd.force[j];
   for (mc_int j = 0; j < cd.n; ++j) {
     if (!isfinite(cd.gap[j])) ++blind; /* a closed loop has no end: every node must see the hub */
     worst = max_d(worst, fabs(cd.pressure[j] / p_lame - 1));
     lo = fmin(lo, cd.pressure[j] / p_lame), hi = max_d(hi, cd.pressure[j] / p_lame);
   }
-  printf("shrink fit, %s, %s, delta = %.1f h: %d nodes, %d blind, nodal p / Lame in [%.4f, %.4f] (Lame p = %.6g), "
-         "%ld iterations\n",
-         method_name(method), surface_name(surface), delta_cells, (int)cd.n, blind, lo, hi, p_lame,
-         info_int(m, MC_INFO_ITERATIONS));
+  /* the mean pressure, total force over the circumference 2 pi b, checks the formula itself */
+  printf("shrink fit, %s, %s, delta = %.1f h: %d nodes, %d blind, nodal p / Lame in [%.4f, %.4f], mean %.4f "
+         "(Lame p = %.6g), %ld iterations\n",
+         method_name(method), surface_name(surface), delta_cells, (int)cd.n, blind, lo, hi,
+         total / (2 * PI * b) / p_lame, p_lame, info_int(m, MC_INFO_ITERATIONS));
   if (surface == MC_SURFACE_SMOOTH) {
     ck_assert_int_eq(cd.n, nt1);
     ck_assert_msg(blind == 0, "%d nodes of the closed loop see no mortar surface", blind);
@@ -498,8 +500,8 @@ static double sweep_force(double s, int method, int surface) {
   return total;
 }
 
-/* Issue 11, bullet 4: body 1's node 8 (x = 1.5 + s - 1/32) crosses body 2's end x = 1.5 as s runs
-   over one body-1 cell h = 1/16 in steps of h/20 (s = -h/2 .. h/2, plus one step beyond each end).
+/* Issue 11, bullet 4: body 1's node 8 (x = 1.5 + s) crosses body 2's end x = 1.5 as s runs over
+   one body-1 cell h = 1/16 in steps of h/20 (s = -h/2 .. h/2, plus one step beyond each end).
    Deviation from a smooth curve: |F_i - (F_{i-1} + F_{i+1}) / 2| / F_i, half the second
    difference. For a smooth F it is F'' (h/20)^2 / 2, about 1e-5 F here (F varies by O(F) over the
    contact width 0.5); a jump J at step i shows as J / 2, a kink (jump of F') as F' h / 40. So
@@ -585,6 +587,8 @@ START_TEST(bad_input_surface_angle_fold) {
     FAILS(mc_set_option_real(m, MC_OPTION_FEATURE_ANGLE, angles[k]), MC_ERROR_ARGUMENT, "MC_OPTION_FEATURE_ANGLE");
     ck_assert_msg(strstr(mc_errmsg(m), shown[k]) != NULL, "message \"%s\" lacks \"%s\"", mc_errmsg(m), shown[k]);
   }
+  FAILS(mc_set_option_int(m, MC_OPTION_FEATURE_ANGLE, 30), MC_ERROR_ARGUMENT, "mc_set_option_real");
+  FAILS(mc_set_option_real(m, MC_OPTION_CONTACT_SURFACE, MC_SURFACE_FACETED), MC_ERROR_ARGUMENT, "mc_set_option_int");
   SUCCEEDS(mc_set_option_real(m, MC_OPTION_FEATURE_ANGLE, 30));
   SUCCEEDS(mc_set_option_int(m, MC_OPTION_CONTACT_SURFACE, MC_SURFACE_SMOOTH));
 
