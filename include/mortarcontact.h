@@ -119,7 +119,8 @@ enum {
   MC_INFO_FACTOR_NNZ = 2,          /* int: nonzeros of the Cholesky factors */
   MC_INFO_ITERATIONS = 3,          /* int: active-set iterations of the last solve */
   MC_INFO_ACTIVE_NODES = 4,        /* int: body-1 contact nodes with a positive force */
-  MC_INFO_CONTACT_NODES = 5,       /* int: body-1 contact nodes that see body 2 (constraint rows) */
+  MC_INFO_CONTACT_NODES = 5,       /* int: constraint rows: body-1 positions that see body 2, plus the
+                                      ends of Gamma_c inside partly covered edges */
   MC_INFO_FACTORIZATIONS = 6,      /* int: numeric factorizations done by the last solve (0 on reuse) */
   MC_INFO_TIME_ASSEMBLY = 20,      /* real, seconds */
   MC_INFO_TIME_ANALYSIS = 21,      /* real, seconds: ordering and symbolic factorization */
@@ -194,9 +195,13 @@ MC_API mc_status mc_clear_loads(mc_model *m, int body);
 /* Candidate contact surface of a body: boundary edges, 2 node ids each. Body 1 is the
    non-mortar side (the paper's Omega^1: its trace carries the constraint and the
    multipliers); body 2 is the mortar side. Both bodies need one for a contact solve.
-   The surface may be open chains or closed loops. Body-1 nodes whose normal line does
-   not meet body 2's surface "see no mortar surface": they drop out of the constraint set
-   (zero force, zero pressure, gap reported as +infinity). */
+   The surface may be open chains or closed loops; consecutive edges that turn by more than
+   175 degrees (a chain folding back on itself) are an MC_ERROR_CONTACT naming the node.
+   Gamma_c is the part of body 1's surface whose normal lines meet body 2's surface: it may end
+   inside a body-1 edge that body 2 covers partly (the constraint there then acts on both of
+   that edge's nodes), and a closed loop covered all round has no end. A body-1 node whose
+   normal line misses body 2 "sees no mortar surface": its gap is reported as +infinity, and
+   its force is zero unless Gamma_c ends inside one of its edges. */
 MC_API mc_status mc_set_contact(mc_model *m, int body, mc_int n_edges, const mc_int *edges);
 /* Adds offset[k] (a length, may be negative) to the initial gap g0 of body-1 node nodes[k]:
    a clearance (> 0) or an interference (< 0) that the meshes do not show, e.g. a coating or a
@@ -247,19 +252,23 @@ MC_API mc_status mc_get_stress(const mc_model *m, int body, double *sigma);
    prescribed components, 0 at the others. Reactions + applied loads + contact forces = 0. */
 MC_API mc_status mc_get_reaction(const mc_model *m, int body, double *r);
 
-/* Number of body-1 contact-surface nodes (the length of the arrays below). */
+/* Number of body-1 contact positions (the length of the arrays below): the nodes of body 1's
+   contact surface, except that a corner node where the smooth surface is split
+   (MC_OPTION_FEATURE_ANGLE) counts once per face, each with that face's normal and its own
+   constraint. */
 MC_API mc_status mc_get_contact_count(const mc_model *m, mc_int *n);
-/* Their ids (index base applies), in order along each chain of Gamma_c. */
+/* Their node ids (index base applies), in order along each face of the surface. */
 MC_API mc_status mc_get_contact_nodes(const mc_model *m, mc_int *nodes);
-/* Contact pressure at those nodes, >= 0, force per unit area (per unit length of Gamma_c per
-   unit thickness). Recovered by lumping: p_j = lambda_j / (t * integral of phi_j over
-   Gamma_c), which is exact for uniform pressure. */
+/* Contact pressure at those positions, >= 0, force per unit area (per unit length of Gamma_c
+   per unit thickness). Recovered by lumping: p_j = f_j / (t * integral of phi_j over Gamma_c),
+   which is exact for uniform pressure. */
 MC_API mc_status mc_get_contact_pressure(const mc_model *m, double *p);
-/* Nodal multipliers lambda_j >= 0: the normal contact force on body-1 node j (total force,
-   thickness included), pushing body 1 along -n_j. */
+/* Normal contact forces f_j >= 0 on body 1 at those positions (total force, thickness
+   included), pushing body 1 along -n_j: the multiplier of the position's own constraint row,
+   plus its share of a row at an end of Gamma_c inside one of its edges. */
 MC_API mc_status mc_get_contact_force(const mc_model *m, double *f);
 /* Discrete gap after the solve: g0_j - (u1_j - pi(u2)_j).n_j >= 0 (the row of the cone K_h);
-   +infinity for nodes that see no mortar surface. */
+   +infinity for positions that see no mortar surface. */
 MC_API mc_status mc_get_contact_gap(const mc_model *m, double *g);
 /* Initial gap g0_j along the normal (negative: interference); +infinity where no mortar surface. */
 MC_API mc_status mc_get_contact_initial_gap(const mc_model *m, double *g0);

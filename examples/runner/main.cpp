@@ -200,6 +200,10 @@ void set_options(mc_model *m, const Scene &scene) {
   setup(m, mc_set_option_int(m, MC_OPTION_Q1_INTEGRATION, s.q1_integration), scene, "solver.q1_integration",
         "mc_set_option_int");
   setup(m, mc_set_option_int(m, MC_OPTION_ORDERING, s.ordering), scene, "solver.ordering", "mc_set_option_int");
+  setup(m, mc_set_option_int(m, MC_OPTION_CONTACT_SURFACE, s.contact_surface), scene, "solver.contact_surface",
+        "mc_set_option_int");
+  setup(m, mc_set_option_real(m, MC_OPTION_FEATURE_ANGLE, s.feature_angle), scene, "solver.feature_angle",
+        "mc_set_option_real");
 }
 
 // ---- results ------------------------------------------------------------------------------

@@ -270,10 +270,11 @@ Body parse_body(const Value &v, int index, const std::string &base_dir) {
 
 Solver parse_solver(const Value &v) {
   // Defaults: the library's (mortarcontact.h).
-  Solver s{MC_METHOD_MORTAR, 1e-10, 200, MC_NORMAL_NONMORTAR, MC_Q1_FULL, MC_ORDERING_AUTO};
+  Solver s{MC_METHOD_MORTAR, 1e-10, 200, MC_NORMAL_NONMORTAR, MC_Q1_FULL, MC_ORDERING_AUTO, MC_SURFACE_SMOOTH, 45};
   if (!v.has("solver")) return s;
   Value o = v.child("solver");
-  o.expect_object({"method", "tolerance", "max_iterations", "contact_normal", "q1_integration", "ordering"});
+  o.expect_object({"method", "tolerance", "max_iterations", "contact_normal", "q1_integration", "ordering",
+                   "contact_surface", "feature_angle"});
   if (o.has("method"))
     s.method = o.child("method").choice({{"mortar", MC_METHOD_MORTAR},
                                          {"dual_mortar", MC_METHOD_DUAL_MORTAR},
@@ -286,6 +287,9 @@ Solver parse_solver(const Value &v) {
     s.q1_integration = o.child("q1_integration").choice({{"full", MC_Q1_FULL}, {"bbar", MC_Q1_BBAR}});
   if (o.has("ordering"))
     s.ordering = o.child("ordering").choice({{"auto", MC_ORDERING_AUTO}, {"amd", MC_ORDERING_AMD}, {"metis", MC_ORDERING_METIS}});
+  if (o.has("contact_surface"))
+    s.contact_surface = o.child("contact_surface").choice({{"smooth", MC_SURFACE_SMOOTH}, {"faceted", MC_SURFACE_FACETED}});
+  if (o.has("feature_angle")) s.feature_angle = o.child("feature_angle").number();  // the library checks the range
   return s;
 }
 

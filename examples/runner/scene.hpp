@@ -51,6 +51,8 @@ struct Solver {
   int contact_normal;  // MC_NORMAL_*
   int q1_integration;  // MC_Q1_*
   int ordering;        // MC_ORDERING_*
+  int contact_surface;   // MC_SURFACE_*
+  double feature_angle;  // degrees
 };
 
 struct Output {

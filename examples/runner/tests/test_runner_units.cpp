@@ -256,6 +256,8 @@ START_TEST(valid_scene_parsed_with_defaults) {
   ck_assert_double_eq(s.thickness, 1.0);
   ck_assert_int_eq(s.solver.method, MC_METHOD_DUAL_MORTAR);
   ck_assert_int_eq(s.solver.contact_normal, MC_NORMAL_NONMORTAR);
+  ck_assert_int_eq(s.solver.contact_surface, MC_SURFACE_SMOOTH);
+  ck_assert_double_eq(s.solver.feature_angle, 45.0);
   ck_assert_double_eq(s.solver.tolerance, 1e-10);
   ck_assert_str_eq(s.bodies[0].mesh_path.c_str(), "dir/m.msh");  // relative to the scene file
   ck_assert_str_eq(s.output.pressure_csv.c_str(), "dir/out/p.csv");
@@ -267,6 +269,18 @@ START_TEST(valid_scene_parsed_with_defaults) {
   ck_assert_int_eq(int(s.bodies[0].loads[1].type), int(LoadType::BodyForce));
   ck_assert_double_eq(s.bodies[0].loads[1].value[1], -1.0);
   ck_assert(!s.hertz.enabled);
+}
+END_TEST
+
+START_TEST(contact_surface_options_parsed) {
+  const Scene s = parse_scene(scene_text("\"method\": \"dual_mortar\"",
+                                         "\"method\": \"dual_mortar\", \"contact_surface\": \"faceted\", "
+                                         "\"feature_angle\": 30"),
+                              "dir/s.json");
+  ck_assert_int_eq(s.solver.contact_surface, MC_SURFACE_FACETED);
+  ck_assert_double_eq(s.solver.feature_angle, 30.0);
+  std::string e = scene_error(scene_text("\"method\": \"dual_mortar\"", "\"contact_surface\": \"curvy\""));
+  ASSERT_HAS(e, "contact_surface");
 }
 END_TEST
 
@@ -392,6 +406,7 @@ int main(int argc, char **argv) {
   tcase_add_test(tc, body_errors_name_element_and_line);
   tcase_add_test(tc, malformed_files_name_file_and_line);
   tcase_add_test(tc, valid_scene_parsed_with_defaults);
+  tcase_add_test(tc, contact_surface_options_parsed);
   tcase_add_test(tc, scene_errors_name_the_key);
   tcase_add_test(tc, runner_patch_test_both_formats);
   tcase_add_test(tc, runner_interference_gap_offset_exact);
