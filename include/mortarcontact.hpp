@@ -152,15 +152,19 @@ inline mc_int item_count(std::size_t size, std::size_t per_item, const char *wha
   return static_cast<mc_int>(count);
 }
 
-/// Checks that `values` has `per_item` values for each of `count` items (an empty
-/// `values` is allowed where the C API takes NULL: `optional`).
-inline void check_size(std::size_t size, mc_int count, std::size_t per_item, const char *what,
-                       bool optional = false) {
-  if (optional && size == 0) return;
-  const std::size_t want = static_cast<std::size_t>(count) * per_item;
-  if (size != want)
-    throw Error(Status::error_argument, std::string(what) + ": " + std::to_string(size) + " values, expected " +
+/// The number of items in `ids` (`ids_per_item` ids each), checked to be the number of items in
+/// `values` (`values_per_item` each). An empty `values` is allowed where the C API takes NULL
+/// (`values_optional`).
+inline mc_int paired_count(const std::vector<mc_int> &ids, std::size_t ids_per_item, const std::vector<double> &values,
+                           std::size_t values_per_item, const char *what, bool values_optional = false) {
+  const mc_int count = item_count(ids.size(), ids_per_item, what);
+  if (values_optional && values.empty()) return count;
+  const std::size_t want = static_cast<std::size_t>(count) * values_per_item;
+  if (values.size() != want)
+    throw Error(Status::error_argument, std::string(what) + ": " + std::to_string(values.size()) +
+                                            " values for " + std::to_string(count) + " items, expected " +
                                             std::to_string(want));
+  return count;
 }
 
 template <class T>
@@ -241,7 +245,10 @@ class Model {
   /// d: 9 per cell (row-major symmetric 3x3, Voigt notation).
   void set_cell_elasticity(int body, const double *d) { check(::mc_set_cell_elasticity(get(), body, d)); }
   void set_cell_elasticity(int body, const std::vector<double> &d) {
-    detail::check_size(d.size(), known_mesh(body).n_cells, 9, "set_cell_elasticity: d");
+    const mc_int n_cells = known_mesh(body).n_cells;
+    if (d.size() != 9 * static_cast<std::size_t>(n_cells))
+      throw Error(Status::error_argument, "set_cell_elasticity: " + std::to_string(d.size()) + " values, expected 9 for each of " +
+                                              std::to_string(n_cells) + " cells");
     set_cell_elasticity(body, d.data());
   }
 
@@ -251,9 +258,8 @@ class Model {
   }
   void fix(int body, const std::vector<mc_int> &nodes, Components components,
            const std::vector<double> &values = {}) {
-    const mc_int n = detail::item_count(nodes.size(), 1, "fix: nodes");
-    detail::check_size(values.size(), n, 2, "fix: values", true);
-    fix(body, n, nodes.data(), components, detail::data_or_null(values));
+    fix(body, detail::paired_count(nodes, 1, values, 2, "fix", true), nodes.data(), components,
+        detail::data_or_null(values));
   }
 
   /// edges: 2 ids each; traction: 2 per edge.
@@ -261,9 +267,7 @@ class Model {
     check(::mc_add_traction(get(), body, n_edges, edges, traction));
   }
   void add_traction(int body, const std::vector<mc_int> &edges, const std::vector<double> &traction) {
-    const mc_int n = detail::item_count(edges.size(), 2, "add_traction: edges");
-    detail::check_size(traction.size(), n, 2, "add_traction: traction");
-    add_traction(body, n, edges.data(), traction.data());
+    add_traction(body, detail::paired_count(edges, 2, traction, 2, "add_traction"), edges.data(), traction.data());
   }
 
   /// edges: 2 ids each; pressure: 1 per edge.
@@ -271,9 +275,7 @@ class Model {
     check(::mc_add_pressure(get(), body, n_edges, edges, pressure));
   }
   void add_pressure(int body, const std::vector<mc_int> &edges, const std::vector<double> &pressure) {
-    const mc_int n = detail::item_count(edges.size(), 2, "add_pressure: edges");
-    detail::check_size(pressure.size(), n, 1, "add_pressure: pressure");
-    add_pressure(body, n, edges.data(), pressure.data());
+    add_pressure(body, detail::paired_count(edges, 2, pressure, 1, "add_pressure"), edges.data(), pressure.data());
   }
 
   /// force: 2 per node.
@@ -281,9 +283,7 @@ class Model {
     check(::mc_add_nodal_force(get(), body, n, nodes, force));
   }
   void add_nodal_force(int body, const std::vector<mc_int> &nodes, const std::vector<double> &force) {
-    const mc_int n = detail::item_count(nodes.size(), 1, "add_nodal_force: nodes");
-    detail::check_size(force.size(), n, 2, "add_nodal_force: force");
-    add_nodal_force(body, n, nodes.data(), force.data());
+    add_nodal_force(body, detail::paired_count(nodes, 1, force, 2, "add_nodal_force"), nodes.data(), force.data());
   }
 
   void set_body_force(int body, double fx, double fy) { check(::mc_set_body_force(get(), body, fx, fy)); }
@@ -302,9 +302,7 @@ class Model {
     check(::mc_set_gap_offset(get(), n, nodes, offset));
   }
   void set_gap_offset(const std::vector<mc_int> &nodes, const std::vector<double> &offset) {
-    const mc_int n = detail::item_count(nodes.size(), 1, "set_gap_offset: nodes");
-    detail::check_size(offset.size(), n, 1, "set_gap_offset: offset");
-    set_gap_offset(n, nodes.data(), offset.data());
+    set_gap_offset(detail::paired_count(nodes, 1, offset, 1, "set_gap_offset"), nodes.data(), offset.data());
   }
 
   // ---- options and solving ----
@@ -357,23 +355,13 @@ class Model {
 
   /// 2 per node of the body.
   void get_displacement(int body, double *u) const { check(::mc_get_displacement(get(), body, u)); }
-  std::vector<double> get_displacement(int body) const {
-    return per_node(body, 2, [&](double *u) { get_displacement(body, u); });
-  }
-
+  std::vector<double> get_displacement(int body) const { return per_node(body, 2, ::mc_get_displacement); }
   /// 4 per cell: xx yy xy zz.
   void get_stress(int body, double *sigma) const { check(::mc_get_stress(get(), body, sigma)); }
-  std::vector<double> get_stress(int body) const {
-    std::vector<double> sigma(4 * static_cast<std::size_t>(known_mesh(body).n_cells));
-    get_stress(body, sigma.data());
-    return sigma;
-  }
-
+  std::vector<double> get_stress(int body) const { return per_cell(body, 4, ::mc_get_stress); }
   /// 2 per node of the body.
   void get_reaction(int body, double *r) const { check(::mc_get_reaction(get(), body, r)); }
-  std::vector<double> get_reaction(int body) const {
-    return per_node(body, 2, [&](double *r) { get_reaction(body, r); });
-  }
+  std::vector<double> get_reaction(int body) const { return per_node(body, 2, ::mc_get_reaction); }
 
   /// Number of body-1 contact nodes: the length of the contact arrays.
   mc_int get_contact_count() const {
@@ -382,32 +370,20 @@ class Model {
     return n;
   }
   void get_contact_nodes(mc_int *nodes) const { check(::mc_get_contact_nodes(get(), nodes)); }
-  std::vector<mc_int> get_contact_nodes() const {
-    std::vector<mc_int> nodes(static_cast<std::size_t>(get_contact_count()));
-    get_contact_nodes(nodes.data());
-    return nodes;
-  }
+  std::vector<mc_int> get_contact_nodes() const { return per_contact_node<mc_int>(1, ::mc_get_contact_nodes); }
   void get_contact_pressure(double *p) const { check(::mc_get_contact_pressure(get(), p)); }
-  std::vector<double> get_contact_pressure() const {
-    return per_contact_node(1, [&](double *p) { get_contact_pressure(p); });
-  }
+  std::vector<double> get_contact_pressure() const { return per_contact_node<double>(1, ::mc_get_contact_pressure); }
   void get_contact_force(double *f) const { check(::mc_get_contact_force(get(), f)); }
-  std::vector<double> get_contact_force() const {
-    return per_contact_node(1, [&](double *f) { get_contact_force(f); });
-  }
+  std::vector<double> get_contact_force() const { return per_contact_node<double>(1, ::mc_get_contact_force); }
   void get_contact_gap(double *g) const { check(::mc_get_contact_gap(get(), g)); }
-  std::vector<double> get_contact_gap() const {
-    return per_contact_node(1, [&](double *g) { get_contact_gap(g); });
-  }
+  std::vector<double> get_contact_gap() const { return per_contact_node<double>(1, ::mc_get_contact_gap); }
   void get_contact_initial_gap(double *g0) const { check(::mc_get_contact_initial_gap(get(), g0)); }
   std::vector<double> get_contact_initial_gap() const {
-    return per_contact_node(1, [&](double *g0) { get_contact_initial_gap(g0); });
+    return per_contact_node<double>(1, ::mc_get_contact_initial_gap);
   }
   /// 2 per contact node.
   void get_contact_normal(double *n) const { check(::mc_get_contact_normal(get(), n)); }
-  std::vector<double> get_contact_normal() const {
-    return per_contact_node(2, [&](double *n) { get_contact_normal(n); });
-  }
+  std::vector<double> get_contact_normal() const { return per_contact_node<double>(2, ::mc_get_contact_normal); }
 
   // ---- output ----
 
@@ -437,16 +413,26 @@ class Model {
     return mesh;
   }
 
-  template <class Fill>
-  std::vector<double> per_node(int body, std::size_t per_item, Fill fill) const {
-    std::vector<double> values(per_item * static_cast<std::size_t>(known_mesh(body).n_nodes));
-    fill(values.data());
+  using BodyGetter = mc_status (*)(const mc_model *, int, double *);
+  template <class T>
+  using ContactGetter = mc_status (*)(const mc_model *, T *);
+
+  /// A C getter's values, `per_item` for each of `count` items, in a new vector.
+  std::vector<double> body_values(int body, mc_int count, std::size_t per_item, BodyGetter c_getter) const {
+    std::vector<double> values(per_item * static_cast<std::size_t>(count));
+    check(c_getter(get(), body, values.data()));
     return values;
   }
-  template <class Fill>
-  std::vector<double> per_contact_node(std::size_t per_item, Fill fill) const {
-    std::vector<double> values(per_item * static_cast<std::size_t>(get_contact_count()));
-    fill(values.data());
+  std::vector<double> per_node(int body, std::size_t per_item, BodyGetter c_getter) const {
+    return body_values(body, known_mesh(body).n_nodes, per_item, c_getter);
+  }
+  std::vector<double> per_cell(int body, std::size_t per_item, BodyGetter c_getter) const {
+    return body_values(body, known_mesh(body).n_cells, per_item, c_getter);
+  }
+  template <class T>
+  std::vector<T> per_contact_node(std::size_t per_item, ContactGetter<T> c_getter) const {
+    std::vector<T> values(per_item * static_cast<std::size_t>(get_contact_count()));
+    check(c_getter(get(), values.data()));
     return values;
   }
 
