@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Static check of bindings/julia/MortarContact.jl against include/mortarcontact.h.
+"""Static check of bindings/julia/src/MortarContact.jl against include/mortarcontact.h.
 
 Julia is not installed where this project is tested, so this test does what it can without it:
 every public mc_ function of the header must have exactly one

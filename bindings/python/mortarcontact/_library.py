@@ -5,9 +5,8 @@ Search order (the first hit wins):
 1. the environment variable ``MORTARCONTACT_LIBRARY``: the full path of the shared library;
 2. the library that ``cmake --install`` installed together with this package: its directory,
    relative to the package's, is recorded in the generated module ``_installed_library``;
-3. the install prefix this package sits in (``<prefix>/lib/python3*/{site,dist}-packages/`` or
-   ``<prefix>/share/mortarcontact/python/``, both four levels below ``<prefix>``): its ``lib*/``
-   and ``lib/<multiarch>/``;
+3. the install prefix this package sits in (``<prefix>/lib/python3*/{site,dist}-packages/``,
+   four levels below ``<prefix>``): its ``lib*/`` and ``lib/<multiarch>/``;
 4. a build tree of the source checkout this package sits in: ``<repo>/build*/lib/``;
 5. the virtual environment the interpreter runs in, if any (a package installed with pip into
    the prefix the library was installed into): its ``lib*/`` and ``lib/<multiarch>/``;
