@@ -6,10 +6,17 @@
 # installs (libdir = CMAKE_INSTALL_LIBDIR, e.g. lib or lib/x86_64-linux-gnu):
 #   <libdir>/libmortarcontact.so.0.1.0, .so.0, .so      shared library (soname .so.0)
 #   <libdir>/libmortarcontact.a                           static library
-#   include/mortarcontact.h
+#   include/mortarcontact.h, include/mortarcontact.hpp    C header, header-only C++ wrapper
 #   <libdir>/pkgconfig/mortarcontact.pc
 #   <libdir>/cmake/mortarcontact/mortarcontact{Config,ConfigVersion,Targets*}.cmake
-#   share/mortarcontact/{python,fortran,julia}/...        binding sources
+#   with a Fortran compiler (cmake/FortranBinding.cmake):
+#     <libdir>/libmortarcontact_fortran.{so*,a}           the Fortran module's wrappers
+#     MC_INSTALL_FORTRAN_MODDIR/mortarcontact.mod          e.g. include/mortarcontact/fortran/gnu-12
+#     <libdir>/pkgconfig/mortarcontact-fortran.pc
+#   MC_INSTALL_PYTHONDIR/mortarcontact/                     the Python package, by default where
+#                                                         the prefix's Python looks (see below)
+#   share/mortarcontact/fortran/mortarcontact.f90         the module's source, for other compilers
+#   share/mortarcontact/julia/MortarContact/              the Julia package (Project.toml, src/)
 #   share/doc/mortarcontact/{abi,bindings}.md
 include(CMakePackageConfigHelpers)
 
@@ -47,13 +54,19 @@ endforeach()
 set_property(TARGET mortarcontact_static PROPERTY INTERFACE_LINK_LIBRARIES "${_mc_static_new_iface}")
 
 # ---- libraries and header --------------------------------------------------------------
-install(TARGETS mortarcontact mortarcontact_static
+set(_mc_library_targets mortarcontact mortarcontact_static)
+if(TARGET mortarcontact_fortran)
+  list(APPEND _mc_library_targets mortarcontact_fortran mortarcontact_fortran_static)
+  install(FILES ${MC_FORTRAN_MODULE_DIR}/mortarcontact.mod DESTINATION ${MC_INSTALL_FORTRAN_MODDIR})
+endif()
+install(TARGETS ${_mc_library_targets}
   EXPORT mortarcontactTargets
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # (lib/ already gives both targets $<INSTALL_INTERFACE:include> as their include directory.)
-install(FILES ${PROJECT_SOURCE_DIR}/include/mortarcontact.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(FILES ${PROJECT_SOURCE_DIR}/include/mortarcontact.h ${PROJECT_SOURCE_DIR}/include/mortarcontact.hpp
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 
 # ---- CMake package -------------------------------------------------------------------
 install(EXPORT mortarcontactTargets
@@ -75,42 +88,71 @@ install(FILES
 
 # ---- pkg-config ----------------------------------------------------------------------
 # Written at install time, so that `cmake --install --prefix P` gets P (not the configure-time
-# CMAKE_INSTALL_PREFIX) in the file.
-set(MC_PC_IN "${CMAKE_CURRENT_LIST_DIR}/mortarcontact.pc.in")
+# CMAKE_INSTALL_PREFIX) in the files.
+set(_mc_pc_files mortarcontact)
+if(TARGET mortarcontact_fortran)
+  list(APPEND _mc_pc_files mortarcontact-fortran)
+endif()
 install(CODE "
   set(_mc_prefix \"\${CMAKE_INSTALL_PREFIX}\")
   set(_mc_libdir \"${CMAKE_INSTALL_LIBDIR}\")
   set(_mc_includedir \"${CMAKE_INSTALL_INCLUDEDIR}\")
+  set(_mc_fmoddir \"${MC_INSTALL_FORTRAN_MODDIR}\")
   if(NOT IS_ABSOLUTE \"\${_mc_libdir}\")
     set(_mc_libdir \"\\\${exec_prefix}/\${_mc_libdir}\")
   endif()
   if(NOT IS_ABSOLUTE \"\${_mc_includedir}\")
     set(_mc_includedir \"\\\${prefix}/\${_mc_includedir}\")
   endif()
+  if(NOT IS_ABSOLUTE \"\${_mc_fmoddir}\")
+    set(_mc_fmoddir \"\\\${prefix}/\${_mc_fmoddir}\")
+  endif()
   set(MC_PC_PREFIX \"\${_mc_prefix}\")
   set(MC_PC_LIBDIR \"\${_mc_libdir}\")
   set(MC_PC_INCLUDEDIR \"\${_mc_includedir}\")
+  set(MC_PC_FMODDIR \"\${_mc_fmoddir}\")
+  set(MC_PC_FORTRAN_COMPILER \"${CMAKE_Fortran_COMPILER_ID} ${CMAKE_Fortran_COMPILER_VERSION}\")
   set(MC_PC_VERSION \"${PROJECT_VERSION}\")
-  configure_file(\"${MC_PC_IN}\" \"${PROJECT_BINARY_DIR}/cmake/mortarcontact.pc\" @ONLY)
-  file(INSTALL DESTINATION \"\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_LIBDIR}/pkgconfig\"
-       TYPE FILE FILES \"${PROJECT_BINARY_DIR}/cmake/mortarcontact.pc\")
+  foreach(_mc_pc ${_mc_pc_files})
+    configure_file(\"${CMAKE_CURRENT_LIST_DIR}/\${_mc_pc}.pc.in\" \"${PROJECT_BINARY_DIR}/cmake/\${_mc_pc}.pc\" @ONLY)
+    file(INSTALL DESTINATION \"\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_LIBDIR}/pkgconfig\"
+         TYPE FILE FILES \"${PROJECT_BINARY_DIR}/cmake/\${_mc_pc}.pc\")
+  endforeach()
+")
+
+# ---- the Python package, where the prefix's Python looks for packages -------------------
+# At install time (the prefix is only known then): cmake/InstallPythonPackage.cmake.
+set(MC_INSTALL_PYTHONDIR "" CACHE STRING
+    "Folder of the Python package mortarcontact (relative to the prefix, or absolute); empty: \
+the prefix's layout (a venv's site-packages, else Debian's lib/python3/dist-packages for /usr, \
+lib/pythonX.Y/dist-packages for other prefixes)")
+set(_mc_py_version 3)  # no Python at configure time: lib/python3/dist-packages
+find_program(MC_PYTHON3 NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
+if(NOT MC_PYTHON3)
+  find_program(MC_PYTHON3 NAMES python3)
+endif()
+if(MC_PYTHON3)
+  execute_process(COMMAND ${MC_PYTHON3} -c "import sys; print('%d.%d' % sys.version_info[:2])"
+                  OUTPUT_VARIABLE _mc_py_version OUTPUT_STRIP_TRAILING_WHITESPACE)
+endif()
+install(CODE "
+  set(MC_PY_DIR \"${MC_INSTALL_PYTHONDIR}\")
+  set(MC_PY_VERSION \"${_mc_py_version}\")
+  set(MC_PY_SOURCE \"${PROJECT_SOURCE_DIR}/bindings/python/mortarcontact\")
+  set(MC_PY_LIBDIR \"${CMAKE_INSTALL_LIBDIR}\")
+  set(MC_PY_SCRATCH \"${PROJECT_BINARY_DIR}/cmake\")
+  include(\"${CMAKE_CURRENT_LIST_DIR}/InstallPythonPackage.cmake\")
 ")
 
 # ---- binding sources and docs -----------------------------------------------------------
-if(EXISTS ${PROJECT_SOURCE_DIR}/bindings/python/mortarcontact)
-  install(DIRECTORY ${PROJECT_SOURCE_DIR}/bindings/python/mortarcontact
-          DESTINATION ${MC_INSTALL_DATADIR}/python
-          FILES_MATCHING PATTERN "*.py"
-          PATTERN "__pycache__" EXCLUDE)
-endif()
 if(EXISTS ${PROJECT_SOURCE_DIR}/bindings/fortran/mortarcontact.f90)
   install(FILES ${PROJECT_SOURCE_DIR}/bindings/fortran/mortarcontact.f90
           DESTINATION ${MC_INSTALL_DATADIR}/fortran)
 endif()
-if(EXISTS ${PROJECT_SOURCE_DIR}/bindings/julia/MortarContact.jl)
-  install(FILES ${PROJECT_SOURCE_DIR}/bindings/julia/MortarContact.jl
-          DESTINATION ${MC_INSTALL_DATADIR}/julia)
-endif()
+install(FILES ${PROJECT_SOURCE_DIR}/bindings/julia/Project.toml
+        DESTINATION ${MC_INSTALL_DATADIR}/julia/MortarContact)
+install(FILES ${PROJECT_SOURCE_DIR}/bindings/julia/src/MortarContact.jl
+        DESTINATION ${MC_INSTALL_DATADIR}/julia/MortarContact/src)
 foreach(_mc_doc abi.md bindings.md)
   if(EXISTS ${PROJECT_SOURCE_DIR}/docs/${_mc_doc})
     install(FILES ${PROJECT_SOURCE_DIR}/docs/${_mc_doc} DESTINATION ${CMAKE_INSTALL_DOCDIR})

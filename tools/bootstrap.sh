@@ -8,7 +8,7 @@ mode=${1:-test}
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake pkg-config libsuitesparse-dev libopenblas-dev liblapacke-dev check
-          gfortran python3 python3-numpy abigail-tools
+          gfortran python3 python3-numpy python3-venv python3-setuptools python3-wheel abigail-tools
           nlohmann-json3-dev gmsh python3-matplotlib python3-meshio
           clang libclang-rt-14-dev valgrind)
 missing=()

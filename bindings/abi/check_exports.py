@@ -11,12 +11,21 @@ import subprocess
 import sys
 
 
+def header_text(header):
+    """The header without its comments."""
+    return re.sub(r"/\*.*?\*/", " ", open(header).read(), flags=re.S)
+
+
+def declared_functions(header):
+    """The names of the functions the header declares MC_API."""
+    return set(re.findall(r"MC_API[^;(]*?\b(mc_\w+)\s*\(", header_text(header)))
+
+
 def main():
     header, lib = sys.argv[1], sys.argv[2]
     nm = sys.argv[3] if len(sys.argv) > 3 else "nm"
-    text = re.sub(r"/\*.*?\*/", " ", open(header).read(), flags=re.S)
-    declared = set(re.findall(r"MC_API[^;(]*?\b(mc_\w+)\s*\(", text))
-    major = re.search(r"#define MC_VERSION_MAJOR (\d+)", text).group(1)
+    declared = declared_functions(header)
+    major = re.search(r"#define MC_VERSION_MAJOR (\d+)", header_text(header)).group(1)
     node = "MORTARCONTACT_" + major
     out = subprocess.run([nm, "-D", "--defined-only", lib], check=True, capture_output=True, text=True).stdout
     exported, problems = set(), []

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Static check of bindings/julia/MortarContact.jl against include/mortarcontact.h.
+"""Static check of bindings/julia/src/MortarContact.jl against include/mortarcontact.h.
 
 Julia is not installed where this project is tested, so this test does what it can without it:
 every public mc_ function of the header must have exactly one
@@ -10,9 +10,11 @@ that matches the C type:
     void (return) -> Cvoid, const char * (return) -> Cstring, mc_log_fn -> Ptr{Cvoid},
     T * / const T * -> Ptr{J(T)} or Ref{J(T)}, mc_model * -> Ptr{Cvoid}, mc_model ** -> Ref/Ptr{Ptr{Cvoid}}.
 The Julia constants MC_* must equal the header's. Also checked: no ccall names a function the
-header lacks. Exits 1 with a list of the mismatches.
+header lacks. With the package's Project.toml: its name is the module's, its version the
+header's, and every package the module loads with `using` is one of its [deps] (what
+`Pkg.develop(path=...)` needs). Exits 1 with a list of the mismatches.
 
-usage: check_julia_wrappers.py HEADER JULIA_FILE
+usage: check_julia_wrappers.py HEADER JULIA_FILE [PROJECT_TOML]
 """
 import re
 import sys
@@ -122,6 +124,30 @@ def julia_constants(path):
                                                text, flags=re.M)}
 
 
+def project_errors(project_toml, julia, header_consts):
+    """Mismatches between Project.toml and the module it describes."""
+    text = open(project_toml).read()
+    fields = dict(re.findall(r'^(\w+)\s*=\s*"([^"]*)"', text, flags=re.M))
+    module = re.search(r"^module\s+(\w+)", open(julia).read(), flags=re.M).group(1)
+    version = "%d.%d.%d" % tuple(header_consts["MC_VERSION_" + k] for k in ("MAJOR", "MINOR", "PATCH"))
+    deps_section = re.search(r"^\[deps\]\n(.*?)(?:^\[|\Z)", text, flags=re.M | re.S)
+    deps = set(re.findall(r"^(\w+)\s*=", deps_section.group(1), flags=re.M)) if deps_section else set()
+    used = set(re.findall(r"^using\s+(\w+)", strip_julia_docstrings(open(julia).read()), flags=re.M))
+    errors = []
+    if fields.get("name") != module:
+        errors.append("Project.toml: name %r, the module is %r" % (fields.get("name"), module))
+    if fields.get("version") != version:
+        errors.append("Project.toml: version %r, the header is %s" % (fields.get("version"), version))
+    if not re.fullmatch(r"[0-9a-f]{8}-[0-9a-f]{4}-[0-9a-f]{4}-[0-9a-f]{4}-[0-9a-f]{12}", fields.get("uuid", "")):
+        errors.append("Project.toml: no valid uuid")
+    errors += ["Project.toml: the module uses %s, which [deps] lacks" % d for d in sorted(used - deps)]
+    return errors
+
+
+def strip_julia_docstrings(text):
+    return re.sub(r'"""(.*?)"""', " ", text, flags=re.S)
+
+
 def main():
     header, julia = sys.argv[1], sys.argv[2]
     funcs = header_functions(header)
@@ -151,6 +177,8 @@ def main():
     for k in sorted(set(hc) | set(jc)):
         if hc.get(k) != jc.get(k):
             errors.append("constant %s: header %s, Julia %s" % (k, hc.get(k), jc.get(k)))
+    if len(sys.argv) > 3:
+        errors += project_errors(sys.argv[3], julia, hc)
     if errors:
         print("MortarContact.jl does not match mortarcontact.h:")
         for e in errors:

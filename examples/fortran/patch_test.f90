@@ -5,7 +5,8 @@
 ! The exact solution is linear in each body (sigma_yy = -p, sigma_xx = 0, plane strain), so the
 ! mortar method must reproduce it to round-off with a uniform contact pressure p.
 ! Exits with status 1 if it does not. Build and run:
-!   gfortran mortarcontact.f90 patch_test.f90 -lmortarcontact && ./a.out
+!   gfortran patch_test.f90 $(pkg-config --cflags --libs mortarcontact-fortran) && ./a.out   (installed)
+!   gfortran mortarcontact.f90 patch_test.f90 -lmortarcontact && ./a.out        (module source)
 program patch_test
   use mortarcontact
   implicit none

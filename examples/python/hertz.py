@@ -17,23 +17,17 @@ p(x) = p0 sqrt(1 - x^2 / a^2).
         default normals p0 comes out about 0.8 % high, with --mortar-normal within 0.2 %
         (the header's comment on MC_OPTION_CONTACT_NORMAL explains the difference).
 
-Run from anywhere: the bindings are taken from bindings/python of this checkout unless
-mortarcontact is importable already; the library from MORTARCONTACT_LIBRARY, the install
-prefix or build*/lib.
+Needs the package mortarcontact importable: installed (`cmake --install`, or pip; see
+docs/bindings.md), or PYTHONPATH=bindings/python in a source checkout, whose package then loads
+the library from build*/lib (or MORTARCONTACT_LIBRARY).
 """
 
 import math
-import os
 import sys
 
 import numpy as np
 
-try:
-    import mortarcontact as mc
-except ImportError:
-    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir,
-                                    "bindings", "python"))
-    import mortarcontact as mc
+import mortarcontact as mc
 
 R, E, NU, P = 1.0, 1.0, 0.3, 0.01
 

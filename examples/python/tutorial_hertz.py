@@ -14,17 +14,11 @@ Exit status 0 only if every check of steps 11 and 13 passes (ctest runs it: tuto
 """
 
 import math
-import os
 import sys
 
 import numpy as np
 
-try:
-    import mortarcontact as mc
-except ImportError:  # run from a source checkout: the package is in bindings/python
-    here = os.path.dirname(os.path.abspath(__file__))
-    sys.path.insert(0, os.path.join(here, os.pardir, os.pardir, "bindings", "python"))
-    import mortarcontact as mc
+import mortarcontact as mc
 
 
 # ---- step 2: two independent meshes ----

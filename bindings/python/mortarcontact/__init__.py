@@ -8,8 +8,9 @@ linear-elastic bodies by the mortar finite element method.
 ...     m.solve()
 ...     u = m.get_displacement(1)
 
-The shared library is found through ``MORTARCONTACT_LIBRARY`` (full path), the install
-prefix, a build tree next to the sources, then the system path: see ``_library``.
+The shared library is found through ``MORTARCONTACT_LIBRARY`` (full path), the path
+``cmake --install`` recorded next to the package, the install prefix, a build tree next to the
+sources, a virtual environment's prefix, then the system path: see ``_library``.
 """
 
 from .constants import *  # noqa: F401,F403  (the MC_* constants of mortarcontact.h)

@@ -3,20 +3,47 @@
 Search order (the first hit wins):
 
 1. the environment variable ``MORTARCONTACT_LIBRARY``: the full path of the shared library;
-2. the install prefix this package was installed into: the package lives in
-   ``<prefix>/share/mortarcontact/python/mortarcontact``, the library in ``<prefix>/lib*/`` or
-   ``<prefix>/lib/<multiarch>/``;
-3. a build tree of the source checkout this package sits in: ``<repo>/build*/lib/``;
-4. ``ctypes.util.find_library("mortarcontact")`` (the system's library path).
+2. the library that ``cmake --install`` installed together with this package: its directory,
+   relative to the package's, is recorded in the generated module ``_installed_library``;
+3. the install prefix this package sits in (``<prefix>/lib/python3*/{site,dist}-packages/``,
+   four levels below ``<prefix>``): its ``lib*/`` and ``lib/<multiarch>/``;
+4. a build tree of the source checkout this package sits in: ``<repo>/build*/lib/``;
+5. the virtual environment the interpreter runs in, if any (a package installed with pip into
+   the prefix the library was installed into): its ``lib*/`` and ``lib/<multiarch>/``;
+6. ``ctypes.util.find_library("mortarcontact")`` (the system's library path).
 """
 
 import ctypes
 import ctypes.util
 import glob
 import os
+import sys
 
 _SONAME = "libmortarcontact.so.0"
 _NAMES = (_SONAME, "libmortarcontact.so")
+
+
+def _in_prefix(prefix):
+    """Candidate paths of the library under an install prefix: ``lib*/`` and ``lib/*/``."""
+    for pattern in ("lib*", os.path.join("lib", "*")):
+        for d in sorted(glob.glob(os.path.join(prefix, pattern))):
+            for name in _NAMES:
+                yield os.path.join(d, name)
+
+
+def _recorded_by_install(here):
+    """The library's path recorded by ``cmake --install`` next to this package, if any."""
+    try:
+        from . import _installed_library
+    except ImportError:  # a source checkout or a pip install: nothing was recorded
+        return
+    for name in _NAMES:
+        yield os.path.normpath(os.path.join(here, _installed_library.LIBRARY_DIR, name))
+
+
+def _up(path, levels):
+    """The directory `levels` levels above `path`."""
+    return os.path.normpath(os.path.join(path, *([os.pardir] * levels)))
 
 
 def _candidates():
@@ -26,18 +53,14 @@ def _candidates():
         yield env
         return  # an explicit choice is never silently replaced by another copy
     here = os.path.dirname(os.path.abspath(__file__))
-    # 2. <prefix>/share/mortarcontact/python/mortarcontact -> <prefix>
-    prefix = os.path.normpath(os.path.join(here, os.pardir, os.pardir, os.pardir, os.pardir))
-    for pattern in ("lib*", os.path.join("lib", "*")):
-        for d in sorted(glob.glob(os.path.join(prefix, pattern))):
-            for name in _NAMES:
-                yield os.path.join(d, name)
-    # 3. <repo>/bindings/python/mortarcontact -> <repo>/build*/lib
-    repo = os.path.normpath(os.path.join(here, os.pardir, os.pardir, os.pardir))
-    for d in sorted(glob.glob(os.path.join(repo, "build*", "lib"))):
+    yield from _recorded_by_install(here)
+    yield from _in_prefix(_up(here, 4))
+    # <repo>/bindings/python/mortarcontact -> <repo>/build*/lib
+    for d in sorted(glob.glob(os.path.join(_up(here, 3), "build*", "lib"))):
         for name in _NAMES:
             yield os.path.join(d, name)
-    # 4. the system's search path
+    if sys.prefix != sys.base_prefix:  # a virtual environment (pip-installed package)
+        yield from _in_prefix(sys.prefix)
     found = ctypes.util.find_library("mortarcontact")
     if found:
         yield found

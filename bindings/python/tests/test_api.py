@@ -3,6 +3,9 @@ model's life cycle. None of them needs a working contact solve."""
 import gc
 import os
 import re
+import shutil
+import subprocess
+import sys
 import tempfile
 import unittest
 
@@ -49,6 +52,39 @@ class TestLibrary(unittest.TestCase):
         with open(_paths.HEADER) as f:
             names = set(re.findall(r"MC_API[^;(]*?\b(mc_\w+)\s*\(", f.read()))
         self.assertEqual(set(mc._library.PROTOTYPES), names)
+
+
+class TestLibrarySearch(unittest.TestCase):
+    """Where the package looks for the library (mortarcontact._library)."""
+
+    def test_environment_variable_is_the_only_candidate(self):
+        old = os.environ.get("MORTARCONTACT_LIBRARY")
+        os.environ["MORTARCONTACT_LIBRARY"] = "/nowhere/libmortarcontact.so.0"
+        try:
+            self.assertEqual(list(mc._library._candidates()), ["/nowhere/libmortarcontact.so.0"])
+        finally:
+            if old is None:
+                del os.environ["MORTARCONTACT_LIBRARY"]
+            else:
+                os.environ["MORTARCONTACT_LIBRARY"] = old
+
+    def test_path_recorded_by_install_is_used(self):
+        """A copy of the package with the _installed_library module cmake --install writes,
+        pointing at the loaded library's folder, loads that library with no variable set."""
+        library = os.path.realpath(mc.library_path())
+        with tempfile.TemporaryDirectory() as site:
+            package = os.path.join(site, "mortarcontact")
+            shutil.copytree(os.path.dirname(mc.__file__), package,
+                            ignore=shutil.ignore_patterns("__pycache__", "_installed_library.py"))
+            with open(os.path.join(package, "_installed_library.py"), "w") as f:
+                f.write("LIBRARY_DIR = %r\n" % os.path.relpath(os.path.dirname(library), package))
+            env = {k: v for k, v in os.environ.items() if k not in ("MORTARCONTACT_LIBRARY", "PYTHONPATH")}
+            env["PYTHONPATH"] = site
+            loaded = subprocess.run(
+                [sys.executable, "-c", "import mortarcontact; print(mortarcontact.library_path())"],
+                env=env, cwd=site, check=True, capture_output=True, text=True).stdout.strip()
+        self.assertEqual(os.path.realpath(loaded), library)
+        self.assertEqual(os.path.dirname(loaded), os.path.dirname(library))
 
 
 class TestModel(unittest.TestCase):

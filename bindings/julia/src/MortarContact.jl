@@ -17,11 +17,13 @@ Two layers, both thin:
   exactly the C layout, and errors thrown as `MortarContactError(status, message)`.
 
 The library is `libmortarcontact.so.0`, loaded from `ENV["MORTARCONTACT_LIBRARY"]` (full path)
-if set, else from the install prefix this file was installed into
-(`<prefix>/share/mortarcontact/julia/`), else from the system's library path.
+if set, else from the install prefix this package was installed into
+(`<prefix>/share/mortarcontact/julia/MortarContact/`), else from `build*/lib/` of the source
+checkout it sits in (`bindings/julia/`), else from the system's library path.
 
 ```julia
-include("MortarContact.jl"); using .MortarContact
+using Pkg; Pkg.develop(path="<prefix>/share/mortarcontact/julia/MortarContact")  # once
+using MortarContact
 Model() do m
     set_mesh!(m, 1, xy1, cells1); set_material!(m, 1, 1.0, 0.3)
     # ...
@@ -55,12 +57,16 @@ function __init__()
     return nothing
 end
 
-# <prefix>/share/mortarcontact/julia/MortarContact.jl -> <prefix>/lib*/ or <prefix>/lib/<multiarch>/
+# The package's src/ is <prefix>/share/mortarcontact/julia/MortarContact/src when installed
+# (library in <prefix>/lib*/ or <prefix>/lib/<multiarch>/), <repo>/bindings/julia/src in a source
+# checkout (library in <repo>/build*/lib/).
 function find_installed()
-    prefix = normpath(joinpath(@__DIR__, "..", "..", ".."))
     subdirs(d) = isdir(d) ? [joinpath(d, x) for x in readdir(d) if isdir(joinpath(d, x))] : String[]
+    prefix = normpath(joinpath(@__DIR__, "..", "..", "..", "..", ".."))
     dirs = [d for d in subdirs(prefix) if startswith(basename(d), "lib")]
     append!(dirs, subdirs(joinpath(prefix, "lib")))
+    repo = normpath(joinpath(@__DIR__, "..", "..", ".."))
+    append!(dirs, [joinpath(d, "lib") for d in subdirs(repo) if startswith(basename(d), "build")])
     for d in dirs
         candidate = joinpath(d, libmortarcontact)
         isfile(candidate) && return candidate

@@ -1,0 +1,264 @@
+// Tests of include/mortarcontact.hpp: ownership (move-only, destroyed once: run under ASan and
+// valgrind as a memcheck test), errors as exceptions with the status and the message, the
+// vector and pointer overloads, the getters' sizes, options, the log callback, and a contact
+// solve (the README's scene: uniform pressure 0.1 transmitted exactly).
+// Whether every C function and constant has its wrapper: check_cxx_wrapper.py (cxx_wrapper_coverage).
+#include <mortarcontact.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace mc = mortarcontact;
+
+static_assert(!std::is_copy_constructible_v<mc::Model> && !std::is_copy_assignable_v<mc::Model>,
+              "a Model owns its mc_model: copying would destroy it twice");
+static_assert(std::is_nothrow_move_constructible_v<mc::Model> && std::is_nothrow_move_assignable_v<mc::Model>);
+static_assert(static_cast<int>(mc::Option::method) == MC_OPTION_METHOD);
+static_assert(static_cast<int>(mc::Status::error_not_converged) == MC_ERROR_NOT_CONVERGED);
+static_assert(mc::header_version_number == MC_VERSION_NUMBER);
+
+namespace {
+
+int failures = 0;
+
+void expect(bool ok, const char *what, int line) {
+  if (!ok) {
+    std::fprintf(stderr, "line %d: FAILED: %s\n", line, what);
+    ++failures;
+  }
+}
+#define EXPECT(cond) expect((cond), #cond, __LINE__)
+
+/// Runs `call`, which must throw mc::Error with `status`; returns the error's message.
+std::string expect_error(mc::Status status, const std::function<void()> &call, int line) {
+  try {
+    call();
+  } catch (const mc::Error &e) {
+    expect(e.status() == status, ("status " + mc::status_string(e.status())).c_str(), line);
+    expect(!e.message().empty(), "a message", line);
+    expect(std::string(e.what()).rfind(mc::status_string(status) + ": ", 0) == 0, "what() names the status", line);
+    return e.message();
+  }
+  expect(false, ("no mc::Error " + mc::status_string(status) + " thrown").c_str(), line);
+  return "";
+}
+#define EXPECT_ERROR(status, ...) expect_error(status, [&] { __VA_ARGS__; }, __LINE__)
+
+bool near(double a, double b) { return std::fabs(a - b) <= 1e-12 * (1 + std::fabs(b)); }
+
+// The README's scene: body 1 (unit square) pressed with 0.1 onto body 2 (the square below), both
+// on rollers at x = 0, body 2 on rollers at y = -1; 0-based ids.
+const std::vector<double> kXy1{0, 0, 1, 0, 1, 1, 0, 1}, kXy2{0, -1, 1, -1, 1, 0, 0, 0};
+const std::vector<mc_int> kTri{0, 1, 2, 0, 2, 3};
+
+void set_readme_scene(mc::Model &m) {
+  m.set_mesh(1, kXy1, kTri, 3);
+  m.set_mesh(2, kXy2, kTri, 3);
+  m.set_material(1, 1.0, 0.3);
+  m.set_material(2, 1.0, 0.3);
+  m.fix(1, {0, 3}, mc::Components::x);
+  m.fix(2, {0, 3}, mc::Components::x);
+  m.fix(2, {0, 1}, mc::Components::y);
+  m.add_pressure(1, {2, 3}, {0.1});
+  m.set_contact(1, {0, 1});
+  m.set_contact(2, {2, 3});
+}
+
+void expect_uniform_pressure(const mc::Model &m, double p, int line) {
+  const std::vector<double> pressure = m.get_contact_pressure();
+  expect(pressure.size() == 2, "two contact nodes", line);
+  for (double value : pressure) expect(near(value, p), ("pressure " + std::to_string(value)).c_str(), line);
+}
+
+void test_versions() {
+  EXPECT(mc::version_number() == MC_VERSION_NUMBER);
+  EXPECT(mc::version_string() == MC_VERSION_STRING);
+  EXPECT(mc::status_string(mc::Status::error_mesh) == "MC_ERROR_MESH");
+  EXPECT(mc::status_string(static_cast<mc::Status>(12345)) == "unknown status");
+}
+
+void test_errors_carry_status_and_message() {
+  mc::Model m;
+  m.set_mesh(1, kXy1, kTri, 3);
+  const std::string message = EXPECT_ERROR(mc::Status::error_material, m.set_material(1, -1.0, 0.3));
+  EXPECT(message == m.errmsg());
+  m.set_material(1, 1.0, 0.3);  // the model stays usable after a failed call
+  EXPECT(m.errmsg().empty());
+  EXPECT_ERROR(mc::Status::error_argument, m.set_material(3, 1.0, 0.3));
+  EXPECT_ERROR(mc::Status::error_singular, m.solve());  // body 1 has no supports
+  EXPECT_ERROR(mc::Status::error_state, mc::Model().get_contact_pressure());
+}
+
+void test_sizes_checked_before_the_c_call() {
+  mc::Model m;
+  EXPECT_ERROR(mc::Status::error_argument, m.set_mesh(1, {0, 0, 1}, kTri, 3));          // odd xy
+  EXPECT_ERROR(mc::Status::error_argument, m.set_mesh(1, kXy1, {0, 1, 2, 0}, 3));       // cells
+  EXPECT_ERROR(mc::Status::error_state, m.get_displacement(1));  // hence no mesh was set
+  m.set_mesh(1, kXy1, kTri, 3);
+  EXPECT_ERROR(mc::Status::error_argument, m.fix(1, {0, 1}, mc::Components::xy, {0.0}));
+  EXPECT_ERROR(mc::Status::error_argument, m.add_pressure(1, {2, 3}, {0.1, 0.2}));
+  EXPECT_ERROR(mc::Status::error_argument, m.add_traction(1, {2, 3, 1}, {0.0, 1.0}));
+  EXPECT_ERROR(mc::Status::error_argument, m.add_nodal_force(1, {2}, {1.0}));
+  EXPECT_ERROR(mc::Status::error_argument, m.set_contact(1, {0, 1, 2}));
+  EXPECT_ERROR(mc::Status::error_argument, m.set_cell_elasticity(1, std::vector<double>(9, 1.0)));
+  EXPECT_ERROR(mc::Status::error_argument, m.set_gap_offset({0, 1}, {0.1}));
+  EXPECT_ERROR(mc::Status::error_state, m.get_stress(2));  // body 2 has no mesh
+}
+
+void test_move_only_ownership() {
+  mc::Model a;
+  set_readme_scene(a);
+  mc::Model b(std::move(a));  // b owns the scene; a owns nothing
+  EXPECT(b.get() != nullptr && a.get() == nullptr);
+  b.solve();
+  expect_uniform_pressure(b, 0.1, __LINE__);
+  EXPECT_ERROR(mc::Status::error_argument, a.solve());  // a NULL model, reported, not a crash
+  mc::Model c;
+  c = std::move(b);  // c's own empty model is destroyed here (ASan/valgrind would see a leak)
+  expect_uniform_pressure(c, 0.1, __LINE__);
+  EXPECT(c.get_displacement(1).size() == 8);  // the mesh sizes move with the model
+}
+
+void test_readme_scene_vector_overloads() {
+  mc::Model m;
+  set_readme_scene(m);
+  m.solve();
+  expect_uniform_pressure(m, 0.1, __LINE__);
+  EXPECT(m.get_contact_count() == 2);
+  EXPECT((m.get_contact_nodes() == std::vector<mc_int>{0, 1}));
+  EXPECT(m.get_displacement(2).size() == 8 && m.get_reaction(2).size() == 8);
+  const std::vector<double> stress = m.get_stress(1), normal = m.get_contact_normal();
+  EXPECT(stress.size() == 8 && near(stress[1], -0.1));  // sigma_yy of cell 0
+  EXPECT(normal.size() == 4 && near(normal[0], 0.0) && near(normal[1], -1.0));
+  const std::vector<double> force = m.get_contact_force(), gap = m.get_contact_gap();
+  EXPECT(force.size() == 2 && near(force[0] + force[1], 0.1));  // total force = p * length 1
+  EXPECT(gap.size() == 2 && std::fabs(gap[0]) < 1e-12);
+  EXPECT(m.get_contact_initial_gap().size() == 2);
+  EXPECT(m.get_info_int(mc::Info::dofs) > 0);
+  EXPECT(m.get_info_int(mc::Info::active_nodes) == 2);
+  EXPECT(m.get_info_real(mc::Info::time_total) >= 0.0);
+}
+
+void test_readme_scene_pointer_overloads_one_based() {
+  mc::Model m(1);  // 1-based ids
+  const double xy1[] = {0, 0, 1, 0, 1, 1, 0, 1}, xy2[] = {0, -1, 1, -1, 1, 0, 0, 0};
+  const mc_int tri[] = {1, 2, 3, 1, 3, 4}, left[] = {1, 4}, base[] = {1, 2}, top[] = {3, 4};
+  const mc_int bottom1[] = {1, 2}, surface2[] = {3, 4};
+  const double p[] = {0.05};
+  m.set_plane(mc::Plane::strain, 2.0);  // thickness 2: pressure unchanged, forces doubled
+  m.set_mesh(1, 4, xy1, 2, 3, tri);
+  m.set_mesh(2, 4, xy2, 2, 3, tri);
+  m.set_material(1, 1.0, 0.3);
+  m.set_material(2, 1.0, 0.3);
+  m.fix(1, 2, left, mc::Components::x);
+  m.fix(2, 2, left, mc::Components::x);
+  m.fix(2, 2, base, mc::Components::y);
+  m.add_pressure(1, 1, top, p);
+  m.set_contact(1, 1, bottom1);
+  m.set_contact(2, 1, surface2);
+  m.set_option_int(mc::Option::method, mc::Method::dual_mortar);
+  m.set_option_real(mc::Option::tolerance, 1e-12);
+  m.solve();
+  expect_uniform_pressure(m, 0.05, __LINE__);
+  mc_int nodes[2] = {0, 0};
+  double force[2] = {0, 0}, u[8];
+  m.get_contact_nodes(nodes);
+  m.get_contact_force(force);
+  m.get_displacement(1, u);
+  EXPECT(nodes[0] == 1 && nodes[1] == 2);
+  EXPECT(near(force[0] + force[1], 0.1));  // 0.05 * length 1 * thickness 2
+  EXPECT(u[5] < 0 && u[7] < 0);  // the top moves down
+  EXPECT_ERROR(mc::Status::error_argument, m.set_option_int(mc::Option::method, 99));
+}
+
+void test_loads_and_material_variants() {
+  // Body 1 alone, clamped at the bottom: every load kind moves the top; clear_loads undoes them.
+  mc::Model m;
+  m.set_mesh(1, kXy1, kTri, 3);
+  m.set_cell_elasticity(1, {1.35, 0.58, 0, 0.58, 1.35, 0, 0, 0, 0.38, 1.35, 0.58, 0, 0.58, 1.35, 0, 0, 0, 0.38});
+  m.fix(1, {0, 1}, mc::Components::xy, {0, 0, 0, 0});
+  m.add_traction(1, {2, 3}, {0.0, 0.01});
+  m.add_nodal_force(1, {2}, {0.0, 0.01});
+  m.set_body_force(1, 0.0, 0.01);
+  m.solve();
+  EXPECT(m.get_displacement(1)[5] > 0);
+  const std::vector<double> reaction = m.get_reaction(1);
+  EXPECT(near(reaction[1] + reaction[3], -(0.01 + 0.01 + 0.01)));  // traction * 1 + force + body force * area 1
+  m.clear_loads(1);
+  m.solve();
+  EXPECT(std::fabs(m.get_displacement(1)[5]) < 1e-15);
+  // A gap offset needs a contact surface on body 1 first.
+  mc::Model g;
+  set_readme_scene(g);
+  g.set_gap_offset({0, 1}, {0.0, 0.0});
+  EXPECT_ERROR(mc::Status::error_argument, g.set_gap_offset({2}, {0.1}));  // node 2 is not on it
+}
+
+struct CallbackFailure : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+void test_log_callback() {
+  mc::Model m;
+  set_readme_scene(m);
+  std::vector<std::string> phases;
+  m.set_log_callback([&](mc::LogLevel level, const char *message) {
+    if (level == mc::LogLevel::phase) phases.emplace_back(message);
+  });
+  m.solve();
+  EXPECT(!phases.empty() && phases.front().rfind("solve: start", 0) == 0);
+  // An exception of the callback does not unwind through the C library: solve() rethrows it.
+  m.set_log_callback([](mc::LogLevel, const char *) { throw CallbackFailure("from the callback"); });
+  bool rethrown = false;
+  try {
+    m.solve();
+  } catch (const CallbackFailure &) {
+    rethrown = true;
+  }
+  EXPECT(rethrown);
+  m.set_log_callback(nullptr, nullptr);
+  m.solve();  // no callback left, nothing pending
+  expect_uniform_pressure(m, 0.1, __LINE__);
+}
+
+void test_write_vtu() {
+  mc::Model m;
+  set_readme_scene(m);
+  EXPECT_ERROR(mc::Status::error_state, m.write_vtu("unsolved.vtu"));
+  m.solve();
+  const std::string path = "test_cxx_wrapper.vtu";
+  m.write_vtu(path);
+  std::ifstream file(path);
+  std::string first;
+  std::getline(file, first);
+  EXPECT(first.find("<?xml") == 0);
+  std::remove(path.c_str());
+  EXPECT_ERROR(mc::Status::error_argument, m.write_vtu("/nonexistent-dir/x.vtu"));
+}
+
+}  // namespace
+
+int main() {
+  test_versions();
+  test_errors_carry_status_and_message();
+  test_sizes_checked_before_the_c_call();
+  test_move_only_ownership();
+  test_readme_scene_vector_overloads();
+  test_readme_scene_pointer_overloads_one_based();
+  test_loads_and_material_variants();
+  test_log_callback();
+  test_write_vtu();
+  if (failures) {
+    std::fprintf(stderr, "%d check(s) failed\n", failures);
+    return 1;
+  }
+  std::printf("all C++ wrapper checks passed\n");
+  return 0;
+}
