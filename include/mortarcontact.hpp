@@ -70,7 +70,9 @@ enum class Option : int {
   max_iterations = MC_OPTION_MAX_ITERATIONS,
   ordering = MC_OPTION_ORDERING,
   q1_integration = MC_OPTION_Q1_INTEGRATION,
-  contact_normal = MC_OPTION_CONTACT_NORMAL
+  contact_normal = MC_OPTION_CONTACT_NORMAL,
+  contact_surface = MC_OPTION_CONTACT_SURFACE,
+  feature_angle = MC_OPTION_FEATURE_ANGLE
 };
 
 /// Values of Option::method.
@@ -82,6 +84,9 @@ enum class Method : int {
 
 /// Values of Option::contact_normal.
 enum class ContactNormal : int { nonmortar = MC_NORMAL_NONMORTAR, mortar = MC_NORMAL_MORTAR };
+
+/// Values of Option::contact_surface.
+enum class ContactSurface : int { smooth = MC_SURFACE_SMOOTH, faceted = MC_SURFACE_FACETED };
 
 /// Values of Option::ordering ("auto" is a C++ keyword).
 enum class Ordering : int { automatic = MC_ORDERING_AUTO, amd = MC_ORDERING_AMD, metis = MC_ORDERING_METIS };
