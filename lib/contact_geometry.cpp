@@ -333,7 +333,13 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
     for (int k = 0; k < sf.edges(); ++k) {
       const int seg = curve1.segment_of(face, k);
       std::vector<double> breaks{0.0, 1.0};
+      // A body-2 node can project inside the segment only if it lies between the look lines
+      // of the segment's ends (a sign change of the bracketing function): a cheap test first.
+      const Point xa = curve1.segments()[seg].pa, xb = curve1.segments()[seg].pb;
+      const Point na = look(seg, 0), nb = look(seg, 1);
       for (Point y : body2_points) {
+        const double fa = cross(minus(y, xa), na), fb = cross(minus(y, xb), nb);
+        if (fa == 0 || fb == 0 || (fa > 0) == (fb > 0)) continue;
         double xi;
         if (inverse_projection(curve1, seg, look, y, xi)) breaks.push_back(xi);
       }
