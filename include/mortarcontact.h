@@ -65,7 +65,9 @@ typedef enum mc_status {
   MC_ERROR_INTERNAL = 9        /* a bug: please report with the message */
 } mc_status;
 
-enum { MC_PLANE_STRAIN = 0, MC_PLANE_STRESS = 1 };
+/* Kinds of 2D model (mc_set_plane). MC_AXISYMMETRIC: a 3D body of revolution under a load of
+   revolution, whose meridian half-plane is the mesh: x is the radius r >= 0, y the axis z. */
+enum { MC_PLANE_STRAIN = 0, MC_PLANE_STRESS = 1, MC_AXISYMMETRIC = 2 };
 enum { MC_X = 1, MC_Y = 2, MC_XY = 3 }; /* component masks for mc_fix */
 
 /* Options (mc_set_option_int / mc_set_option_real). Values are frozen. */

@@ -169,7 +169,7 @@ std::vector<SurfaceSegment> oriented_surface(const Mesh &mesh, const int *edges,
 
 ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<SurfaceSegment> &surface1,
                                        const Mesh &body2, const std::vector<SurfaceSegment> &surface2,
-                                       int normal_choice) {
+                                       int normal_choice, const LineMeasure &measure) {
   ContactGeometry g;
   g.mortar_segments = surface2;
   std::vector<Chain> chains = chains_of(surface1);
@@ -180,16 +180,18 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
     for (size_t k = 0; k < m; ++k) {
       Point p = body1.node(c.nodes[k]), sum{0, 0};
       bool has_prev = c.closed || k > 0, has_next = c.closed || k + 1 < m;
-      double tributary = 0;
+      double tributary = 0, at_o, at_p;  // the lumped weight: integral of phi_j w (line_measure.hpp)
       if (has_prev) {
         Point o = body1.node(c.nodes[(k + m - 1) % m]), q = edge_normal(o, p);
         sum.x += q.x, sum.y += q.y;
-        tributary += 0.5 * std::hypot(p.x - o.x, p.y - o.y);
+        measure.hat_integrals(o, p, at_o, at_p);
+        tributary += at_p;
       }
       if (has_next) {
         Point o = body1.node(c.nodes[(k + 1) % m]), q = edge_normal(p, o);
         sum.x += q.x, sum.y += q.y;
-        tributary += 0.5 * std::hypot(p.x - o.x, p.y - o.y);
+        measure.hat_integrals(p, o, at_p, at_o);
+        tributary += at_p;
       }
       g.nodes.push_back(c.nodes[k]);
       g.normals.push_back(unit(sum));

@@ -4,6 +4,7 @@
 // Gamma_c into pieces on which both traces are linear (section 3: needed for exact mortar
 // integrals).
 #pragma once
+#include "line_measure.hpp"
 #include "mesh.hpp"
 #include <limits>
 #include <utility>
@@ -48,7 +49,7 @@ struct ContactGeometry {
   std::vector<SurfacePoint> projection;  // of each node onto body 2 (segment -1: none)
   std::vector<SurfaceSegment> mortar_segments;  // body 2's contact edges
   std::vector<ContactRun> runs;
-  std::vector<double> tributary;   // integral of phi_j over body 1's contact surface
+  std::vector<double> tributary;   // integral of phi_j w over body 1's contact surface (w: the measure's t or 2 pi r)
 };
 
 // Checks the edges (2 per edge, 0-based) are boundary edges of the mesh and returns them
@@ -56,10 +57,11 @@ struct ContactGeometry {
 std::vector<SurfaceSegment> oriented_surface(const Mesh &mesh, const int *edges, int n_edges, int base = 0);
 
 // The whole geometry. Throws MC_ERROR_CONTACT if no body-1 node sees body 2.
-// normal_choice: MC_NORMAL_NONMORTAR or MC_NORMAL_MORTAR.
+// normal_choice: MC_NORMAL_NONMORTAR or MC_NORMAL_MORTAR. measure: the weight of the
+// tributary integrals (thickness, or 2 pi r in an axisymmetric model).
 ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<SurfaceSegment> &surface1,
                                        const Mesh &body2, const std::vector<SurfaceSegment> &surface2,
-                                       int normal_choice);
+                                       int normal_choice, const LineMeasure &measure);
 
 constexpr double kNoGap = std::numeric_limits<double>::infinity();
 

@@ -7,20 +7,20 @@ namespace mc {
 
 namespace {
 
-// Exact integral over a piece of length `length` of the product of two functions linear on it,
-// given by their values at the piece's ends.
-double integral_of_product(double length, double f0, double f1, double g0, double g1) {
-  return length / 6 * (2 * f0 * g0 + f0 * g1 + f1 * g0 + 2 * f1 * g1);
-}
+Point lerp(Point u, Point v, double s) { return {u.x + s * (v.x - u.x), u.y + s * (v.y - u.y)}; }
 
 // The body-1 test functions of the node pair (k, k+1) on a piece, at its ends: standard hats
-// for the paper's mortar, biorthogonal ones (2 phi_k - phi_k+1, ...) for the dual method.
-void test_functions(int method, const MortarPiece &p, double psi_k[2], double psi_k1[2]) {
+// for the paper's mortar, biorthogonal ones for the dual method (2 phi_k - phi_k+1, ... with a
+// constant weight; with 2 pi r, the basis biorthogonal in that measure on the segment xk-xk1).
+void test_functions(int method, const MortarPiece &p, Point xk, Point xk1, const LineMeasure &measure, double psi_k[2],
+                    double psi_k1[2]) {
   double phi_k[2] = {1 - p.xi0, 1 - p.xi1}, phi_k1[2] = {p.xi0, p.xi1};
+  double c[4];
+  if (method == MC_METHOD_DUAL_MORTAR) measure.dual_basis(xk, xk1, c);
   for (int e = 0; e < 2; ++e) {
     if (method == MC_METHOD_DUAL_MORTAR) {
-      psi_k[e] = 2 * phi_k[e] - phi_k1[e];
-      psi_k1[e] = 2 * phi_k1[e] - phi_k[e];
+      psi_k[e] = c[0] * phi_k[e] + c[1] * phi_k1[e];
+      psi_k1[e] = c[2] * phi_k[e] + c[3] * phi_k1[e];
     } else {
       psi_k[e] = phi_k[e];
       psi_k1[e] = phi_k1[e];
@@ -43,7 +43,8 @@ void append_row(ConstraintRows &rows, int position, const std::map<int, double> 
 }
 
 // Rows of one run for the mortar methods: the paper's pi_h^1 (3.2).
-void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, ConstraintRows &rows) {
+void mortar_rows(const ContactGeometry &g, const ContactRun &run, const Mesh &body1, int method,
+                 const LineMeasure &measure, ConstraintRows &rows) {
   const int m = int(run.positions.size()) - 1;  // nodes x_0..x_m
   // Columns: the body-2 nodes this run touches.
   std::map<int, int> column;
@@ -74,18 +75,21 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, Co
   std::vector<double> lower(m + 1, 0.0), diag(m + 1, 0.0), upper(m + 1, 0.0);
   std::vector<double> mm(size_t(m + 1) * nc, 0.0);
   for (const MortarPiece &p : run.pieces) {
+    // The piece's ends on body 1's segment x_k -> x_k+1: the weight 2 pi r is linear there.
+    const Point xk = body1.node(g.nodes[run.positions[p.k]]), xk1 = body1.node(g.nodes[run.positions[p.k + 1]]);
+    const Point end0 = lerp(xk, xk1, p.xi0), end1 = lerp(xk, xk1, p.xi1);
     double psi[2][2], phi[2][2] = {{1 - p.xi0, 1 - p.xi1}, {p.xi0, p.xi1}};
-    test_functions(method, p, psi[0], psi[1]);
+    test_functions(method, p, xk, xk1, measure, psi[0], psi[1]);
     const SurfaceSegment &s = g.mortar_segments[p.segment];
     double phi2[2][2] = {{1 - p.eta0, 1 - p.eta1}, {p.eta0, p.eta1}};
     int node2[2] = {s.a, s.b};
     for (int t = 0; t < 2; ++t) {
       int i = multiplier(p.k + t);
       for (int j = 0; j < 2; ++j) {
-        double dij = integral_of_product(p.length, psi[t][0], psi[t][1], phi[j][0], phi[j][1]);
+        double dij = measure.product_integral(end0, end1, psi[t][0], psi[t][1], phi[j][0], phi[j][1]);
         int col = p.k + j;
         (col == i ? diag : col < i ? lower : upper)[i] += dij;
-        mm[size_t(i) * nc + column[node2[j]]] += integral_of_product(p.length, psi[t][0], psi[t][1], phi2[j][0], phi2[j][1]);
+        mm[size_t(i) * nc + column[node2[j]]] += measure.product_integral(end0, end1, psi[t][0], psi[t][1], phi2[j][0], phi2[j][1]);
       }
     }
   }
@@ -129,7 +133,8 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, Co
 
 }  // namespace
 
-ConstraintRows build_constraint_rows(const ContactGeometry &g, const Mesh &, int method) {
+ConstraintRows build_constraint_rows(const ContactGeometry &g, const Mesh &body1, const Mesh &, int method,
+                                     const LineMeasure &measure) {
   ConstraintRows rows;
   rows.start.push_back(0);
   for (const ContactRun &run : g.runs) {
@@ -142,7 +147,7 @@ ConstraintRows build_constraint_rows(const ContactGeometry &g, const Mesh &, int
         append_row(rows, pos, w);
       }
     } else {
-      mortar_rows(g, run, method, rows);
+      mortar_rows(g, run, body1, method, measure, rows);
     }
   }
   return rows;

@@ -21,6 +21,9 @@ struct ConstraintRows {
   int size() const { return int(position.size()); }
 };
 
-ConstraintRows build_constraint_rows(const ContactGeometry &geometry, const Mesh &body2, int method);
+// measure: the weight of the mortar integrals D and M (thickness, or 2 pi r in an axisymmetric
+// model; line_measure.hpp), which also shapes the dual method's biorthogonal basis.
+ConstraintRows build_constraint_rows(const ContactGeometry &geometry, const Mesh &body1, const Mesh &body2, int method,
+                                     const LineMeasure &measure);
 
 }  // namespace mc
