@@ -34,7 +34,7 @@ int sphere_on_flat_solve(double h, int quads, int method, int normal, int plane,
   mc_model *m = NULL;
   int st, b, j;
   memset(res, 0, sizeof *res);
-  if (hertz_scene_axisymmetric(&s, h, h, quads)) return -1;
+  if (hertz_scene_axisymmetric(&s, h, SPHERE_H2_RATIO * h, quads)) return -1;
   if (mc_create(&m) != MC_OK) {
     hertz_scene_free(&s);
     return MC_ERROR_MEMORY;
@@ -72,7 +72,11 @@ int sphere_on_flat_solve(double h, int quads, int method, int normal, int plane,
     mc_get_info_int(m, MC_INFO_DOFS, &dofs);
     mc_get_info_int(m, MC_INFO_ACTIVE_NODES, &active);
     mc_get_info_real(m, MC_INFO_TIME_TOTAL, &res->seconds);
+    mc_get_info_real(m, MC_INFO_TIME_ASSEMBLY, &res->seconds_assembly);
+    mc_get_info_real(m, MC_INFO_TIME_FACTORIZATION, &res->seconds_factorization);
+    mc_get_info_real(m, MC_INFO_TIME_CONTACT, &res->seconds_contact);
     res->dofs = (long)dofs, res->active = (int)active;
+    mc_get_info_int(m, MC_INFO_ITERATIONS, &dofs), res->iterations = (int)dofs;
     mc_get_contact_count(m, &n);
     mc_int *nodes = malloc(sizeof(mc_int) * (size_t)n);
     double *p = malloc(sizeof(double) * (size_t)n), *f = malloc(sizeof(double) * (size_t)n),

@@ -14,7 +14,8 @@
 extern "C" {
 #endif
 
-#define SPHERE_LOAD 0.0025 /* total force: Hertz a = 0.1506, a / R small */
+#define SPHERE_LOAD 0.0025    /* total force: Hertz a = 0.1506, a / R small */
+#define SPHERE_H2_RATIO 1.37 /* body 2 spacing / body 1 spacing: non-matching, as bench/hertz_sweep */
 
 typedef struct sphere_result {
   long dofs;
@@ -25,10 +26,12 @@ typedef struct sphere_result {
   double axis_pressure;      /* the nodal pressure at the axis node */
   double p0_hertz, a_hertz;
   double seconds;            /* MC_INFO_TIME_TOTAL of the solve */
-  int active;
+  double seconds_assembly, seconds_factorization, seconds_contact; /* MC_INFO_TIME_* */
+  int active, iterations;
 } sphere_result;
 
-/* plane: MC_AXISYMMETRIC, or MC_PLANE_STRAIN to solve the same meshes as a plane half-scene
+/* h: body 1's fine spacing near the contact (body 2: SPHERE_H2_RATIO h); quads: 0 = P1, 1 = Q1.
+   plane: MC_AXISYMMETRIC, or MC_PLANE_STRAIN to solve the same meshes as a plane half-scene
    (u_x = 0 on x = 0; for the speed comparison only: its numbers are not Hertz's).
    normal: MC_NORMAL_*. Returns 0 on success, else the failing mc_status (or -1: bad mesh). */
 int sphere_on_flat_solve(double h, int quads, int method, int normal, int plane, sphere_result *r);
