@@ -219,6 +219,18 @@ START_TEST(test_contact_patch) {
     ck_assert_msg(fabs(sigma[4 * c + 3]) < 1e-10 * kPressure, "body 2 cell %d: sigma_tt %.15g", (int)c, sigma[4 * c + 3]);
   }
   free(sigma);
+  if (_i == 0) { /* the VTU names the axisymmetric stress components, hoop last */
+    char path[] = "test_axisymmetric_patch.vtu", text[4096];
+    OK(mc_write_vtu(m, path));
+    FILE *f = fopen(path, "r");
+    ck_assert_ptr_nonnull(f);
+    int found = 0;
+    while (fgets(text, sizeof text, f))
+      found |= strstr(text, "ComponentName0=\"rr\"") && strstr(text, "ComponentName3=\"theta_theta\"");
+    fclose(f);
+    remove(path);
+    ck_assert_msg(found, "no rr .. theta_theta stress components in the VTU");
+  }
   mc_destroy(m);
   sc_mesh_free(&mesh[0]);
   sc_mesh_free(&mesh[1]);
