@@ -9,7 +9,8 @@
  *   totals of the pressure, of a body force and the axis nodes' radial reactions are exact;
  * - contact patch test: a cylinder standing on another through a non-matching flat interface
  *   under uniform pressure: sigma_zz = -p, u_r = nu p r / E, contact pressure p at every
- *   contact node, axis node included (P1, Q1, Q1 B-bar x mortar, dual mortar);
+ *   contact node, axis node included (P1, Q1, Q1 B-bar x mortar, dual mortar; node-to-segment
+ *   on matching meshes);
  * - rigid motion: the axial translation is the only one (MC_ERROR_SINGULAR names it);
  * - bad input: a node with r < 0 is MC_ERROR_MESH naming the node, the model stays usable;
  *   edges on the axis have no area (loads on them add nothing; as contact edges their nodes
@@ -231,6 +232,35 @@ START_TEST(test_contact_patch) {
     remove(path);
     ck_assert_msg(found, "no rr .. theta_theta stress components in the VTU");
   }
+  mc_destroy(m);
+  sc_mesh_free(&mesh[0]);
+  sc_mesh_free(&mesh[1]);
+}
+END_TEST
+
+/* Node-to-segment, the third method: on matching meshes (5 against 5 cells) all three methods
+   are the same pointwise constraint, so it passes the patch test too, and its pressure (the
+   force over the r-weighted tributary area) is the uniform p. */
+START_TEST(test_node_to_segment_matching) {
+  sc_mesh mesh[2];
+  mc_model *m = new_axisymmetric_model(_i);
+  ck_assert_int_eq(sc_mesh_rect(&mesh[0], kind_npc[_i], 5, 3, 0, 0, 1, 0.5, 0.15, 11), 0);
+  ck_assert_int_eq(sc_mesh_rect(&mesh[1], kind_npc[_i], 5, 3, 0, -0.5, 1, 0.5, 0.15, 12), 0);
+  OK(sc_set_mesh(m, 1, &mesh[0], 0));
+  OK(sc_set_mesh(m, 2, &mesh[1], 0));
+  OK(mc_set_material(m, 1, kE1, kNu1));
+  OK(mc_set_material(m, 2, kE2, kNu2));
+  OK(sc_fix_side(m, 2, &mesh[1], SC_BOTTOM, MC_Y, 0));
+  OK(pressure_side(m, 1, &mesh[0], SC_TOP, kPressure));
+  OK(mc_set_contact(m, 1, mesh[0].n_side_edges[SC_BOTTOM], mesh[0].side_edges[SC_BOTTOM]));
+  OK(mc_set_contact(m, 2, mesh[1].n_side_edges[SC_TOP], mesh[1].side_edges[SC_TOP]));
+  OK(mc_set_option_int(m, MC_OPTION_METHOD, MC_METHOD_NODE_TO_SEGMENT));
+  OK(mc_solve(m));
+  ck_assert_msg(stack_error(m, mesh) < 1e-10 * kPressure, "%s: node-to-segment patch error %g", kind_name[_i],
+                stack_error(m, mesh));
+  double pressure[6];
+  OK(mc_get_contact_pressure(m, pressure));
+  for (int j = 0; j < 6; ++j) ck_assert_msg(fabs(pressure[j] - kPressure) < 1e-10, "node %d: %.15g", j, pressure[j]);
   mc_destroy(m);
   sc_mesh_free(&mesh[0]);
   sc_mesh_free(&mesh[1]);
@@ -461,6 +491,7 @@ static Suite *axisymmetric_suite(void) {
   tcase_add_loop_test(tc, test_elastic_patch, 0, 3);
   tcase_add_loop_test(tc, test_load_totals, 0, 3);
   tcase_add_loop_test(tc, test_contact_patch, 0, 6);
+  tcase_add_loop_test(tc, test_node_to_segment_matching, 0, 3);
   tcase_add_loop_test(tc, test_rigid_motion, 0, 3);
   tcase_add_test(tc, test_negative_radius);
   tcase_add_loop_test(tc, test_axis_edges, 0, 2);
