@@ -323,6 +323,37 @@ START_TEST(test_negative_radius) {
 }
 END_TEST
 
+/* A 3x3 in-plane law (mc_set_cell_elasticity) lacks the hoop terms: the solve says so and the
+   model stays usable; a u_r prescribed on an axis node is overridden by 0 (the node stays on
+   the axis), and the patch solution is unchanged. */
+START_TEST(test_axis_overrides_and_cell_law) {
+  sc_mesh mesh;
+  mc_model *m = cylinder(0, &mesh);
+  double *d = malloc(sizeof(double) * 9 * mesh.n_cells);
+  for (mc_int c = 0; c < mesh.n_cells; ++c)
+    sc_isotropic_law(kE, kNu, MC_PLANE_STRAIN, d + 9 * c, NULL);
+  OK(mc_set_cell_elasticity(m, 1, d));
+  FAILS(mc_solve(m), MC_ERROR_MATERIAL, "hoop");
+  OK(mc_set_material(m, 1, kE, kNu));
+  const mc_int axis_node = mesh.side_nodes[SC_LEFT][2];
+  const double pushed[2] = {0.5, 0};
+  OK(mc_fix(m, 1, 1, &axis_node, MC_X, pushed));
+  OK(mc_solve(m));
+  double *u = malloc(sizeof(double) * 2 * mesh.n_nodes), worst = 0;
+  OK(mc_get_displacement(m, 1, u));
+  ck_assert_msg(u[2 * axis_node] == 0.0, "u_r on the axis: %g", u[2 * axis_node]);
+  for (mc_int i = 0; i < mesh.n_nodes; ++i) {
+    double exact[2];
+    cylinder_exact(mesh.xy[2 * i], mesh.xy[2 * i + 1], exact);
+    worst = fmax(worst, fmax(fabs(u[2 * i] - exact[0]), fabs(u[2 * i + 1] - exact[1])));
+  }
+  ck_assert_msg(worst < 1e-10 * kP / kE, "patch error %g", worst);
+  free(d), free(u);
+  mc_destroy(m);
+  sc_mesh_free(&mesh);
+}
+END_TEST
+
 /* Edges on the axis are no surface of the 3D body: the weight 2 pi r vanishes on them. A
    pressure or a traction there adds nothing (the solution is bit for bit the same); as contact
    edges of body 1 they give their nodes no tributary measure: a node with only axis edges gets
@@ -484,6 +515,7 @@ static Suite *axisymmetric_suite(void) {
   tcase_add_loop_test(tc, test_node_to_segment_matching, 0, 3);
   tcase_add_loop_test(tc, test_rigid_motion, 0, 3);
   tcase_add_test(tc, test_negative_radius);
+  tcase_add_test(tc, test_axis_overrides_and_cell_law);
   tcase_add_loop_test(tc, test_axis_edges, 0, 2);
   tcase_add_loop_test(tc, test_switch_plane, 0, 2);
   tcase_add_loop_test(tc, test_shrink_fit, 0, 3);
