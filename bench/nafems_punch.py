@@ -3,13 +3,16 @@
 frictionless, with the scene runner. Meshes examples/runner/nafems_punch/punch.geo with Gmsh at
 each fine size h, solves punch.json and prints, per mesh: DOFs, the axial displacement and the
 contact pressure on the axis, the radius where the pressure falls to zero, the peak pressure,
-and the pressure and displacement at r = 17.5 mm (see docs/benchmarks.md for why).
+and the pressure and displacement at r = 17.5 mm (see docs/benchmarks.md for why). Exits
+non-zero unless the axial contact force equals the load, 100 MPa x pi 50^2 (ctest
+runner_nafems_punch runs it at h = 1).
 
 usage: /usr/bin/python3 bench/nafems_punch.py [--runner build/examples/runner/mortarcontact-run]
                                               [--work build/nafems_punch] [h ...]   (default 1 0.5 0.25 0.125)
 """
 import argparse
 import csv
+import math
 import os
 import re
 import shutil
@@ -54,6 +57,9 @@ def main():
                        cwd=args.work, check=True, stdout=subprocess.DEVNULL)
         out = subprocess.run([args.runner, "--quiet", "punch.json"], cwd=args.work, check=True,
                              capture_output=True, text=True).stdout
+        force = float(re.search(r"contact force on body 1: \(\S+, (\S+)\)", out).group(1))
+        if abs(force / (100.0 * math.pi * 50.0 ** 2) - 1) > 1e-8:
+            raise SystemExit("axial contact force %.10g differs from the load 100 pi 50^2" % force)
         dofs, active, nodes, seconds = re.search(
             r"solved: (\d+) DOFs, \d+ active-set iterations, (\d+) of (\d+) contact nodes active, ([\d.]+) s", out).groups()
         u = vtu_displacements(os.path.join(args.work, "punch_body1.vtu"))
