@@ -39,7 +39,8 @@ if(MC_DOCS_PYTHON)
   add_test(NAME docs_tutorial_sync
     COMMAND ${MC_DOCS_PYTHON} ${_mc_check_docs} sync
             ${_mc_docs}/tutorial_c.md ${PROJECT_SOURCE_DIR}/examples/tutorial_hertz.c
-            ${_mc_docs}/tutorial_python.md ${PROJECT_SOURCE_DIR}/examples/python/tutorial_hertz.py)
+            ${_mc_docs}/tutorial_python.md ${PROJECT_SOURCE_DIR}/examples/python/tutorial_hertz.py
+            ${_mc_docs}/tutorial_axisymmetric.md ${PROJECT_SOURCE_DIR}/examples/tutorial_shrink_fit.c)
   set(_mc_docs_cflags -std=c99 -Wall -Wextra -Werror -I${PROJECT_SOURCE_DIR}/include)
   if(MC_SANITIZE)
     list(APPEND _mc_docs_cflags -fsanitize=address,undefined)
@@ -52,7 +53,8 @@ if(MC_DOCS_PYTHON)
     COMMAND ${MC_DOCS_PYTHON} ${_mc_check_docs} names ${_mc_docs}/theory.md ${PROJECT_SOURCE_DIR}/lib)
   add_test(NAME docs_links
     COMMAND ${MC_DOCS_PYTHON} ${_mc_check_docs} links ${_mc_docs}/README.md ${_mc_docs}/theory.md
-            ${_mc_docs}/api.md ${_mc_docs}/tutorial_c.md ${_mc_docs}/tutorial_python.md)
+            ${_mc_docs}/api.md ${_mc_docs}/tutorial_c.md ${_mc_docs}/tutorial_python.md
+            ${_mc_docs}/tutorial_axisymmetric.md)
   set_tests_properties(docs_tutorial_sync docs_api docs_theory_names docs_links PROPERTIES LABELS "docs")
 else()
   message(WARNING "docs: python3 not found: the docs_* tests will fail")

@@ -23,6 +23,20 @@
  * - Units: any consistent system. Forces per unit length of edge (tractions)
  *   and per unit area (body forces) are per unit thickness times the thickness
  *   set by mc_set_plane, as in a 2D model of a slab.
+ * - Axisymmetric models (mc_set_plane(m, MC_AXISYMMETRIC, ...)): the mesh is the
+ *   meridian of a 3D body of revolution under a load of revolution; x is the radius
+ *   r >= 0, y the axis z. Every integral carries 2 pi r (stiffness, tractions,
+ *   pressures, body forces, and the mortar integrals of contact). Tractions,
+ *   pressures and the contact pressure are per unit area of the true (3D) surface,
+ *   body forces per unit volume; nodal forces, reactions and contact forces are
+ *   totals over the full turn (the ring of the node), not per radian. The strains
+ *   are (rr, zz, rz) and the hoop strain u_r / r. Nodes on the axis (|x| at most
+ *   1e-12 times the mesh's extent) get u_r = 0 automatically (a prescribed u_r
+ *   there is overridden by 0; the support's force is reported by mc_get_reaction);
+ *   a node with x < 0 is an MC_ERROR_MESH naming it. The only rigid motion is the
+ *   translation along the axis: a body held axially by contact alone works as in a
+ *   plane model. An edge on the axis is no surface of the 3D body: a load on it adds
+ *   nothing, and as a contact edge it adds nothing to its nodes' tributary area.
  * - The library never aborts and no C++ exception crosses this interface.
  */
 #ifndef MORTARCONTACT_H
@@ -65,7 +79,9 @@ typedef enum mc_status {
   MC_ERROR_INTERNAL = 9        /* a bug: please report with the message */
 } mc_status;
 
-enum { MC_PLANE_STRAIN = 0, MC_PLANE_STRESS = 1 };
+/* Kinds of 2D model (mc_set_plane). MC_AXISYMMETRIC: a 3D body of revolution under a load of
+   revolution, whose meridian half-plane is the mesh: x is the radius r >= 0, y the axis z. */
+enum { MC_PLANE_STRAIN = 0, MC_PLANE_STRESS = 1, MC_AXISYMMETRIC = 2 };
 enum { MC_X = 1, MC_Y = 2, MC_XY = 3 }; /* component masks for mc_fix */
 
 /* Options (mc_set_option_int / mc_set_option_real). Values are frozen. */
@@ -154,13 +170,18 @@ MC_API int mc_version_number(void);
 
 /* 0 (default) or 1: the base of all node, cell and edge ids, in and out. */
 MC_API mc_status mc_set_index_base(mc_model *m, int base);
-/* MC_PLANE_STRAIN (default) or MC_PLANE_STRESS, and the thickness (> 0, default 1)
-   that multiplies the stiffness, tractions, pressures and body forces. Nodal forces,
-   reactions and contact forces are totals (already per the whole thickness). */
+/* MC_PLANE_STRAIN (default), MC_PLANE_STRESS or MC_AXISYMMETRIC, and the thickness (> 0,
+   default 1) that multiplies the stiffness, tractions, pressures and body forces. Nodal forces,
+   reactions and contact forces are totals (already per the whole thickness). MC_AXISYMMETRIC
+   ignores the thickness (any value is accepted and the last plane model's is kept) and
+   weights every integral by 2 pi r instead (see "Axisymmetric models" above); it is an
+   MC_ERROR_MESH, naming the node, if a body's mesh has a node with x < 0 (the model is then
+   unchanged). Switching between the kinds is allowed at any time; the next solve rebuilds. */
 MC_API mc_status mc_set_plane(mc_model *m, int plane, double thickness);
 /* The mesh of a body (1 or 2). xy: 2 per node. cells: nodes_per_cell ids each,
    counter-clockwise; 3 = P1 triangle, 4 = Q1 quadrilateral. Every node must be used by a cell.
-   Setting a mesh again clears that body's materials, supports, loads and contact surface. */
+   Setting a mesh again clears that body's materials, supports, loads and contact surface.
+   In an axisymmetric model a node with x < 0 is an MC_ERROR_MESH naming it. */
 MC_API mc_status mc_set_mesh(mc_model *m, int body, mc_int n_nodes, const double *xy,
                              mc_int n_cells, int nodes_per_cell, const mc_int *cells);
 /* Isotropic material of the whole body: Young's modulus > 0, Poisson's ratio in (-1, 1/2). */
@@ -169,7 +190,8 @@ MC_API mc_status mc_set_material(mc_model *m, int body, double young, double poi
    Voigt notation (xx, yy, engineering xy) giving the in-plane stress from the in-plane strain.
    Overrides mc_set_material for this body (mc_set_plane's thickness still applies; the
    plane-strain/plane-stress choice does not, as the matrix already is the in-plane law;
-   mc_get_stress then reports sigma_zz = 0). */
+   mc_get_stress then reports sigma_zz = 0). An axisymmetric model also needs the hoop terms,
+   which this 3x3 law lacks: mc_solve then fails with MC_ERROR_MATERIAL. */
 MC_API mc_status mc_set_cell_elasticity(mc_model *m, int body, const double *d);
 /* Prescribes displacements: for each of the n nodes, the components in the mask (MC_X, MC_Y,
    MC_XY) take the given values. values: 2 per node (x, y); components not in the mask are
@@ -177,16 +199,19 @@ MC_API mc_status mc_set_cell_elasticity(mc_model *m, int body, const double *d);
 MC_API mc_status mc_fix(mc_model *m, int body, mc_int n, const mc_int *nodes, int components,
                         const double *values);
 /* Adds a traction on boundary edges. edges: 2 node ids each, an edge of a cell on the boundary;
-   traction: 2 per edge, force per unit length, global axes, uniform along the edge. */
+   traction: 2 per edge, force per unit length (times the thickness; axisymmetric: per unit
+   area of the surface the edge sweeps), global axes, uniform along the edge. */
 MC_API mc_status mc_add_traction(mc_model *m, int body, mc_int n_edges, const mc_int *edges,
                                  const double *traction);
 /* Adds a normal pressure on boundary edges: 1 per edge, > 0 pushes into the body. */
 MC_API mc_status mc_add_pressure(mc_model *m, int body, mc_int n_edges, const mc_int *edges,
                                  const double *pressure);
-/* Adds point forces: force has 2 per node, total forces (not multiplied by the thickness). */
+/* Adds point forces: force has 2 per node, total forces (not multiplied by the thickness;
+   axisymmetric: the total over the node's ring, i.e. 2 pi r times a line load). */
 MC_API mc_status mc_add_nodal_force(mc_model *m, int body, mc_int n, const mc_int *nodes,
                                     const double *force);
-/* Sets (replaces) a uniform body force per unit area (per unit volume times thickness 1). */
+/* Sets (replaces) a uniform body force per unit area (per unit volume times thickness 1;
+   axisymmetric: per unit volume, fx radial, fy axial). */
 MC_API mc_status mc_set_body_force(mc_model *m, int body, double fx, double fy);
 /* Removes every load (tractions, pressures, nodal and body forces) of a body; supports stay.
    Use it with the add_ calls to step loads: the next solve reuses the factorization. */
@@ -246,7 +271,9 @@ MC_API mc_status mc_get_info_int(const mc_model *m, int info, int64_t *value);
 MC_API mc_status mc_get_info_real(const mc_model *m, int info, double *value);
 /* Displacements of a body: 2 per node (n_nodes of that body). */
 MC_API mc_status mc_get_displacement(const mc_model *m, int body, double *u);
-/* Stresses of a body: 4 per cell: xx yy xy zz, averaged over the cell (exact for P1). */
+/* Stresses of a body: 4 per cell: xx yy xy zz, averaged over the cell (exact for P1).
+   Axisymmetric: rr zz rz and the hoop stress theta-theta in the fourth slot, averaged over the
+   cell's volume of revolution (weight 2 pi r). */
 MC_API mc_status mc_get_stress(const mc_model *m, int body, double *sigma);
 /* Support reactions of a body: 2 per node; the force the supports exert on the body at
    prescribed components, 0 at the others. Reactions + applied loads + contact forces = 0. */
@@ -261,11 +288,15 @@ MC_API mc_status mc_get_contact_count(const mc_model *m, mc_int *n);
 MC_API mc_status mc_get_contact_nodes(const mc_model *m, mc_int *nodes);
 /* Contact pressure at those positions, >= 0, force per unit area (per unit length of Gamma_c
    per unit thickness). Recovered by lumping: p_j = f_j / (t * integral of phi_j over Gamma_c),
-   which is exact for uniform pressure. */
+   which is exact for uniform pressure. Axisymmetric: p_j = f_j / (integral of phi_j 2 pi r
+   over Gamma_c), per unit area of the true surface; at a node on the axis that area is small
+   (2 pi h^2 / 6 for an edge of length h) and the pressure correspondingly less accurate than
+   elsewhere; a node whose contact edges all lie on the axis reports 0. */
 MC_API mc_status mc_get_contact_pressure(const mc_model *m, double *p);
 /* Normal contact forces f_j >= 0 on body 1 at those positions (total force, thickness
-   included), pushing body 1 along -n_j: the multiplier of the position's own constraint row,
-   plus its share of a row at an end of Gamma_c inside one of its edges. */
+   included; axisymmetric: total over the node's ring), pushing body 1 along -n_j: the
+   multiplier of the position's own constraint row, plus its share of a row at an end of
+   Gamma_c inside one of its edges. */
 MC_API mc_status mc_get_contact_force(const mc_model *m, double *f);
 /* Discrete gap after the solve: g0_j - (u1_j - pi(u2)_j).n_j >= 0 (the row of the cone K_h);
    +infinity for positions that see no mortar surface. */
@@ -280,7 +311,7 @@ MC_API mc_status mc_get_contact_normal(const mc_model *m, double *n);
 /* Writes the solved scene for ParaView. A path ending in ".pvd" writes a collection and one
    VTK XML unstructured-grid file per body next to it ("<stem>_body1.vtu", "<stem>_body2.vtu");
    any other path gets one .vtu with both bodies (cell data "body" = 1 or 2). Point data:
-   displacement; cell data: stress (xx yy xy zz), von Mises; on body 1's contact nodes (zero
+   displacement; cell data: stress (xx yy xy zz; axisymmetric: rr zz rz theta_theta), von Mises; on body 1's contact nodes (zero
    elsewhere, flag "contact" = 1): contact pressure, gap, initial gap and "active" (force > 0).
    MC_ERROR_STATE before a successful solve; MC_ERROR_ARGUMENT if the file cannot be written.
    Array names: point data "displacement" (3 components, z = 0), "pressure", "gap",

@@ -59,7 +59,7 @@ enum class Status : int {
   error_internal = MC_ERROR_INTERNAL
 };
 
-enum class Plane : int { strain = MC_PLANE_STRAIN, stress = MC_PLANE_STRESS };
+enum class Plane : int { strain = MC_PLANE_STRAIN, stress = MC_PLANE_STRESS, axisymmetric = MC_AXISYMMETRIC };
 
 /// Component masks of Model::fix.
 enum class Components : int { x = MC_X, y = MC_Y, xy = MC_XY };

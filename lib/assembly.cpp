@@ -64,7 +64,7 @@ void node_adjacency(const Mesh &mesh, std::vector<int> &start, std::vector<int> 
 
 }  // namespace
 
-SymmetricCsc assemble_stiffness(const Mesh &mesh, const std::vector<PlaneLaw> &laws, double thickness,
+SymmetricCsc assemble_stiffness(const Mesh &mesh, const std::vector<PlaneLaw> &laws, const LineMeasure &measure,
                                 bool bbar) {
   // Pattern: column 2j+c holds rows 2i+c' <= 2j+c for every neighbour i of node j.
   std::vector<int> start, neighbours;
@@ -102,8 +102,8 @@ SymmetricCsc assemble_stiffness(const Mesh &mesh, const std::vector<PlaneLaw> &l
     const int *v = mesh.cell(c);
     for (int a = 0; a < npc; ++a) p[a] = mesh.node(v[a]);
     const PlaneLaw &law = laws.size() == 1 ? laws[0] : laws[c];
-    if (npc == 3) triangle_stiffness(p, law, thickness, ke);
-    else quadrilateral_stiffness(p, law, thickness, bbar, ke);
+    if (npc == 3) triangle_stiffness(p, law, measure, ke);
+    else quadrilateral_stiffness(p, law, measure, bbar, ke);
     for (int b = 0; b < m; ++b) {
       int col = 2 * v[b / 2] + b % 2;
       const int *first = &k.rows[k.colptr[col]], *last = &k.rows[k.colptr[col + 1]];

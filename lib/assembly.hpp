@@ -22,7 +22,7 @@ struct SymmetricCsc {
 };
 
 // One plane law for all cells (laws.size() == 1) or one per cell. DOF 2*node + component.
-SymmetricCsc assemble_stiffness(const Mesh &mesh, const std::vector<PlaneLaw> &laws, double thickness,
+SymmetricCsc assemble_stiffness(const Mesh &mesh, const std::vector<PlaneLaw> &laws, const LineMeasure &measure,
                                 bool bbar);
 
 }  // namespace mc

@@ -57,6 +57,15 @@ int body_index(int body) {
   return body - 1;
 }
 
+// In an axisymmetric model x is the radius: no node may lie left of the axis.
+void require_radii(const mc::Mesh &mesh, int body, int base, const char *what) {
+  const int i = mc::first_node_left_of_axis(mesh);
+  if (i >= 0)
+    fail(MC_ERROR_MESH,
+         "xy[%d] = %g (node %d of body %d): a radius must be >= 0, and %s is axisymmetric (x = r, the axis x = 0)",
+         2 * i, mesh.node(i).x, i + base, body, what);
+}
+
 mc::Body &meshed_body(mc::Model &model, int body) {
   mc::Body &b = model.body[body_index(body)];
   if (!b.has_mesh) fail(MC_ERROR_STATE, "body %d has no mesh: call mc_set_mesh first", body);
@@ -205,12 +214,18 @@ mc_status mc_set_index_base(mc_model *m, int base) {
 
 mc_status mc_set_plane(mc_model *m, int plane, double thickness) {
   return guard(m, [&](mc::Model &model) {
-    if (plane != MC_PLANE_STRAIN && plane != MC_PLANE_STRESS)
-      fail(MC_ERROR_ARGUMENT, "plane = %d: must be MC_PLANE_STRAIN (0) or MC_PLANE_STRESS (1)", plane);
-    if (!(thickness > 0) || !std::isfinite(thickness))
+    if (plane != MC_PLANE_STRAIN && plane != MC_PLANE_STRESS && plane != MC_AXISYMMETRIC)
+      fail(MC_ERROR_ARGUMENT, "plane = %d: must be MC_PLANE_STRAIN (0), MC_PLANE_STRESS (1) or MC_AXISYMMETRIC (2)",
+           plane);
+    const bool axisymmetric = plane == MC_AXISYMMETRIC;
+    if (!axisymmetric && (!(thickness > 0) || !std::isfinite(thickness)))  // ignored when axisymmetric
       fail(MC_ERROR_ARGUMENT, "thickness = %g: must be positive and finite", thickness);
+    if (axisymmetric)
+      for (int b = 0; b < 2; ++b)
+        if (model.body[b].has_mesh) require_radii(model.body[b].mesh, b + 1, model.index_base, "MC_AXISYMMETRIC");
     model.plane_stress = plane == MC_PLANE_STRESS;
-    model.thickness = thickness;
+    model.axisymmetric = axisymmetric;
+    if (!axisymmetric) model.thickness = thickness;
     model.structure_changed();
   });
 }
@@ -238,6 +253,7 @@ mc_status mc_set_mesh(mc_model *m, int body, mc_int n_nodes, const double *xy, m
     }
     mc::Body fresh;
     fresh.mesh = mc::Mesh(n_nodes, xy, n_cells, nodes_per_cell, local.data(), model.index_base);
+    if (model.axisymmetric) require_radii(fresh.mesh, body, model.index_base, "the model");
     fresh.has_mesh = true;
     fresh.prescribed.assign(2 * size_t(n_nodes), 0);
     fresh.prescribed_value.assign(2 * size_t(n_nodes), 0.0);

@@ -100,6 +100,7 @@ struct FaceContext {
   bool closed;
   int first_position;  // position of face node 0; node k is first_position + k (mod size if closed)
   LookDirection look;
+  LineMeasure measure;
 
   int position(int k) const {
     const int m = closed ? edges : edges + 1;
@@ -130,6 +131,8 @@ TracePoint trace_point(const FaceContext &f, double t, const CoveredPiece &adjac
   Point x, n;
   if (std::fabs(t - nearest) <= kSnap) {
     p.a = f.position(int(nearest));
+    p.x = f.g.nonmortar.segments()[f.segment(int(nearest))].pa;
+    if (!f.closed && int(nearest) == f.edges) p.x = f.g.nonmortar.segments()[f.segment(f.edges - 1)].pb;
     if (f.g.projection[p.a].segment >= 0) {
       p.normal = f.g.normals[p.a], p.gap0 = f.g.gap0[p.a], p.projection = f.g.projection[p.a];
       return p;
@@ -140,6 +143,8 @@ TracePoint trace_point(const FaceContext &f, double t, const CoveredPiece &adjac
   } else {
     const int k = int(std::floor(t));
     p.a = f.position(k), p.b = f.position(k + 1), p.xi = t - k;
+    const CurveSegment &c = f.g.nonmortar.segments()[f.segment(k)];
+    p.x = lerp(c.pa, c.pb, p.xi);
     x = f.g.nonmortar.point(f.segment(k), p.xi);
     n = f.look(f.segment(k), p.xi);
   }
@@ -149,16 +154,17 @@ TracePoint trace_point(const FaceContext &f, double t, const CoveredPiece &adjac
 }
 
 // Quadrature points of piece p inside the element [t0, t1] of a run, and its share of the
-// positions' tributary lengths (the integral of each body-1 hat function over Gamma_c). The
-// length measure is the chord's: the mortar integrals only need one measure used throughout,
-// and with it Wohlmuth's biorthogonal basis keeps D diagonal on curved surfaces too.
+// positions' tributary measures (the integral of each body-1 hat function times w over Gamma_c).
+// The length measure is the chord's: the mortar integrals only need one measure used
+// throughout, and with it Wohlmuth's biorthogonal basis keeps D diagonal on curved surfaces too.
 void add_quadrature(const FaceContext &f, const CoveredPiece &p, double t0, double t1, std::vector<QuadraturePoint> &element,
                     std::vector<double> &tributary) {
   const int seg = f.segment(p.k);
-  const double chord = f.g.nonmortar.segments()[seg].length;
+  const CurveSegment &c = f.g.nonmortar.segments()[seg];
   for (int q = 0; q < 3; ++q) {
     const double xi = p.xi0 + (p.xi1 - p.xi0) * kGaussPoint[q];
-    const double weight = kGaussWeight[q] * (p.xi1 - p.xi0) * chord;
+    // The measure's weight (t, or 2 pi r: linear on the chord, so the rule stays exact for D)
+    const double weight = kGaussWeight[q] * (p.xi1 - p.xi0) * c.length * f.measure.weight(lerp(c.pa, c.pb, xi));
     const double t = p.shift + p.k + xi;
     Point x = f.g.nonmortar.point(seg, xi), n = f.look(seg, xi);
     double distance;
@@ -259,7 +265,8 @@ std::vector<SurfaceSegment> oriented_surface(const Mesh &mesh, const int *edges,
 
 ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<SurfaceSegment> &surface1,
                                        const Mesh &body2, const std::vector<SurfaceSegment> &surface2,
-                                       int normal_choice, const SurfaceOptions &surface_options) {
+                                       int normal_choice, const SurfaceOptions &surface_options,
+                                       const LineMeasure &measure) {
   ContactGeometry g;
   g.nonmortar = SurfaceCurve(body1, surface1, surface_options);
   g.mortar = SurfaceCurve(body2, surface2, surface_options);
@@ -328,7 +335,7 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
   g.tributary.assign(n, 0.0);
   for (int face = 0; face < int(curve1.faces().size()); ++face) {
     const SurfaceFace &sf = curve1.faces()[face];
-    FaceContext context{g, face, sf.edges(), sf.closed, first_position[face], look};
+    FaceContext context{g, face, sf.edges(), sf.closed, first_position[face], look, measure};
     std::vector<CoveredPiece> pieces;
     for (int k = 0; k < sf.edges(); ++k) {
       const int seg = curve1.segment_of(face, k);

@@ -12,6 +12,7 @@
 // run without ends.
 #pragma once
 #include "contact_surface.hpp"
+#include "line_measure.hpp"
 #include "mesh.hpp"
 #include <limits>
 #include <utility>
@@ -31,6 +32,7 @@ struct SurfacePoint {
 struct TracePoint {
   int a = -1, b = -1;
   double xi = 0;
+  Point x{0, 0};         // where it is on body 1's chords (the element ends of the mortar integrals)
   Point normal{0, 0};    // unit normal of the constraint there
   double gap0 = 0;       // initial gap along it (without the host's offsets)
   SurfacePoint projection;
@@ -38,7 +40,8 @@ struct TracePoint {
 };
 
 // A quadrature point of an element of a run: the element's own coordinate s in [0,1], the
-// weight (length measure included) and the body-2 point it faces.
+// weight (the line measure included: chord length times the thickness, or times 2 pi r) and the
+// body-2 point it faces.
 struct QuadraturePoint {
   double s, weight;
   SurfacePoint mortar;
@@ -59,7 +62,7 @@ struct ContactGeometry {
   std::vector<Point> normals;      // unit outward normals of body 1 at the positions
   std::vector<double> gap0;        // along the normal; +inf where body 2 is not seen
   std::vector<SurfacePoint> projection;  // of each position onto body 2 (segment -1: none)
-  std::vector<double> tributary;   // integral of phi_j over Gamma_c (the covered part)
+  std::vector<double> tributary;   // integral of phi_j w over Gamma_c (the covered part; w: t or 2 pi r)
   std::vector<ContactRun> runs;
   SurfaceCurve nonmortar, mortar;  // the two surfaces as the contact constraint sees them
 };
@@ -72,7 +75,8 @@ std::vector<SurfaceSegment> oriented_surface(const Mesh &mesh, const int *edges,
 // normal_choice: MC_NORMAL_NONMORTAR or MC_NORMAL_MORTAR.
 ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<SurfaceSegment> &surface1,
                                        const Mesh &body2, const std::vector<SurfaceSegment> &surface2,
-                                       int normal_choice, const SurfaceOptions &surface_options);
+                                       int normal_choice, const SurfaceOptions &surface_options,
+                                       const LineMeasure &measure);
 
 constexpr double kNoGap = std::numeric_limits<double>::infinity();
 

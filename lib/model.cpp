@@ -28,6 +28,28 @@ double dot(const std::vector<double> &a, const std::vector<double> &b) {
 
 }  // namespace
 
+double axis_tolerance(const Mesh &mesh) { return 1e-12 * mesh.characteristic_length(); }
+
+int first_node_left_of_axis(const Mesh &mesh) {
+  for (int i = 0; i < mesh.n_nodes(); ++i)
+    if (mesh.node(i).x < -axis_tolerance(mesh)) return i;
+  return -1;
+}
+
+// A body of revolution: a node on the axis stays there (u_r = 0), whatever its loads, or its
+// meridian would tear open along the axis. The host's value of a prescribed u_r there is
+// overridden by 0.
+void Model::effective_supports() {
+  for (int b = 0; b < 2; ++b) {
+    fixed_[b] = body[b].prescribed;
+    fixed_value_[b] = body[b].prescribed_value;
+    if (!axisymmetric || !body[b].has_mesh) continue;
+    const Mesh &mesh = body[b].mesh;
+    for (int i = 0; i < mesh.n_nodes(); ++i)
+      if (std::fabs(mesh.node(i).x) <= axis_tolerance(mesh)) fixed_[b][2 * i] = 1, fixed_value_[b][2 * i] = 0;
+  }
+}
+
 std::vector<double> Model::load_vector(int b) const {
   const Body &body_ = body[b];
   const Mesh &mesh = body_.mesh;
@@ -42,7 +64,7 @@ std::vector<double> Model::load_vector(int b) const {
       tx = -load.tx * (q.y - p.y) / length;
       ty = -load.tx * (p.x - q.x) / length;
     }
-    edge_traction_force(p, q, tx, ty, thickness, fe);
+    edge_traction_force(p, q, tx, ty, measure(), fe);
     f[2 * load.a] += fe[0], f[2 * load.a + 1] += fe[1];
     f[2 * load.b] += fe[2], f[2 * load.b + 1] += fe[3];
   }
@@ -52,8 +74,8 @@ std::vector<double> Model::load_vector(int b) const {
     for (int c = 0; c < mesh.n_cells(); ++c) {
       const int *v = mesh.cell(c);
       for (int a = 0; a < npc; ++a) p[a] = mesh.node(v[a]);
-      if (npc == 3) triangle_body_force(p, body_.body_force[0], body_.body_force[1], thickness, fe);
-      else quadrilateral_body_force(p, body_.body_force[0], body_.body_force[1], thickness, fe);
+      if (npc == 3) triangle_body_force(p, body_.body_force[0], body_.body_force[1], measure(), fe);
+      else quadrilateral_body_force(p, body_.body_force[0], body_.body_force[1], measure(), fe);
       for (int a = 0; a < npc; ++a) f[2 * v[a]] += fe[2 * a], f[2 * v[a] + 1] += fe[2 * a + 1];
     }
   }
@@ -71,17 +93,23 @@ void Model::build_structure() {
     const double t_assembly = now();
     {
       Stopwatch watch(infos.t_assembly);
+      if (axisymmetric && !body_.cell_elasticity.empty())
+        fail(MC_ERROR_MATERIAL,
+             "body %d: mc_set_cell_elasticity gives the in-plane law only, and an axisymmetric model also needs "
+             "its hoop terms: use mc_set_material, or a plane model",
+             b + 1);
       if (!body_.cell_elasticity.empty()) {
         for (int c = 0; c < body_.mesh.n_cells(); ++c) sys->laws.push_back(general_plane_law(&body_.cell_elasticity[9 * size_t(c)]));
       } else {
-        sys->laws.push_back(isotropic_plane_law(body_.young, body_.poisson, plane_stress));
+        sys->laws.push_back(axisymmetric ? isotropic_axisymmetric_law(body_.young, body_.poisson)
+                                         : isotropic_plane_law(body_.young, body_.poisson, plane_stress));
       }
-      sys->stiffness = assemble_stiffness(body_.mesh, sys->laws, thickness,
+      sys->stiffness = assemble_stiffness(body_.mesh, sys->laws, measure(),
                                           options.q1_integration == MC_Q1_BBAR && body_.mesh.nodes_per_cell() == 4);
     }
     progress(MC_LOG_PHASE, "assembly: body %d, %d nodes, %d cells, stiffness in %.3g s", b + 1,
              body_.mesh.n_nodes(), body_.mesh.n_cells(), now() - t_assembly);
-    sys->rigid = free_rigid_modes(body_.mesh, body_.prescribed);
+    sys->rigid = axisymmetric ? free_axial_translation(body_.mesh, fixed_[b]) : free_rigid_modes(body_.mesh, fixed_[b]);
     if (sys->rigid.count > 0 && !with_contact)
       fail(MC_ERROR_SINGULAR,
            "body %d is not held: its supports leave %s free; add supports with mc_fix, or contact "
@@ -98,8 +126,8 @@ void Model::build_structure() {
     surface_options.smooth = options.contact_surface == MC_SURFACE_SMOOTH;
     surface_options.feature_angle_degrees = options.feature_angle;
     cs->geometry = build_contact_geometry(body[0].mesh, body[0].contact, body[1].mesh, body[1].contact,
-                                          options.contact_normal, surface_options);
-    cs->rows = build_constraint_rows(cs->geometry, options.method);
+                                          options.contact_normal, surface_options, measure());
+    cs->rows = build_constraint_rows(cs->geometry, options.method, measure());
     const ConstraintRows &rows = cs->rows;
     for (int b = 0; b < 2; ++b) cs->b_start[b].push_back(0);
     for (int r = 0; r < rows.size(); ++r) {
@@ -127,7 +155,7 @@ void Model::build_structure() {
     BodySystem *sys = system_[b].get();
     if (!sys) continue;
     const int ndof = sys->stiffness.n;
-    std::vector<char> excluded(body[b].prescribed);
+    std::vector<char> excluded(fixed_[b]);
     for (int dof : sys->rigid.pinned_dofs) excluded[dof] = 1;
     sys->solve_index.assign(ndof, -1);
     sys->solve_dofs.clear();
@@ -234,6 +262,7 @@ void Model::solve() {
   const bool rebuild = built_version_ != structure_version_;
   progress(MC_LOG_PHASE, rebuild ? "solve: start, assembling and factorizing"
                                  : "solve: start, reusing the factorizations and the interface operator");
+  effective_supports();
   if (rebuild) {
     built_version_ = 0;
     build_structure();
@@ -251,11 +280,10 @@ void Model::solve() {
       std::vector<double> up(sys.stiffness.n, 0.0), kup(sys.stiffness.n, 0.0);
       bool any_prescribed_motion = false;  // supports at rest (the usual case) lift nothing
       for (int i = 0; i < sys.stiffness.n; ++i)
-        if (body[b].prescribed[i] && body[b].prescribed_value[i] != 0)
-          up[i] = body[b].prescribed_value[i], any_prescribed_motion = true;
+        if (fixed_[b][i] && fixed_value_[b][i] != 0) up[i] = fixed_value_[b][i], any_prescribed_motion = true;
       if (any_prescribed_motion) sys.stiffness.multiply(up.data(), kup.data());
       lifted[b].resize(sys.stiffness.n);
-      for (int i = 0; i < sys.stiffness.n; ++i) lifted[b][i] = body[b].prescribed[i] ? 0 : f[b][i] - kup[i];
+      for (int i = 0; i < sys.stiffness.n; ++i) lifted[b][i] = fixed_[b][i] ? 0 : f[b][i] - kup[i];
     }
     // Without contact v = K^+ f_eff; with contact only its first half y = L^-1 P f_eff, which
     // is all the interface problem needs (B v = W^T y_G); the recovery finishes the solve.
@@ -306,7 +334,7 @@ void Model::solve() {
         for (int b = 0; b < 2; ++b)
           for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) {
             int dof = cs.b_dof[b][p];
-            if (body[b].prescribed[dof]) g -= cs.b_value[b][p] * body[b].prescribed_value[dof];
+            if (fixed_[b][dof]) g -= cs.b_value[b][p] * fixed_value_[b][dof];
           }
         qp.d[r] = bv[r] - g;
       }
@@ -418,7 +446,7 @@ void Model::solve() {
     // deformation (a large initial gap) would otherwise leave round-off eps |K| |R alpha| in all
     // three. (The rigid modes vanish at prescribed components.)
     std::vector<double> elastic(v[b]);
-    for (int i = 0; i < ndof; ++i) if (body_.prescribed[i]) elastic[i] = body_.prescribed_value[i];
+    for (int i = 0; i < ndof; ++i) if (fixed_[b][i]) elastic[i] = fixed_value_[b][i];
     body_.u = elastic;
     for (int i = 0; i < ndof; ++i) body_.u[i] += rigid_motion[i];
     std::vector<double> ku(ndof);
@@ -426,7 +454,7 @@ void Model::solve() {
     body_.reaction.assign(ndof, 0.0);
     for (int i = 0; i < ndof; ++i) {
       double r = ku[i] - f[b][i] - contact_force[i];
-      if (body_.prescribed[i]) body_.reaction[i] = r;
+      if (fixed_[b][i]) body_.reaction[i] = r;
       // Relative to the load of the reduced problem, f - K u_prescribed: a body moved only by
       // prescribed displacements has f = 0, and its residual is then measured against the forces
       // those displacements cause, not in absolute units.
@@ -444,8 +472,8 @@ void Model::solve() {
       const int *cv = mesh.cell(c);
       for (int a = 0; a < npc; ++a) p[a] = mesh.node(cv[a]), ue[2 * a] = body_.u[2 * cv[a]], ue[2 * a + 1] = body_.u[2 * cv[a] + 1];
       const PlaneLaw &law = sys.laws.size() == 1 ? sys.laws[0] : sys.laws[c];
-      if (npc == 3) triangle_stress(p, law, ue, &body_.stress[4 * size_t(c)]);
-      else quadrilateral_stress(p, law, bbar, ue, &body_.stress[4 * size_t(c)]);
+      if (npc == 3) triangle_stress(p, law, measure(), ue, &body_.stress[4 * size_t(c)]);
+      else quadrilateral_stress(p, law, measure(), bbar, ue, &body_.stress[4 * size_t(c)]);
     }
   }
   infos.equilibrium = std::sqrt(residual_norm) / std::max(std::sqrt(f_norm), 1e-300);
@@ -471,7 +499,9 @@ void Model::solve() {
       for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p) contact_force[rows.position1[p]] += rows.weight1[p] * lambda[r];
     }
     for (size_t pos = 0; pos < n; ++pos)
-      if (g.tributary[pos] > 0) contact_pressure[pos] = contact_force[pos] / (thickness * g.tributary[pos]);
+      // The tributary measure includes the thickness (or 2 pi r): a position whose contact edges
+      // all lie on the axis stands for no area; its force is reported, its pressure as 0.
+      if (g.tributary[pos] > 0) contact_pressure[pos] = contact_force[pos] / g.tributary[pos];
   }
   progress(MC_LOG_PHASE, "recovery: displacements, reactions, stresses and contact results, %.3g s", now() - t_recovery);
   infos.t_total = now() - start;

@@ -16,6 +16,12 @@
 
 namespace mc {
 
+// A node of an axisymmetric model lies on the axis when |x| <= axis_tolerance(mesh) (a
+// relative 1e-12 of the mesh's extent: a mesh generator's round-off); one with x below
+// -axis_tolerance is an error (first_node_left_of_axis finds it, -1 if none).
+double axis_tolerance(const Mesh &mesh);
+int first_node_left_of_axis(const Mesh &mesh);
+
 struct EdgeLoad {
   int a, b;        // nodes, oriented as the cell (body on the left)
   double tx, ty;   // traction (per unit length), or pressure in tx with is_pressure
@@ -90,6 +96,7 @@ public:
   Options options;
   Infos infos;
   bool plane_stress = false;
+  bool axisymmetric = false;  // MC_AXISYMMETRIC: x = r >= 0, y the axis; thickness then unused
   double thickness = 1;
   int index_base = 0;
   bool solved = false;
@@ -101,6 +108,8 @@ public:
   void solve();
 
   bool contact_active() const { return body[0].has_contact && body[1].has_contact; }
+  // The weight of every integral: the thickness, or 2 pi r (line_measure.hpp).
+  LineMeasure measure() const { return LineMeasure{axisymmetric, thickness}; }
   const ContactSystem *contact() const { return contact_.get(); }
   // g0 of contact node pos (ContactGeometry order) with the host's offset (mc_set_gap_offset).
   double initial_gap(size_t pos) const;
@@ -113,6 +122,11 @@ private:
   void build_structure();
   void build_contact_operator();
   std::vector<double> load_vector(int b) const;
+  void effective_supports();
+  // The supports a solve uses: the host's (mc_fix) and, in an axisymmetric model, u_r = 0 at
+  // the nodes on the axis. Per DOF, like Body::prescribed and prescribed_value.
+  std::vector<char> fixed_[2];
+  std::vector<double> fixed_value_[2];
   long structure_version_ = 1, built_version_ = 0;
   std::unique_ptr<BodySystem> system_[2];
   std::unique_ptr<ContactSystem> contact_;

@@ -9,11 +9,12 @@ namespace mc {
 namespace {
 
 // The body-1 test functions of an element's two trace points at element coordinate s:
-// standard hats for the paper's mortar, biorthogonal ones (2 phi_0 - phi_1, ...) for the dual
-// method (Wohlmuth).
-void test_functions(int method, double s, double psi[2]) {
+// standard hats for the paper's mortar; for the dual method (Wohlmuth) the biorthogonal ones in
+// the measure, psi_0 = c0 phi_0 + c1 phi_1, psi_1 = c2 phi_0 + c3 phi_1 (2, -1, -1, 2 with a
+// constant weight; LineMeasure::dual_basis with 2 pi r).
+void test_functions(int method, double s, const double c[4], double psi[2]) {
   const double phi0 = 1 - s, phi1 = s;
-  if (method == MC_METHOD_DUAL_MORTAR) psi[0] = 2 * phi0 - phi1, psi[1] = 2 * phi1 - phi0;
+  if (method == MC_METHOD_DUAL_MORTAR) psi[0] = c[0] * phi0 + c[1] * phi1, psi[1] = c[2] * phi0 + c[3] * phi1;
   else psi[0] = phi0, psi[1] = phi1;
 }
 
@@ -90,7 +91,8 @@ int solve_cyclic_tridiagonal(std::vector<double> lower, std::vector<double> diag
 }
 
 // Rows of one run for the mortar methods: the paper's pi_h^1 (3.2).
-void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, ConstraintRows &rows) {
+void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, const LineMeasure &measure,
+                 ConstraintRows &rows) {
   const int n = int(run.trace.size());
   const bool closed = run.closed;
   // Columns: the body-2 nodes this run touches.
@@ -138,10 +140,12 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, Co
   };
   // D (band: trace points i-1, i, i+1 of row i, cyclic on a loop) and M (dense over the columns).
   std::vector<double> lower(n, 0.0), diag(n, 0.0), upper(n, 0.0), mm(size_t(n) * nc, 0.0);
-  for (int e = 0; e < int(run.elements.size()); ++e)
+  for (int e = 0; e < int(run.elements.size()); ++e) {
+    double c[4] = {2, -1, -1, 2};
+    if (method == MC_METHOD_DUAL_MORTAR) measure.dual_basis(run.trace[e].x, run.trace[(e + 1) % n].x, c);
     for (const QuadraturePoint &q : run.elements[e]) {
       double psi[2];
-      test_functions(method, q.s, psi);
+      test_functions(method, q.s, c, psi);
       const double phi[2] = {1 - q.s, q.s};
       const CurveSegment &s = g.mortar.segments()[q.mortar.segment];
       const double phi2[2] = {1 - q.mortar.eta, q.mortar.eta};
@@ -156,6 +160,7 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, Co
           }
         });
     }
+  }
   // Interior values: D_II P_I = M_I - D_IE P_E (open), D P = M (closed).
   std::vector<double> rhs(mm);
   int singular;
@@ -186,7 +191,7 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, Co
 
 }  // namespace
 
-ConstraintRows build_constraint_rows(const ContactGeometry &g, int method) {
+ConstraintRows build_constraint_rows(const ContactGeometry &g, int method, const LineMeasure &measure) {
   ConstraintRows rows;
   if (method == MC_METHOD_NODE_TO_SEGMENT) {
     // Each body-1 node that sees body 2, against the point it projects to.
@@ -203,7 +208,7 @@ ConstraintRows build_constraint_rows(const ContactGeometry &g, int method) {
     if (!run.closed && run.trace.size() <= 2) {
       for (const TracePoint &t : run.trace) append_pointwise_row(g, rows, t);
     } else {
-      mortar_rows(g, run, method, rows);
+      mortar_rows(g, run, method, measure, rows);
     }
   }
   return rows;

@@ -30,6 +30,7 @@ struct ConstraintRows {
   int size() const { return int(normal.size()); }
 };
 
-ConstraintRows build_constraint_rows(const ContactGeometry &geometry, int method);
+// measure: the weight of the mortar integrals (the dual basis is biorthogonal in it).
+ConstraintRows build_constraint_rows(const ContactGeometry &geometry, int method, const LineMeasure &measure);
 
 }  // namespace mc

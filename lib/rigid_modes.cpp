@@ -114,4 +114,17 @@ RigidModes free_rigid_modes(const Mesh &mesh, const std::vector<char> &prescribe
   return result;
 }
 
+RigidModes free_axial_translation(const Mesh &mesh, const std::vector<char> &prescribed) {
+  const int n = mesh.n_nodes();
+  RigidModes result;
+  for (int i = 0; i < n; ++i)
+    if (prescribed[2 * i + 1]) return result;  // one axial support holds it
+  result.count = 1;
+  result.description = "translation along the axis (y)";
+  result.modes.assign(size_t(2 * n), 0.0);
+  for (int i = 0; i < n; ++i) result.modes[2 * size_t(i) + 1] = 1 / std::sqrt(double(n));
+  result.pinned_dofs.push_back(1);  // any axial unknown defines K^+: node 0's
+  return result;
+}
+
 }  // namespace mc

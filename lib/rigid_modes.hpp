@@ -19,5 +19,9 @@ struct RigidModes {
 
 // prescribed[dof] != 0 where mc_fix holds the component.
 RigidModes free_rigid_modes(const Mesh &mesh, const std::vector<char> &prescribed);
+// The same for a body of revolution (axisymmetric model): its only rigid motion is the
+// translation along the axis (y); a radial "translation" or a rotation of the meridian strains
+// the hoop fibres, so the stiffness already resists them.
+RigidModes free_axial_translation(const Mesh &mesh, const std::vector<char> &prescribed);
 
 }  // namespace mc

@@ -128,7 +128,8 @@ NodalContact nodal_contact(const Model &model) {
   return c;
 }
 
-// sigma_vM from the in-plane stresses and sigma_zz (plane strain: nonzero).
+// sigma_vM from the in-plane stresses and the out-of-plane normal stress (sigma_zz of plane
+// strain, the hoop stress of an axisymmetric model): the same formula in (r, z, theta).
 double von_mises(const double *s) {
   const double xx = s[0], yy = s[1], xy = s[2], zz = s[3];
   return std::sqrt(0.5 * ((xx - yy) * (xx - yy) + (yy - zz) * (yy - zz) + (zz - xx) * (zz - xx)) + 3 * xy * xy);
@@ -175,8 +176,13 @@ void write_piece(TextFile &out, const Model &model, const std::vector<int> &bodi
   out << "      </PointData>\n";
 
   out << "      <CellData Scalars=\"von_mises\">\n";
-  out << "        <DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"4\" ComponentName0=\"xx\" "
-         "ComponentName1=\"yy\" ComponentName2=\"xy\" ComponentName3=\"zz\" format=\"ascii\">\n";
+  // An axisymmetric model's components are (rr, zz, rz, hoop) in the same slots.
+  if (model.axisymmetric)
+    out << "        <DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"4\" ComponentName0=\"rr\" "
+           "ComponentName1=\"zz\" ComponentName2=\"rz\" ComponentName3=\"theta_theta\" format=\"ascii\">\n";
+  else
+    out << "        <DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"4\" ComponentName0=\"xx\" "
+           "ComponentName1=\"yy\" ComponentName2=\"xy\" ComponentName3=\"zz\" format=\"ascii\">\n";
   for (int b : bodies) {
     const std::vector<double> &s = model.body[b].stress;
     for (int c = 0; c < model.body[b].mesh.n_cells(); ++c)

@@ -186,7 +186,7 @@ START_TEST(test_argument_values) {
   scene_usable(&s);
 
   /* plane and thickness */
-  FAILS(mc_set_plane(m, 2, 1), MC_ERROR_ARGUMENT, "plane");
+  FAILS(mc_set_plane(m, 3, 1), MC_ERROR_ARGUMENT, "plane");
   FAILS(mc_set_plane(m, -1, 1), MC_ERROR_ARGUMENT, "plane");
   FAILS(mc_set_plane(m, MC_PLANE_STRESS, 0), MC_ERROR_ARGUMENT, "thickness");
   FAILS(mc_set_plane(m, MC_PLANE_STRESS, -1), MC_ERROR_ARGUMENT, "thickness");

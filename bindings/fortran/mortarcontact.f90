@@ -39,7 +39,7 @@ module mortarcontact
   integer, parameter, public :: MC_OK = 0, MC_ERROR_ARGUMENT = 1, MC_ERROR_MESH = 2, &
        MC_ERROR_MATERIAL = 3, MC_ERROR_STATE = 4, MC_ERROR_CONTACT = 5, MC_ERROR_SINGULAR = 6, &
        MC_ERROR_NOT_CONVERGED = 7, MC_ERROR_MEMORY = 8, MC_ERROR_INTERNAL = 9
-  integer, parameter, public :: MC_PLANE_STRAIN = 0, MC_PLANE_STRESS = 1
+  integer, parameter, public :: MC_PLANE_STRAIN = 0, MC_PLANE_STRESS = 1, MC_AXISYMMETRIC = 2
   integer, parameter, public :: MC_X = 1, MC_Y = 2, MC_XY = 3
   integer, parameter, public :: MC_OPTION_METHOD = 1, MC_OPTION_TOLERANCE = 2, &
        MC_OPTION_MAX_ITERATIONS = 3, MC_OPTION_ORDERING = 4, MC_OPTION_Q1_INTEGRATION = 6, &
@@ -466,7 +466,8 @@ contains
     status = finish(model, c_mc_set_index_base(model%ptr, int(base, c_int)))
   end function mc_set_index_base
 
-  !> MC_PLANE_STRAIN or MC_PLANE_STRESS, and the thickness.
+  !> MC_PLANE_STRAIN, MC_PLANE_STRESS or MC_AXISYMMETRIC (x = r >= 0, y the axis; the thickness
+  !> is then ignored), and the thickness.
   integer function mc_set_plane(model, plane, thickness) result(status)
     type(mc_model), intent(inout) :: model
     integer, intent(in) :: plane

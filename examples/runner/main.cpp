@@ -274,13 +274,30 @@ struct HertzMeasured {
   double p0 = 0, a = 0, spacing = 0, force = 0;
 };
 
-HertzMeasured measure_hertz(const BodyMesh &body1, const ContactResults &r, double thickness) {
+// Axisymmetric (a sphere on a flat): the contact is the disc around the axis, so a is measured
+// along the radius x, from the axis, and the force is the total over the turn.
+HertzMeasured measure_hertz(const BodyMesh &body1, const ContactResults &r, double thickness, bool axisymmetric) {
   HertzMeasured h;
   size_t peak = 0;
   for (size_t j = 0; j < r.nodes.size(); ++j)
     if (r.pressure[j] > r.pressure[peak]) peak = j;
   if (r.nodes.empty() || !(r.pressure[peak] > 0)) return h;
   h.p0 = r.pressure[peak];
+  if (axisymmetric) {
+    double last = 0, next = std::numeric_limits<double>::infinity();
+    for (size_t j = 0; j < r.nodes.size(); ++j) {
+      h.force -= r.force[j] * r.normal[2 * j + 1];  // along the axis, pressing body 1 down
+      if (r.pressure[j] > 0) last = std::max(last, body1.xy[2 * size_t(r.nodes[j])]);
+    }
+    for (size_t j = 0; j < r.nodes.size(); ++j) {
+      const double x = body1.xy[2 * size_t(r.nodes[j])];
+      if (x > last && x < next) next = x;
+    }
+    if (std::isinf(next)) next = last;
+    h.a = 0.5 * (last + next);
+    h.spacing = next - last;
+    return h;
+  }
   const double nx = r.normal[2 * peak], ny = r.normal[2 * peak + 1];
   const double x0 = body1.xy[2 * size_t(r.nodes[peak])], y0 = body1.xy[2 * size_t(r.nodes[peak]) + 1];
   std::vector<double> s(r.nodes.size());  // position along the tangent (-ny, nx) from the peak
@@ -306,8 +323,20 @@ void print_hertz(const Scene &scene, const HertzMeasured &h) {
   // Effective modulus of the two bodies in the plane state of the scene.
   double compliance = 0;
   for (const Body &b : scene.bodies)
-    compliance += (scene.plane == MC_PLANE_STRAIN ? 1 - b.poisson * b.poisson : 1.0) / b.young;
+    compliance += (scene.plane == MC_PLANE_STRESS ? 1.0 : 1 - b.poisson * b.poisson) / b.young;
   const double e_star = 1 / compliance;
+  if (scene.plane == MC_AXISYMMETRIC) {  // a sphere on a flat: 3D Hertz, P the total force
+    const double a = std::cbrt(3 * scene.hertz.load * scene.hertz.radius / (4 * e_star));
+    const double p0 = 3 * scene.hertz.load / (2 * PI * a * a);
+    std::printf("Hertz (sphere, axisymmetric): R = %g, P = %g (total force), E* = %.6g\n", scene.hertz.radius,
+                scene.hertz.load, e_star);
+    std::printf("  p0 = %.6g   Hertz %.6g   relative error %+.3f %% (the largest nodal pressure)\n", h.p0, p0,
+                100 * (h.p0 / p0 - 1));
+    std::printf("  a  = %.6g   Hertz %.6g   relative error %+.3f %% (a known to +-%.3g, half the node spacing there)\n",
+                h.a, a, 100 * (h.a / a - 1), h.spacing / 2);
+    std::printf("  axial contact force %.10g (P = %g)\n", h.force, scene.hertz.load);
+    return;
+  }
   const double a = std::sqrt(4 * scene.hertz.load * scene.hertz.radius / (PI * e_star));
   const double p0 = 2 * scene.hertz.load / (PI * a);
   std::printf("Hertz: R = %g, P = %g per unit thickness, E* = %.6g\n", scene.hertz.radius, scene.hertz.load, e_star);
@@ -397,7 +426,7 @@ int run(const Options &options) {
   check(m, mc_solve(m), "mc_solve");
   const ContactResults results = contact_results(m);
   print_solve_summary(m, results);
-  if (scene.hertz.enabled) print_hertz(scene, measure_hertz(bodies[0], results, scene.thickness));
+  if (scene.hertz.enabled) print_hertz(scene, measure_hertz(bodies[0], results, scene.thickness, scene.plane == MC_AXISYMMETRIC));
   write_outputs(m, scene, bodies[0], results);
   return 0;
 }

@@ -325,8 +325,12 @@ Scene parse_scene(const std::string &text, const std::string &path) {
   Scene s;
   s.path = path;
   if (v.has("description")) s.description = v.child("description").string();
-  s.plane = v.has("plane") ? v.child("plane").choice({{"strain", MC_PLANE_STRAIN}, {"stress", MC_PLANE_STRESS}})
+  s.plane = v.has("plane") ? v.child("plane").choice({{"strain", MC_PLANE_STRAIN},
+                                                      {"stress", MC_PLANE_STRESS},
+                                                      {"axisymmetric", MC_AXISYMMETRIC}})
                            : MC_PLANE_STRAIN;
+  if (s.plane == MC_AXISYMMETRIC && v.has("thickness"))
+    v.child("thickness").fail("an axisymmetric scene has no thickness (x is the radius, forces are totals over the turn)");
   s.thickness = v.has("thickness") ? v.child("thickness").positive() : 1.0;
   std::vector<Value> bodies = v.at("bodies").items();
   if (bodies.size() != 2)

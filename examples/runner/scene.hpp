@@ -69,7 +69,7 @@ struct HertzCheck {
 struct Scene {
   std::string path;  // the scene file, for messages
   std::string description;
-  int plane;         // MC_PLANE_STRAIN or MC_PLANE_STRESS
+  int plane;         // MC_PLANE_STRAIN, MC_PLANE_STRESS or MC_AXISYMMETRIC
   double thickness;
   Body bodies[2];    // bodies[0] = body 1, the non-mortar side
   Solver solver;

@@ -276,3 +276,80 @@ void hertz_analytic(double *a, double *p0)
   if (a) *a = a_;
   if (p0) *p0 = 2.0 * P / (PI * a_);
 }
+
+/* Keeps the part x >= 0 of a mesh (x = 0 is a grid line of both bodies, so no cell straddles
+   it): new[] maps old node ids to new ones (-1: dropped). Returns nonzero if a cell straddles
+   the axis or on allocation failure. */
+static int keep_right_half(hertz_mesh *m, int *new_id)
+{
+  int n = 0, c, k, kept = 0, npc = m->nodes_per_cell;
+  for (k = 0; k < m->n_nodes; ++k) new_id[k] = m->xy[2 * k] >= 0.0 ? n++ : -1;
+  for (c = 0; c < m->n_cells; ++c) {
+    int left = 0, right = 0;
+    for (k = 0; k < npc; ++k) {
+      double x = m->xy[2 * m->cells[npc * c + k]];
+      left += x < 0.0, right += x > 0.0;
+    }
+    if (left > 0 && right > 0) return 1; /* straddles the axis */
+    if (left > 0) continue;
+    for (k = 0; k < npc; ++k) m->cells[npc * kept + k] = new_id[m->cells[npc * c + k]];
+    ++kept;
+  }
+  for (k = 0; k < m->n_nodes; ++k)
+    if (new_id[k] >= 0) m->xy[2 * new_id[k]] = m->xy[2 * k], m->xy[2 * new_id[k] + 1] = m->xy[2 * k + 1];
+  m->n_nodes = n;
+  m->n_cells = kept;
+  return 0;
+}
+
+/* Keeps the edges with both ends kept, renumbered. */
+static int keep_edges(int *edges, int n, const int *new_id)
+{
+  int e, kept = 0;
+  for (e = 0; e < n; ++e) {
+    int a = new_id[edges[2 * e]], b = new_id[edges[2 * e + 1]];
+    if (a >= 0 && b >= 0) edges[2 * kept] = a, edges[2 * kept + 1] = b, ++kept;
+  }
+  return kept;
+}
+
+static int keep_nodes(int *nodes, int n, const int *new_id)
+{
+  int k, kept = 0;
+  for (k = 0; k < n; ++k)
+    if (new_id[nodes[k]] >= 0) nodes[kept++] = new_id[nodes[k]];
+  return kept;
+}
+
+int hertz_scene_axisymmetric(hertz_scene *s, double h1, double h2, int quads)
+{
+  int b, status = hertz_scene_build(s, h1, h2, quads);
+  if (status) return status;
+  for (b = 0; b < 2; ++b) {
+    int *new_id = malloc(sizeof(int) * (size_t)s->body[b].n_nodes);
+    if (!new_id || keep_right_half(&s->body[b], new_id)) {
+      free(new_id);
+      hertz_scene_free(s);
+      return 3;
+    }
+    s->n_contact_edges[b] = keep_edges(s->contact_edges[b], s->n_contact_edges[b], new_id);
+    if (b == 0) {
+      s->n_top_edges = keep_edges(s->top_edges, s->n_top_edges, new_id);
+      s->n_axis_nodes = keep_nodes(s->axis_nodes, s->n_axis_nodes, new_id);
+    } else {
+      s->n_bottom_nodes = keep_nodes(s->bottom_nodes, s->n_bottom_nodes, new_id);
+    }
+    free(new_id);
+  }
+  return 0;
+}
+
+void hertz_analytic_sphere(double load, double *a, double *p0, double *approach)
+{
+  const double R = 1.0, E = 1.0, nu = 0.3;
+  const double e_star = 1.0 / (2.0 * (1.0 - nu * nu) / E); /* two equal bodies */
+  const double a_ = cbrt(3.0 * load * R / (4.0 * e_star));
+  if (a) *a = a_;
+  if (p0) *p0 = 3.0 * load / (2.0 * PI * a_ * a_);
+  if (approach) *approach = a_ * a_ / R;
+}

@@ -43,6 +43,15 @@ typedef struct hertz_scene {
    the elliptical map is singular: cells there are thin but valid (see hertz_scene.c). */
 int hertz_scene_build(hertz_scene *s, double h1, double h2, int quads);
 void hertz_scene_free(hertz_scene *s); /* NULL-safe, frees everything */
+/* The axisymmetric scene "sphere on a flat" (3D Hertz): the part x >= 0 of the same meshes,
+   read as meridians with x = r and y the axis: body 1 = the lower hemisphere of radius 1
+   centred at (0,1) with its flat top at y = 1, body 2 = the cylinder r <= 4, -4 <= y <= 0.
+   Edge and node lists keep their members with x >= 0 (axis_nodes: the nodes on the axis).
+   Returns as hertz_scene_build, or 3 if a cell straddles x = 0. */
+int hertz_scene_axisymmetric(hertz_scene *s, double h1, double h2, int quads);
+/* 3D Hertz of that scene for a total force `load`: a^3 = 3 P R / (4 E*), p0 = 3 P / (2 pi a^2),
+   approach of distant points delta = a^2 / R (R = 1, E = 1, nu = 0.3 both). Any output may be NULL. */
+void hertz_analytic_sphere(double load, double *a, double *p0, double *approach);
 /* analytic Hertz values for this scene (R=1, E=1, nu=0.3 both, plane strain, P=0.01) */
 void hertz_analytic(double *a, double *p0);
 

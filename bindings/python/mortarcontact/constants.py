@@ -23,9 +23,10 @@ MC_ERROR_NOT_CONVERGED = 7
 MC_ERROR_MEMORY = 8
 MC_ERROR_INTERNAL = 9
 
-# mc_set_plane.
+# mc_set_plane. MC_AXISYMMETRIC: a body of revolution, x = r >= 0, y the axis (no thickness).
 MC_PLANE_STRAIN = 0
 MC_PLANE_STRESS = 1
+MC_AXISYMMETRIC = 2
 
 # Component masks for mc_fix.
 MC_X = 1

@@ -209,7 +209,9 @@ class Model:
         self._check(self._lib.mc_set_index_base(self._h(), int(base)))
 
     def set_plane(self, plane, thickness=1.0):
-        """``MC_PLANE_STRAIN`` (default) or ``MC_PLANE_STRESS``, and the thickness (> 0)."""
+        """``MC_PLANE_STRAIN`` (default), ``MC_PLANE_STRESS`` or ``MC_AXISYMMETRIC``, and the
+        thickness (> 0; ignored by ``MC_AXISYMMETRIC``: x is the radius r >= 0, y the axis, every
+        integral carries 2 pi r, forces are totals over the turn)."""
         self._check(self._lib.mc_set_plane(self._h(), int(plane), float(thickness)))
 
     def set_mesh(self, body, xy, cells):

@@ -310,6 +310,10 @@ START_TEST(scene_errors_name_the_key) {
   ASSERT_HAS(scene_error(scene_text("\"contact\": \"c2\"", "\"contact\": \"c2\", \"gap_offset\": 0.1")),
              "bodies[1].gap_offset: only body 1");
   ASSERT_HAS(scene_error(scene_text("\"solver\"", "\"solvr\"")), "solvr: unknown key (did you mean 'solver'?)");
+  ASSERT_HAS(scene_error(scene_text("\"solver\": {", "\"plane\": \"axisymmetric\", \"thickness\": 2,\n \"solver\": {")),
+             "thickness: an axisymmetric scene has no thickness");
+  ASSERT_HAS(scene_error(scene_text("\"solver\": {", "\"plane\": \"axi\",\n \"solver\": {")),
+             "plane: \"axi\" is not one of \"strain\", \"stress\", \"axisymmetric\"");
   ASSERT_HAS(scene_error(scene_text("\"solver\": {", "\"analytic\": { \"type\": \"hertz\", \"radius\": 1 },\n \"solver\": {")),
              "analytic.load: missing");
   ASSERT_HAS(scene_error(scene_text("\"method\": \"dual_mortar\"", "\"max_iterations\": 2.5")),
@@ -388,6 +392,23 @@ START_TEST(runner_interference_gap_offset_exact) {
 }
 END_TEST
 
+// "plane": "axisymmetric": the same meshes read as two stacked cylinders (x = r, the left side
+// on the axis, held radially by the library; body 1 floats axially). The uniform pressure
+// reaches the contact surface exactly, at the axis node too.
+START_TEST(runner_axisymmetric_patch_exact) {
+  const std::string out = data_dir + "/out_axisymmetric";
+  const std::string command = "rm -rf '" + out + "' && '" + runner + "' --quiet '" + data_dir + "/tiny_axisymmetric.json'";
+  ck_assert_int_eq(std::system(command.c_str()), 0);
+  std::string text;
+  const auto rows = read_csv(out + "/pressure.csv", &text);
+  ck_assert_int_eq(rows.size(), 3);
+  for (const auto &r : rows) {
+    ck_assert_msg(std::fabs(r[2] - 0.25) < 1e-12, "pressure %.17g at r = %g", r[2], r[0]);
+    ck_assert_msg(std::fabs(r[3]) < 1e-12, "gap %.3g at r = %g", r[3], r[0]);
+  }
+}
+END_TEST
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -410,6 +431,7 @@ int main(int argc, char **argv) {
   tcase_add_test(tc, scene_errors_name_the_key);
   tcase_add_test(tc, runner_patch_test_both_formats);
   tcase_add_test(tc, runner_interference_gap_offset_exact);
+  tcase_add_test(tc, runner_axisymmetric_patch_exact);
   suite_add_tcase(suite, tc);
   SRunner *sr = srunner_create(suite);
   srunner_run_all(sr, CK_NORMAL);
