@@ -101,13 +101,16 @@ std::vector<SurfaceFace> faces_of(const Mesh &mesh, const Chain &chain, bool spl
   const int start = chain.closed ? first_corner : 0, steps = chain.closed ? m : m - 1;
   SurfaceFace face;
   face.nodes.push_back(chain.nodes[start]);
+  face.corner_at_start = corner[start];
   for (int step = 1; step <= steps; ++step) {
     const int k = (start + step) % m;
     face.nodes.push_back(chain.nodes[k]);
     if (corner[k] || step == steps) {
+      face.corner_at_end = corner[k];
       faces.push_back(face);
       face = SurfaceFace{};
       face.nodes.push_back(chain.nodes[k]);
+      face.corner_at_start = corner[k];
     }
   }
   return faces;
@@ -140,9 +143,15 @@ void face_normals(const Mesh &mesh, SurfaceFace &face, bool smooth) {
       double l1 = norm(minus(p(k), p(k - 1))), l2 = norm(minus(p(k + 1), p(k)));
       face.normals[k] = smooth ? unit(plus(scaled(n1, l2), scaled(n2, l1))) : unit(plus(n1, n2));
     } else {
+      // A face's end: where the chain ends, the circle through the last three nodes (the
+      // surface goes on as it went); at a corner, the end edge's own normal, so that the two
+      // faces' rows there keep directions as different as the corner (two circles fitted on
+      // either side of a corner that is no real corner, a coarse circle's node turning by just
+      // the feature angle, would give one normal twice and two identical constraint rows).
       Point n = has_next ? edge_normal(p(k), p(k + 1)) : edge_normal(p(k - 1), p(k));
-      if (smooth && m >= 3) n = has_next ? end_normal_from_circle(p(k), p(k + 1), p(k + 2), n)
-                                         : end_normal_from_circle(p(k), p(k - 1), p(k - 2), n);
+      const bool at_corner = has_next ? face.corner_at_start : face.corner_at_end;
+      if (smooth && m >= 3 && !at_corner) n = has_next ? end_normal_from_circle(p(k), p(k + 1), p(k + 2), n)
+                                                       : end_normal_from_circle(p(k), p(k - 1), p(k - 2), n);
       face.normals[k] = n;
     }
   }

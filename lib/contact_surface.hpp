@@ -24,7 +24,7 @@ struct SurfaceSegment {
 
 struct SurfaceOptions {
   bool smooth = true;
-  double feature_angle_degrees = 45;  // smooth only: split a chain where edges turn by more
+  double feature_angle_degrees = 60;  // smooth only: split a chain where edges turn by more
 };
 
 // A maximal piece of a chain on which the curve is smooth: consecutive nodes, closed if it is
@@ -34,6 +34,7 @@ struct SurfaceFace {
   std::vector<int> nodes;          // mesh node ids
   std::vector<Point> normals;      // unit outward normal at each node, in this face
   bool closed = false;
+  bool corner_at_start = false, corner_at_end = false;  // ends where the chain was split
   int segment_begin = 0;           // segments of this face: [segment_begin, segment_begin + edges)
   int edges() const { return closed ? int(nodes.size()) : int(nodes.size()) - 1; }
 };
