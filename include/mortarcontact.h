@@ -94,7 +94,7 @@ enum {
   MC_OPTION_CONTACT_NORMAL = 7, /* int: MC_NORMAL_*; default MC_NORMAL_NONMORTAR */
   MC_OPTION_CONTACT_SURFACE = 8, /* int: MC_SURFACE_*; the geometry of gaps and normals; default MC_SURFACE_SMOOTH */
   MC_OPTION_FEATURE_ANGLE = 9    /* real, degrees in (0, 180): a contact chain is split into separately
-                                    smoothed faces where adjacent edges turn by more than this; default 60 */
+                                    smoothed faces where adjacent edges turn by more than this; default 40 */
 };
 
 /* Values of MC_OPTION_METHOD: how the non-penetration condition is discretized. */

@@ -24,7 +24,7 @@ struct SurfaceSegment {
 
 struct SurfaceOptions {
   bool smooth = true;
-  double feature_angle_degrees = 60;  // smooth only: split a chain where edges turn by more
+  double feature_angle_degrees = 40;  // smooth only: split a chain where edges turn by more
 };
 
 // A maximal piece of a chain on which the curve is smooth: consecutive nodes, closed if it is

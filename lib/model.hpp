@@ -81,7 +81,7 @@ struct Options {
   int q1_integration = MC_Q1_FULL;
   int contact_normal = MC_NORMAL_NONMORTAR;
   int contact_surface = MC_SURFACE_SMOOTH;
-  double feature_angle = 60;  // degrees (docs/robustness.md: chosen by measurement)
+  double feature_angle = 40;  // degrees (docs/robustness.md: chosen by measurement)
 };
 
 struct Infos {

@@ -270,7 +270,7 @@ Body parse_body(const Value &v, int index, const std::string &base_dir) {
 
 Solver parse_solver(const Value &v) {
   // Defaults: the library's (mortarcontact.h).
-  Solver s{MC_METHOD_MORTAR, 1e-10, 200, MC_NORMAL_NONMORTAR, MC_Q1_FULL, MC_ORDERING_AUTO, MC_SURFACE_SMOOTH, 60};
+  Solver s{MC_METHOD_MORTAR, 1e-10, 200, MC_NORMAL_NONMORTAR, MC_Q1_FULL, MC_ORDERING_AUTO, MC_SURFACE_SMOOTH, 40};
   if (!v.has("solver")) return s;
   Value o = v.child("solver");
   o.expect_object({"method", "tolerance", "max_iterations", "contact_normal", "q1_integration", "ordering",

@@ -257,7 +257,7 @@ START_TEST(valid_scene_parsed_with_defaults) {
   ck_assert_int_eq(s.solver.method, MC_METHOD_DUAL_MORTAR);
   ck_assert_int_eq(s.solver.contact_normal, MC_NORMAL_NONMORTAR);
   ck_assert_int_eq(s.solver.contact_surface, MC_SURFACE_SMOOTH);
-  ck_assert_double_eq(s.solver.feature_angle, 60.0);
+  ck_assert_double_eq(s.solver.feature_angle, 40.0);
   ck_assert_double_eq(s.solver.tolerance, 1e-10);
   ck_assert_str_eq(s.bodies[0].mesh_path.c_str(), "dir/m.msh");  // relative to the scene file
   ck_assert_str_eq(s.output.pressure_csv.c_str(), "dir/out/p.csv");
