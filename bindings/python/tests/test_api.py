@@ -182,6 +182,16 @@ class TestModel(unittest.TestCase):
             with self.assertRaises(mc.MortarContactError) as cm:
                 m.set_option_int(9999, 1)
             self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
+            # the contact geometry's options: the surface (int) and the feature angle (real)
+            m.set_option(mc.MC_OPTION_CONTACT_SURFACE, mc.MC_SURFACE_FACETED)
+            m.set_option(mc.MC_OPTION_FEATURE_ANGLE, 30.0)
+            with self.assertRaises(mc.MortarContactError) as cm:
+                m.set_option(mc.MC_OPTION_FEATURE_ANGLE, 180.0)
+            self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
+            self.assertIn("MC_OPTION_FEATURE_ANGLE", str(cm.exception))
+            with self.assertRaises(mc.MortarContactError) as cm:
+                m.set_option(mc.MC_OPTION_CONTACT_SURFACE, 2)
+            self.assertIn("MC_OPTION_CONTACT_SURFACE", str(cm.exception))
 
     def test_single_body_solve_one_based(self):
         """A unit square, bottom clamped, pulled up on top; ids 1-based. No contact."""

@@ -42,6 +42,17 @@ class TestPatch(unittest.TestCase):
     def test_mortar(self):
         self.check(mc.MC_METHOD_MORTAR, 0)
 
+    def test_faceted_surface_same_patch_answer(self):
+        """A flat interface is its own smooth reconstruction: both geometries pass the patch test."""
+        with mc.Model() as m:
+            xy1, xy2 = patch_scene.build(m)
+            m.solve()
+            p_smooth = m.get_contact_pressure()
+            m.set_option(mc.MC_OPTION_CONTACT_SURFACE, mc.MC_SURFACE_FACETED)
+            m.solve()
+            np.testing.assert_allclose(m.get_contact_pressure(), p_smooth, rtol=1e-12)
+            np.testing.assert_allclose(p_smooth, patch_scene.PRESSURE, rtol=1e-8)
+
     def test_dual_mortar_one_based(self):
         self.check(mc.MC_METHOD_DUAL_MORTAR, 1)
 
