@@ -316,7 +316,8 @@ MC_API mc_status mc_get_contact_normal(const mc_model *m, double *n);
    MC_ERROR_STATE before a successful solve; MC_ERROR_ARGUMENT if the file cannot be written.
    Array names: point data "displacement" (3 components, z = 0), "pressure", "gap",
    "initial_gap", "active", "contact"; cell data "stress" (4 components), "von_mises" (with
-   sigma_zz), "body". A body-1 contact-surface node that sees no mortar surface has
+   sigma_zz), "body". A corner node, a contact position in two faces, gets its total force over
+   its total tributary measure as pressure, and the smaller of its gaps. A body-1 contact-surface node that sees no mortar surface has
    "contact" = 0 and gap = initial_gap = -1 (a sentinel for the +infinity of the getters: VTK
    readers take no inf). ASCII, 17 significant digits (values read back exactly), independent
    of the C locale. Only bodies with a mesh are written. */

@@ -1,6 +1,7 @@
 #include "vtu_writer.hpp"
 #include "error.hpp"
 #include "model.hpp"
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -116,14 +117,25 @@ NodalContact nodal_contact(const Model &model) {
   c.active.assign(n, 0), c.constrained.assign(n, 0);
   if (!model.contact()) return c;
   const ContactGeometry &g = model.contact()->geometry;
+  // A corner node is a contact position in each of its two faces: its pressure is its total
+  // normal force over its total tributary measure, its gaps the smaller one.
+  std::vector<double> force(n, 0.0), tributary(n, 0.0);
   for (size_t pos = 0; pos < g.nodes.size(); ++pos) {
     const int node = g.nodes[pos];
     const bool sees_body2 = std::isfinite(model.contact_gap[pos]);
-    c.pressure[node] = model.contact_pressure[pos];
-    c.gap[node] = sees_body2 ? model.contact_gap[pos] : kUnseenGap;
-    c.initial_gap[node] = sees_body2 ? model.initial_gap(pos) : kUnseenGap;
-    c.active[node] = model.contact_force[pos] > 0;
-    c.constrained[node] = sees_body2;
+    force[node] += model.contact_force[pos], tributary[node] += g.tributary[pos];
+    if (sees_body2) {
+      const double gap = model.contact_gap[pos], initial = model.initial_gap(pos);
+      c.gap[node] = c.constrained[node] ? std::min(c.gap[node], gap) : gap;
+      c.initial_gap[node] = c.constrained[node] ? std::min(c.initial_gap[node], initial) : initial;
+      c.constrained[node] = 1;
+    }
+    c.active[node] = c.active[node] || model.contact_force[pos] > 0;
+  }
+  for (size_t pos = 0; pos < g.nodes.size(); ++pos) {
+    const int node = g.nodes[pos];
+    if (!c.constrained[node]) c.gap[node] = c.initial_gap[node] = kUnseenGap;
+    c.pressure[node] = tributary[node] > 0 ? force[node] / tributary[node] : 0.0;
   }
   return c;
 }
