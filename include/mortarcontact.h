@@ -13,7 +13,9 @@
  *   the model stays usable.
  * - Threading: a model is used by one thread at a time; distinct models are
  *   fully independent (the library keeps no global mutable state), so two
- *   threads may solve two models at once.
+ *   threads may solve two models at once. mc_solve may run body 2's work on
+ *   one thread of its own, joined before it returns (MC_OPTION_THREADS); no
+ *   other call starts threads.
  * - Ownership: every input array is copied before the call returns. Outputs go
  *   into caller-allocated arrays whose required size each comment states; the
  *   library never writes beyond that size.
@@ -75,8 +77,31 @@ enum {
   MC_OPTION_MAX_ITERATIONS = 3, /* int: active-set iterations before MC_ERROR_NOT_CONVERGED; default 200 */
   MC_OPTION_ORDERING = 4,       /* int: MC_ORDERING_*; fill-reducing ordering; default MC_ORDERING_AUTO */
   MC_OPTION_Q1_INTEGRATION = 6, /* int: MC_Q1_*; default MC_Q1_FULL */
-  MC_OPTION_CONTACT_NORMAL = 7  /* int: MC_NORMAL_*; default MC_NORMAL_NONMORTAR */
+  MC_OPTION_CONTACT_NORMAL = 7, /* int: MC_NORMAL_*; default MC_NORMAL_NONMORTAR */
+  MC_OPTION_THREADS = 10        /* int: threads for the two bodies' work; default 0 (see below) */
 };
+
+/* MC_OPTION_THREADS: how many threads mc_solve runs the two bodies' work on.
+   0 (default) automatic: two when the process may run on two or more cores (its affinity mask)
+     and the smaller body has at least 20000 unknowns (2 x its nodes); one otherwise. Below that
+     size the second thread was measured to gain nothing reliably (docs/benchmarks.md, "Threads").
+   1 serial: everything on the calling thread, as before this option existed.
+   n >= 2 at most n: two when both bodies have a mesh (there is nothing for a third to do).
+   With two, mc_solve starts one std::thread at a time, for body 2's share of a phase, while the
+   calling thread does body 1's, and joins it before that phase ends: for the assembly (with the
+   rigid modes), for the ordering, factorization and the body's block of the interface operator,
+   for the load solves, and for the recovery (displacements, reactions, stresses). A re-solve
+   starts the last two. No thread outlives mc_solve, none is started by any other call, and the
+   log callback is still called only from the calling thread (body 2's messages are held until
+   the phase ends, so that the order is that of a serial solve). If no thread can be started,
+   the solve runs serially. The results are bit for bit those of the serial solve, whatever
+   this option (tested). The BLAS keeps its own threads (OpenBLAS's pool, process-wide, sized by
+   OPENBLAS_NUM_THREADS); the library never changes its size. Body 2's thread calls BLAS and
+   CHOLMOD like the calling thread does: see docs/benchmarks.md ("Threads") for how OpenBLAS
+   shares its pool between the two, and what a host calling BLAS from its own threads during
+   mc_solve sees. Changing this option keeps the factorizations. The time infos
+   (MC_INFO_TIME_*) other than the total then add both bodies' times: with two threads their
+   sum may exceed MC_INFO_TIME_TOTAL. */
 
 /* Values of MC_OPTION_METHOD: how the non-penetration condition is discretized. */
 enum {
