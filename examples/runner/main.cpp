@@ -200,6 +200,7 @@ void set_options(mc_model *m, const Scene &scene) {
   setup(m, mc_set_option_int(m, MC_OPTION_Q1_INTEGRATION, s.q1_integration), scene, "solver.q1_integration",
         "mc_set_option_int");
   setup(m, mc_set_option_int(m, MC_OPTION_ORDERING, s.ordering), scene, "solver.ordering", "mc_set_option_int");
+  setup(m, mc_set_option_int(m, MC_OPTION_THREADS, s.threads), scene, "solver.threads", "mc_set_option_int");
 }
 
 // ---- results ------------------------------------------------------------------------------

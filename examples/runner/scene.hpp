@@ -51,6 +51,7 @@ struct Solver {
   int contact_normal;  // MC_NORMAL_*
   int q1_integration;  // MC_Q1_*
   int ordering;        // MC_ORDERING_*
+  int threads;         // MC_OPTION_THREADS: 0 automatic, 1 serial, n at most n
 };
 
 struct Output {
