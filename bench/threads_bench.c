@@ -18,6 +18,7 @@
  *         --threads: the value compared with serial, default 0 = automatic)
  */
 #define _POSIX_C_SOURCE 200809L
+#include "bench_timing.h"
 #include "hertz_scene.h"
 #include "mortarcontact.h"
 #include <stdio.h>
@@ -28,22 +29,6 @@
 #include <unistd.h>
 
 #define MAX_REPEAT 15
-
-static double wall(void) {
-  struct timespec t;
-  clock_gettime(CLOCK_MONOTONIC, &t);
-  return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
-static int compare_double(const void *a, const void *b) {
-  double x = *(const double *)a, y = *(const double *)b;
-  return (x > y) - (x < y);
-}
-
-static double median(double *v, int n) {
-  qsort(v, n, sizeof *v, compare_double);
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 /* A scene: the two meshes, supports, load edges and contact edges. */
 typedef struct scene {
@@ -114,7 +99,7 @@ static mc_status load(mc_model *m, const scene *sc, double scale) {
 static void solve(const scene *sc, int threads, timing *out) {
   const hertz_scene *s = &sc->s;
   mc_model *m = NULL;
-  double start = wall();
+  double start = bench_wall();
   mc_status st = mc_create(&m);
   for (int b = 0; b < 2 && !st; ++b) {
     st = mc_set_mesh(m, b + 1, s->body[b].n_nodes, s->body[b].xy, s->body[b].n_cells, 3, s->body[b].cells);
@@ -132,17 +117,17 @@ static void solve(const scene *sc, int threads, timing *out) {
   out->u = malloc(sizeof(double) * (n0 + n1));
   if (!st) st = mc_get_displacement(m, 1, out->u);
   if (!st) st = mc_get_displacement(m, 2, out->u + n0);
-  out->first = wall() - start;
+  out->first = bench_wall() - start;
   int64_t dofs = 0;
   if (!st) st = mc_get_info_int(m, MC_INFO_DOFS, &dofs);
   out->dofs = (long)dofs;
   /* a load step: the factorizations and S are reused */
-  start = wall();
+  start = bench_wall();
   if (!st) st = load(m, sc, 1.5);
   if (!st) st = mc_solve(m);
   if (!st) st = mc_get_displacement(m, 1, out->u);
   if (!st) st = mc_get_displacement(m, 2, out->u + n0);
-  out->resolve = wall() - start;
+  out->resolve = bench_wall() - start;
   out->ok = st == MC_OK;
   if (st) fprintf(stderr, "solve failed: %s\n", mc_errmsg(m));
   mc_destroy(m);
@@ -192,8 +177,8 @@ static int run(const char *spec, int repeat, int threads) {
       if (mode == 1)
         identical = identical && memcmp(t[0].u, t[1].u, sizeof(double) * 2 * (size_t)(sc.s.body[0].n_nodes + sc.s.body[1].n_nodes)) == 0;
     }
-  double f1 = median(first[0], repeat), fa = median(first[1], repeat);
-  double r1 = median(resolve[0], repeat), ra = median(resolve[1], repeat);
+  double f1 = bench_median(first[0], repeat), fa = bench_median(first[1], repeat);
+  double r1 = bench_median(resolve[0], repeat), ra = bench_median(resolve[1], repeat);
   printf("| %s | %ld | %d + %d | %d | %.3f | %.3f | %.2f | %.4f | %.4f | %.2f | %s |\n", strncmp(spec, "equal", 5) ? "hertz" : "equal",
          t[0].dofs, 2 * sc.s.body[0].n_nodes, 2 * sc.s.body[1].n_nodes, chosen_threads(&sc, threads), f1, fa, fa / f1, r1, ra,
          ra / r1, identical ? "yes" : "NO");

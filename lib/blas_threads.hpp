@@ -1,10 +1,10 @@
 // How the two body threads of a solve share the cores with OpenBLAS's threads
 // (docs/benchmarks.md, "Threads"). Debian ships OpenBLAS built two ways, and which one is
 // loaded is chosen by the system's alternatives (or LD_LIBRARY_PATH), not at build time:
-// - pthread build (the default): one process-wide thread count. Two threads calling it at once
-//   with a pool of two run 1.7 to 3 times slower than one after the other (its workers spin,
-//   and threaded level-3 calls wait on one another), so while both bodies run the count is
-//   lowered to each body's share of the cores, and put back when they are done;
+// - pthread build (the default): one process-wide thread count, and one process-wide lock that
+//   a threaded level-3 call holds. Two threads calling it at once with a pool of two ran 1.7 to
+//   3 times slower than one after the other, so while both bodies run the count is lowered to
+//   one (a body asking for more would only wait on the other's calls), and put back after;
 // - OpenMP build: each call sizes its team by the calling thread's OpenMP nthreads-var, a
 //   per-thread setting: each body thread sets its own, and the calling thread's is put back.
 #pragma once

@@ -64,9 +64,12 @@ int Model::body_threads() const {
 template <class Task> void Model::for_each_body(Task &&task) {
   BodyWork work[2];
   std::exception_ptr error[2];
-  // With two body threads, each gets half the cores for its BLAS calls (blas_threads.hpp).
-  const int blas_per_body = threads_ > 1 ? std::max(1, available_cores() / 2) : 0;
-  BlasPoolShare pool_share(blas_per_body);
+  // With two body threads, each one's BLAS calls get its share of the cores (blas_threads.hpp):
+  // one thread with OpenBLAS's pthread build, whose threaded level-3 calls wait on one process-
+  // wide lock (two bodies asking for more would take turns); half the cores with the OpenMP build.
+  const bool parallel = threads_ > 1;
+  BlasPoolShare pool_share(parallel ? 1 : 0);
+  const int blas_per_body = parallel ? std::max(1, available_cores() / 2) : 0;
   auto run = [&](int b) {
     try {
       BlasThreadsOfThisThread blas_share(blas_per_body);

@@ -235,8 +235,8 @@ START_TEST(results_do_not_depend_on_threads) {
   /* every method, first solve and re-solve, with two body threads against serial */
   for (int method = MC_METHOD_MORTAR; method <= MC_METHOD_NODE_TO_SEGMENT; ++method)
     for (int resolve = 0; resolve <= 1; ++resolve) {
-      job serial = {.h1 = 0.01, .method = method, .threads = 1, .resolve = resolve};
-      job threaded = {.h1 = 0.01, .method = method, .threads = 2, .resolve = resolve};
+      job serial = {.h1 = 0.014, .method = method, .threads = 1, .resolve = resolve};
+      job threaded = {.h1 = 0.014, .method = method, .threads = 2, .resolve = resolve};
       solve_hertz(&serial), solve_hertz(&threaded);
       char what[64];
       snprintf(what, sizeof what, "method %d%s", method, resolve ? ", re-solve" : "");
@@ -265,12 +265,12 @@ END_TEST
 START_TEST(threads_are_those_the_header_promises) {
   const int blas_before = openblas_get_num_threads();
   /* MC_OPTION_THREADS = 1: no thread of the library; 2: one body thread; automatic: none on a
-     small scene (the smaller body has fewer than 20000 unknowns: h1 = 0.025, 3000 each), one
-     on a larger one (h1 = 0.004: 50000 each) if this process may run on two cores */
+     small scene (the smaller body has fewer than 20000 unknowns: h1 = 0.025, 2000 and 4000), one
+     on a larger one (h1 = 0.006: 27000 and 25000) if this process may run on two cores */
   cpu_set_t set;
   const int cores = sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : 1;
   const int options[] = {1, 2, 0, 0}, expected[] = {0, 1, 0, cores >= 2};
-  const double h1[] = {0.006, 0.006, 0.025, 0.004};
+  const double h1[] = {0.012, 0.012, 0.025, 0.006};
   for (int k = 0; k < 4; ++k) {
     sampler s;
     sampler_start(&s);
