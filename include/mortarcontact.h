@@ -83,25 +83,30 @@ enum {
 
 /* MC_OPTION_THREADS: how many threads mc_solve runs the two bodies' work on.
    0 (default) automatic: two when the process may run on two or more cores (its affinity mask)
-     and the smaller body has at least 20000 unknowns (2 x its nodes); one otherwise. Below that
-     size the second thread was measured to gain nothing reliably (docs/benchmarks.md, "Threads").
-   1 serial: everything on the calling thread, as before this option existed.
-   n >= 2 at most n: two when both bodies have a mesh (there is nothing for a third to do).
-   With two, mc_solve starts one std::thread at a time, for body 2's share of a phase, while the
-   calling thread does body 1's, and joins it before that phase ends: for the assembly (with the
-   rigid modes), for the ordering, factorization and the body's block of the interface operator,
-   for the load solves, and for the recovery (displacements, reactions, stresses). A re-solve
-   starts the last two. No thread outlives mc_solve, none is started by any other call, and the
-   log callback is still called only from the calling thread (body 2's messages are held until
-   the phase ends, so that the order is that of a serial solve). If no thread can be started,
-   the solve runs serially. The results are bit for bit those of the serial solve, whatever
-   this option (tested). The BLAS keeps its own threads (OpenBLAS's pool, process-wide, sized by
-   OPENBLAS_NUM_THREADS); the library never changes its size. Body 2's thread calls BLAS and
-   CHOLMOD like the calling thread does: see docs/benchmarks.md ("Threads") for how OpenBLAS
-   shares its pool between the two, and what a host calling BLAS from its own threads during
-   mc_solve sees. Changing this option keeps the factorizations. The time infos
-   (MC_INFO_TIME_*) other than the total then add both bodies' times: with two threads their
-   sum may exceed MC_INFO_TIME_TOTAL. */
+     and the smaller body has at least 30000 unknowns (2 x its nodes), one otherwise: below that
+     size two threads were measured to gain too little, or to lose on a re-solve
+     (docs/benchmarks.md, "Threads").
+   1 serial: the library starts no thread (today's behaviour).
+   n >= 2 at most n: two when both bodies have a mesh (a third would have nothing to do).
+   Threads the library starts: with two, mc_solve starts one std::thread at a time (named
+   "mc-body2") for body 2's share of a phase while the calling thread does body 1's, and joins
+   it before that phase ends. The phases: assembly (with the rigid modes); ordering,
+   factorization and the body's block of the interface operator; the load solves; the recovery
+   (displacements, reactions, stresses). A re-solve runs only the last two. No thread outlives
+   mc_solve, no other call starts one, and if none can be started the solve runs serially. The
+   log callback is still called only from the calling thread, with the messages in the serial
+   order; an error on body 2's thread is returned as usual (body 1's first, as serially).
+   BLAS: while both bodies run, each one's BLAS calls use its share of the cores. With
+   OpenBLAS's pthread build (Debian's default) the thread count is process-wide and threaded
+   calls take turns on one lock, so mc_solve lowers the count to 1 for those phases and puts the previous count back after each (unless it was changed
+   meanwhile, e.g. by another model's solve: that value then stands); a host thread calling
+   BLAS during those phases also gets one thread. With the OpenMP build each body thread sets
+   only its own OpenMP thread count to half the cores (the calling thread's is put back). CHOLMOD's OpenMP team
+   stays at one thread as always. Results: bit for bit those of the serial solve when OpenBLAS
+   runs one thread per call anyway (OPENBLAS_NUM_THREADS=1; tested); otherwise they differ by
+   round-off only, since OpenBLAS's sums depend on its thread count (tested to 1e-11 relative).
+   Changing this option keeps the factorizations and the results. With two threads the time
+   infos other than MC_INFO_TIME_TOTAL add both bodies' times, and may sum to more than it. */
 
 /* Values of MC_OPTION_METHOD: how the non-penetration condition is discretized. */
 enum {

@@ -85,10 +85,12 @@ struct Infos {
   int threads = 1;  // threads the last solve ran the bodies' work on (1 or 2)
 };
 
-// The smaller body's unknowns from which MC_OPTION_THREADS = 0 (automatic) solves the two bodies
-// at once on a machine with two or more cores (docs/benchmarks.md, "Threads": below it the
-// second thread gains too little to be measured reliably).
-constexpr long kParallelMinBodyDofs = 20000;
+// The smaller body's unknowns (2 x its nodes) from which MC_OPTION_THREADS = 0 (automatic)
+// solves the two bodies at once on a machine with two or more cores. Chosen by measurement
+// (docs/benchmarks.md, "Threads"): below about 15000 the re-solve, a few milliseconds, was
+// slower on two threads (starting them costs more than they save), and up to 25000 the gain was
+// within the noise of a shared machine; from 30000 on it was clear in every run.
+constexpr long kParallelMinBodyDofs = 30000;
 
 // One body's share of a phase that runs for both bodies at once: its own timings and counts
 // (added to the model's infos in body order) and, when it runs on a thread of its own, its
