@@ -25,6 +25,7 @@
  *                    [--cases plain,mortar,dual,nts] [--json file] h1 [h1 ...]
  */
 #define _POSIX_C_SOURCE 200809L
+#include "bench_timing.h"
 #include "hertz_scene.h"
 #include "mortarcontact.h"
 #include <math.h>
@@ -49,12 +50,6 @@ typedef struct result {
   char message[256];
 } result;
 
-static double wall(void) {
-  struct timespec t;
-  clock_gettime(CLOCK_MONOTONIC, &t);
-  return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
 static double peak_rss_mib(void) {
   FILE *f = fopen("/proc/self/status", "r");
   char line[256];
@@ -63,16 +58,6 @@ static double peak_rss_mib(void) {
     if (strncmp(line, "VmHWM:", 6) == 0) kib = atol(line + 6);
   if (f) fclose(f);
   return kib / 1024.0;
-}
-
-static int compare_double(const void *a, const void *b) {
-  double x = *(const double *)a, y = *(const double *)b;
-  return (x > y) - (x < y);
-}
-
-static double median(double *v, int n) {
-  qsort(v, n, sizeof *v, compare_double);
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 /* ||u||_H1^2 = int |grad u|^2 + |u|^2 over a P1 mesh, exactly (constant gradients; the P1
@@ -153,7 +138,7 @@ static mc_status apply_load(mc_model *m, const hertz_scene *s, double scale) {
 /* One solve of the scene (setup included in t_wall); fills r on the last repeat. */
 static void run_once(const hertz_scene *s, int method, int normal, int last, result *r, double *t_wall) {
   mc_model *m = NULL;
-  double start = wall();
+  double start = bench_wall();
   TRY(mc_create(&m));
   for (int b = 0; b < 2; ++b) {
     const hertz_mesh *mesh = &s->body[b];
@@ -200,7 +185,7 @@ static void run_once(const hertz_scene *s, int method, int normal, int last, res
     for (mc_int j = 0; j < n; ++j) x[j] = s->body[0].xy[2 * nodes[j]];
     free(nodes);
   }
-  *t_wall = wall() - start;
+  *t_wall = bench_wall() - start;
   if (last) {
     int64_t v;
     mc_get_info_int(m, MC_INFO_DOFS, &v), r->dofs = v;
@@ -225,11 +210,11 @@ static void run_once(const hertz_scene *s, int method, int normal, int last, res
       r->a = contact_half_width(n, x, pressure);
       /* a host stepping its load: change only the load, solve again */
       TRY(apply_load(m, s, 1.5));
-      double t = wall();
+      double t = bench_wall();
       TRY(mc_solve(m));
       double *p2 = malloc(sizeof(double) * n);
       TRY(mc_get_contact_pressure(m, p2));
-      r->t_resolve = wall() - t;
+      r->t_resolve = bench_wall() - t;
       free(p2);
       mc_get_info_int(m, MC_INFO_FACTORIZATIONS, &v), r->resolve_factorizations = v;
     }
@@ -253,7 +238,7 @@ static result run_case(const hertz_scene *s, int method, int normal, int repeat)
       run_once(s, method, normal, k == repeat - 1, &r, &times[k]);
       if (r.message[0]) break;
     }
-    if (r.ok) r.t_wall = median(times, repeat);
+    if (r.ok) r.t_wall = bench_median(times, repeat);
     r.peak_rss_mib = peak_rss_mib();
     ssize_t written = write(fd[1], &r, sizeof r);
     _exit(written == (ssize_t)sizeof r ? 0 : 1);

@@ -13,7 +13,9 @@
  *   the model stays usable.
  * - Threading: a model is used by one thread at a time; distinct models are
  *   fully independent (the library keeps no global mutable state), so two
- *   threads may solve two models at once.
+ *   threads may solve two models at once. mc_solve may run body 2's work on
+ *   one thread of its own, joined before it returns (MC_OPTION_THREADS); no
+ *   other call starts threads.
  * - Ownership: every input array is copied before the call returns. Outputs go
  *   into caller-allocated arrays whose required size each comment states; the
  *   library never writes beyond that size.
@@ -93,9 +95,37 @@ enum {
   MC_OPTION_Q1_INTEGRATION = 6, /* int: MC_Q1_*; default MC_Q1_FULL */
   MC_OPTION_CONTACT_NORMAL = 7, /* int: MC_NORMAL_*; default MC_NORMAL_NONMORTAR */
   MC_OPTION_CONTACT_SURFACE = 8, /* int: MC_SURFACE_*; the geometry of gaps and normals; default MC_SURFACE_SMOOTH */
-  MC_OPTION_FEATURE_ANGLE = 9    /* real, degrees in (0, 180): a contact chain is split into separately
+  MC_OPTION_FEATURE_ANGLE = 9,   /* real, degrees in (0, 180): a contact chain is split into separately
                                     smoothed faces where adjacent edges turn by more than this; default 40 */
+  MC_OPTION_THREADS = 10        /* int: threads for the two bodies' work; default 0 (see below) */
 };
+
+/* MC_OPTION_THREADS: how many threads mc_solve runs the two bodies' work on.
+   0 (default) automatic: two when the process may run on two or more cores (its affinity mask)
+     and the smaller body has at least 30000 unknowns (2 x its nodes), one otherwise: below that
+     size two threads were measured to gain too little, or to lose on a re-solve
+     (docs/benchmarks.md, "Threads").
+   1 serial: the library starts no thread (today's behaviour).
+   n >= 2 at most n: two when both bodies have a mesh (a third would have nothing to do).
+   Threads the library starts: with two, mc_solve starts one std::thread at a time (named
+   "mc-body2") for body 2's share of a phase while the calling thread does body 1's, and joins
+   it before that phase ends. The phases: assembly (with the rigid modes); ordering,
+   factorization and the body's block of the interface operator; the load solves; the recovery
+   (displacements, reactions, stresses). A re-solve runs only the last two. No thread outlives
+   mc_solve, no other call starts one, and if none can be started the solve runs serially. The
+   log callback is still called only from the calling thread, with the messages in the serial
+   order; an error on body 2's thread is returned as usual (body 1's first, as serially).
+   BLAS: while both bodies run, each one's BLAS calls use its share of the cores. With
+   OpenBLAS's pthread build (Debian's default) the thread count is process-wide and threaded
+   calls take turns on one lock, so mc_solve lowers the count to 1 for those phases and puts the previous count back after each (unless it was changed
+   meanwhile, e.g. by another model's solve: that value then stands); a host thread calling
+   BLAS during those phases also gets one thread. With the OpenMP build each body thread sets
+   only its own OpenMP thread count to half the cores (the calling thread's is put back). CHOLMOD's OpenMP team
+   stays at one thread as always. Results: bit for bit those of the serial solve when OpenBLAS
+   runs one thread per call anyway (OPENBLAS_NUM_THREADS=1; tested); otherwise they differ by
+   round-off only, since OpenBLAS's sums depend on its thread count (tested to 1e-11 relative).
+   Changing this option keeps the factorizations and the results. With two threads the time
+   infos other than MC_INFO_TIME_TOTAL add both bodies' times, and may sum to more than it. */
 
 /* Values of MC_OPTION_METHOD: how the non-penetration condition is discretized. */
 enum {

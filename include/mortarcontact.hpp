@@ -72,7 +72,8 @@ enum class Option : int {
   q1_integration = MC_OPTION_Q1_INTEGRATION,
   contact_normal = MC_OPTION_CONTACT_NORMAL,
   contact_surface = MC_OPTION_CONTACT_SURFACE,
-  feature_angle = MC_OPTION_FEATURE_ANGLE
+  feature_angle = MC_OPTION_FEATURE_ANGLE,
+  threads = MC_OPTION_THREADS
 };
 
 /// Values of Option::method.

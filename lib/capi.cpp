@@ -495,6 +495,12 @@ mc_status mc_set_option_int(mc_model *m, int option, int64_t value) {
         model.options.contact_surface = int(value);
         model.structure_changed();
         break;
+      case MC_OPTION_THREADS:
+        if (value < 0 || value > 1024)
+          fail(MC_ERROR_ARGUMENT, "value = %lld: MC_OPTION_THREADS takes 0 (automatic), 1 (serial) or at most n "
+               "threads, n up to 1024", (long long)value);
+        model.options.threads = int(value);  // how, not what: the results and factorizations stay valid
+        break;
       case MC_OPTION_TOLERANCE:
       case MC_OPTION_FEATURE_ANGLE:
         fail(MC_ERROR_ARGUMENT, "option = %d is real-valued: use mc_set_option_real", option);
@@ -516,7 +522,7 @@ mc_status mc_set_option_real(mc_model *m, int option, double value) {
     if (option != MC_OPTION_TOLERANCE) {
       if (option == MC_OPTION_METHOD || option == MC_OPTION_MAX_ITERATIONS || option == MC_OPTION_ORDERING ||
           option == MC_OPTION_Q1_INTEGRATION || option == MC_OPTION_CONTACT_NORMAL ||
-          option == MC_OPTION_CONTACT_SURFACE)
+          option == MC_OPTION_CONTACT_SURFACE || option == MC_OPTION_THREADS)
         fail(MC_ERROR_ARGUMENT, "option = %d is integer-valued: use mc_set_option_int", option);
       fail(MC_ERROR_ARGUMENT, "option = %d: not a real option", option);
     }

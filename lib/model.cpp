@@ -1,8 +1,16 @@
 #include "model.hpp"
+#include "blas_threads.hpp"
 #include "error.hpp"
 #include "lapack.hpp"
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
+#include <pthread.h>
+#include <sched.h>
+#include <system_error>
+#include <thread>
+#include <unistd.h>
 
 namespace mc {
 
@@ -26,6 +34,24 @@ double dot(const std::vector<double> &a, const std::vector<double> &b) {
   return s;
 }
 
+// The cores this process may run on (its affinity mask, which is also how OpenBLAS sizes its pool).
+int available_cores() {
+  cpu_set_t set;
+  if (sched_getaffinity(0, sizeof set, &set) == 0) return CPU_COUNT(&set);
+  long online = sysconf(_SC_NPROCESSORS_ONLN);
+  return online > 0 ? int(online) : 1;
+}
+
+void keep_line(void *work, mc_log_level level, const char *line) {
+  static_cast<BodyWork *>(work)->lines.emplace_back(level, line);
+}
+
+void add_body_infos(Infos &to, const Infos &from) {
+  to.dofs += from.dofs, to.factor_nnz += from.factor_nnz, to.factorizations += from.factorizations;
+  to.t_assembly += from.t_assembly, to.t_analysis += from.t_analysis, to.t_factor += from.t_factor;
+  to.t_solve += from.t_solve, to.t_contact += from.t_contact;
+}
+
 }  // namespace
 
 double axis_tolerance(const Mesh &mesh) { return 1e-12 * mesh.characteristic_length(); }
@@ -47,6 +73,56 @@ void Model::effective_supports() {
     const Mesh &mesh = body[b].mesh;
     for (int i = 0; i < mesh.n_nodes(); ++i)
       if (std::fabs(mesh.node(i).x) <= axis_tolerance(mesh)) fixed_[b][2 * i] = 1, fixed_value_[b][2 * i] = 0;
+  }
+}
+
+int Model::body_threads() const {
+  if (!body[0].has_mesh || !body[1].has_mesh || options.threads == 1) return 1;
+  if (options.threads >= 2) return 2;  // asked for: at most that many, and two bodies use two
+  const long smaller = 2L * std::min(body[0].mesh.n_nodes(), body[1].mesh.n_nodes());
+  return available_cores() >= 2 && smaller >= kParallelMinBodyDofs ? 2 : 1;
+}
+
+template <class Task> void Model::for_each_body(Task &&task) {
+  BodyWork work[2];
+  std::exception_ptr error[2];
+  // With two body threads, each one's BLAS calls get its share of the cores (blas_threads.hpp):
+  // one thread with OpenBLAS's pthread build, whose threaded level-3 calls wait on one process-
+  // wide lock (two bodies asking for more would take turns); half the cores with the OpenMP build.
+  const bool parallel = threads_ > 1;
+  BlasPoolShare pool_share(parallel ? 1 : 0);
+  const int blas_per_body = parallel ? std::max(1, available_cores() / 2) : 0;
+  auto run = [&](int b) {
+    try {
+      BlasThreadsOfThisThread blas_share(blas_per_body);
+      task(b, work[b]);
+    } catch (...) {
+      error[b] = std::current_exception();
+    }
+  };
+  if (threads_ > 1) {
+    // Body 2 on a thread of its own, body 1 on the calling thread. The host's log callback is
+    // only ever called from the calling thread: each body keeps its messages, sent on below.
+    for (BodyWork &w : work)
+      if (progress.enabled()) w.log = ProgressLog{&keep_line, &w};
+    std::thread other;
+    try {
+      other = std::thread(run, 1);
+      // A name a host (and test_model_threads) can see in /proc/self/task/*/comm.
+      pthread_setname_np(other.native_handle(), "mc-body2");
+    } catch (const std::system_error &) {  // no thread to be had: body 2 after body 1
+    }
+    run(0);
+    if (other.joinable()) other.join();
+    else run(1);
+  } else {
+    for (int b = 0; b < 2 && !error[0]; ++b) work[b].log = progress, run(b);
+  }
+  // What a serial solve would have shown: body 1's messages, its error if any, then body 2's.
+  for (int b = 0; b < 2; ++b) {
+    for (const auto &line : work[b].lines) progress(line.first, "%s", line.second.c_str());
+    add_body_infos(infos, work[b].infos);
+    if (error[b]) std::rethrow_exception(error[b]);
   }
 }
 
@@ -82,43 +158,116 @@ std::vector<double> Model::load_vector(int b) const {
   return f;
 }
 
-void Model::build_structure() {
-  const bool with_contact = contact_active();
-  contact_.reset();
-  for (int b = 0; b < 2; ++b) {
-    system_[b].reset();
-    Body &body_ = body[b];
-    if (!body_.has_mesh) continue;
-    auto sys = std::make_unique<BodySystem>();
-    const double t_assembly = now();
-    {
-      Stopwatch watch(infos.t_assembly);
-      if (axisymmetric && !body_.cell_elasticity.empty())
-        fail(MC_ERROR_MATERIAL,
-             "body %d: mc_set_cell_elasticity gives the in-plane law only, and an axisymmetric model also needs "
-             "its hoop terms: use mc_set_material, or a plane model",
-             b + 1);
-      if (!body_.cell_elasticity.empty()) {
-        for (int c = 0; c < body_.mesh.n_cells(); ++c) sys->laws.push_back(general_plane_law(&body_.cell_elasticity[9 * size_t(c)]));
-      } else {
-        sys->laws.push_back(axisymmetric ? isotropic_axisymmetric_law(body_.young, body_.poisson)
-                                         : isotropic_plane_law(body_.young, body_.poisson, plane_stress));
-      }
-      sys->stiffness = assemble_stiffness(body_.mesh, sys->laws, measure(),
-                                          options.q1_integration == MC_Q1_BBAR && body_.mesh.nodes_per_cell() == 4);
+// Stiffness and rigid modes of one body (the first half of its structure).
+std::unique_ptr<BodySystem> Model::assemble_body(int b, BodyWork &work) const {
+  const Body &body_ = body[b];
+  if (!body_.has_mesh) return nullptr;
+  auto sys = std::make_unique<BodySystem>();
+  const double t_assembly = now();
+  {
+    Stopwatch watch(work.infos.t_assembly);
+    if (axisymmetric && !body_.cell_elasticity.empty())
+      fail(MC_ERROR_MATERIAL,
+           "body %d: mc_set_cell_elasticity gives the in-plane law only, and an axisymmetric model also needs "
+           "its hoop terms: use mc_set_material, or a plane model",
+           b + 1);
+    if (!body_.cell_elasticity.empty()) {
+      for (int c = 0; c < body_.mesh.n_cells(); ++c) sys->laws.push_back(general_plane_law(&body_.cell_elasticity[9 * size_t(c)]));
+    } else {
+      sys->laws.push_back(axisymmetric ? isotropic_axisymmetric_law(body_.young, body_.poisson)
+                                       : isotropic_plane_law(body_.young, body_.poisson, plane_stress));
     }
-    progress(MC_LOG_PHASE, "assembly: body %d, %d nodes, %d cells, stiffness in %.3g s", b + 1,
-             body_.mesh.n_nodes(), body_.mesh.n_cells(), now() - t_assembly);
-    sys->rigid = axisymmetric ? free_axial_translation(body_.mesh, fixed_[b]) : free_rigid_modes(body_.mesh, fixed_[b]);
-    if (sys->rigid.count > 0 && !with_contact)
-      fail(MC_ERROR_SINGULAR,
-           "body %d is not held: its supports leave %s free; add supports with mc_fix, or contact "
-           "surfaces on both bodies with mc_set_contact so that contact can hold it",
-           b + 1, sys->rigid.description.c_str());
-    system_[b] = std::move(sys);
+    sys->stiffness = assemble_stiffness(body_.mesh, sys->laws, measure(),
+                                        options.q1_integration == MC_Q1_BBAR && body_.mesh.nodes_per_cell() == 4);
   }
+  work.log(MC_LOG_PHASE, "assembly: body %d, %d nodes, %d cells, stiffness in %.3g s", b + 1,
+           body_.mesh.n_nodes(), body_.mesh.n_cells(), now() - t_assembly);
+  sys->rigid = axisymmetric ? free_axial_translation(body_.mesh, fixed_[b]) : free_rigid_modes(body_.mesh, fixed_[b]);
+  if (sys->rigid.count > 0 && !contact_active())
+    fail(MC_ERROR_SINGULAR,
+         "body %d is not held: its supports leave %s free; add supports with mc_fix, or contact "
+         "surfaces on both bodies with mc_set_contact so that contact can hold it",
+         b + 1, sys->rigid.description.c_str());
+  return sys;
+}
 
-  if (with_contact) {
+// The reduced stiffness of one body, its ordering (interface unknowns last) and factorization.
+void Model::factorize_body(int b, BodyWork &work) {
+  BodySystem *sys = system_[b].get();
+  if (!sys) return;
+  const int ndof = sys->stiffness.n;
+  std::vector<char> excluded(fixed_[b]);
+  for (int dof : sys->rigid.pinned_dofs) excluded[dof] = 1;
+  sys->solve_index.assign(ndof, -1);
+  sys->solve_dofs.clear();
+  for (int i = 0; i < ndof; ++i)
+    if (!excluded[i]) sys->solve_index[i] = int(sys->solve_dofs.size()), sys->solve_dofs.push_back(i);
+  std::vector<int> interface_reduced;
+  sys->interface.clear();
+  if (contact_) {
+    std::vector<char> mark(ndof, 0);
+    for (int dof : contact_->b_dof[b])
+      if (sys->solve_index[dof] >= 0 && !mark[dof]) mark[dof] = 1, sys->interface.push_back(dof);
+    for (int dof : sys->interface) interface_reduced.push_back(sys->solve_index[dof]);
+  }
+  {
+    Stopwatch watch(work.infos.t_assembly);
+    sys->reduced = sys->stiffness.principal_submatrix(sys->solve_index, int(sys->solve_dofs.size()));
+  }
+  const double t_analysis = now();
+  {
+    Stopwatch watch(work.infos.t_analysis);
+    sys->cholesky.analyze(sys->reduced, interface_reduced, options.ordering);
+  }
+  work.log(MC_LOG_PHASE, "analysis: body %d, %zu unknowns, ordering and symbolic factorization in %.3g s", b + 1,
+           sys->solve_dofs.size(), now() - t_analysis);
+  const double t_factor = now();
+  {
+    Stopwatch watch(work.infos.t_factor);
+    try {
+      sys->cholesky.factorize(sys->reduced);
+    } catch (const Error &e) {
+      if (e.status() != MC_ERROR_SINGULAR) throw;
+      fail(MC_ERROR_SINGULAR, "body %d: %s", b + 1, e.what());
+    }
+  }
+  work.infos.factorizations++;
+  work.log(MC_LOG_PHASE, "factorization: body %d, %ld nonzeros in the Cholesky factor, %.3g s", b + 1,
+           long(sys->cholesky.factor_nnz()), now() - t_factor);
+}
+
+// One body's share of the interface operator, s_b = B_G L_GG^-T L_GG^-1 B_G^T (upper triangle,
+// q x q): a triangular solve with the trailing block of the factor and a rank-k update, all
+// dense BLAS 3. W_b is kept for the loads and the recovery.
+void Model::interface_block(int b, std::vector<double> &s_b, BodyWork &work) {
+  Stopwatch watch(work.infos.t_contact);
+  ContactSystem &cs = *contact_;
+  BodySystem &sys = *system_[b];
+  const int q = cs.rows.size(), ng = int(sys.interface.size());
+  if (ng == 0 || q == 0) return;
+  std::vector<int> order;
+  std::vector<double> l = sys.cholesky.interface_factor(order);
+  std::vector<int> factor_position(sys.stiffness.n, -1);
+  for (int k = 0; k < ng; ++k) factor_position[sys.interface[order[k]]] = k;
+  std::vector<double> w(size_t(ng) * q, 0.0);
+  for (int r = 0; r < q; ++r)
+    for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) {
+      int k = factor_position[cs.b_dof[b][p]];
+      if (k >= 0) w[size_t(r) * ng + k] += cs.b_value[b][p];
+    }
+  double one = 1.0, zero = 0.0;
+  dtrsm_("L", "L", "N", "N", &ng, &q, &one, l.data(), &ng, w.data(), &ng);
+  s_b.assign(size_t(q) * q, 0.0);
+  dsyrk_("U", "T", &q, &ng, &one, w.data(), &ng, &zero, s_b.data(), &q);
+  cs.w[b] = std::move(w), cs.w_rows[b] = ng;
+}
+
+void Model::build_structure() {
+  contact_.reset();
+  for (auto &sys : system_) sys.reset();
+  for_each_body([&](int b, BodyWork &work) { system_[b] = assemble_body(b, work); });
+
+  if (contact_active()) {
     Stopwatch watch(infos.t_contact);
     const double t_geometry = now();
     auto cs = std::make_unique<ContactSystem>();
@@ -151,84 +300,33 @@ void Model::build_structure() {
     contact_ = std::move(cs);
   }
 
-  for (int b = 0; b < 2; ++b) {
-    BodySystem *sys = system_[b].get();
-    if (!sys) continue;
-    const int ndof = sys->stiffness.n;
-    std::vector<char> excluded(fixed_[b]);
-    for (int dof : sys->rigid.pinned_dofs) excluded[dof] = 1;
-    sys->solve_index.assign(ndof, -1);
-    sys->solve_dofs.clear();
-    for (int i = 0; i < ndof; ++i)
-      if (!excluded[i]) sys->solve_index[i] = int(sys->solve_dofs.size()), sys->solve_dofs.push_back(i);
-    std::vector<int> interface_reduced;
-    sys->interface.clear();
-    if (contact_) {
-      std::vector<char> mark(ndof, 0);
-      for (int dof : contact_->b_dof[b])
-        if (sys->solve_index[dof] >= 0 && !mark[dof]) mark[dof] = 1, sys->interface.push_back(dof);
-      for (int dof : sys->interface) interface_reduced.push_back(sys->solve_index[dof]);
-    }
-    {
-      Stopwatch watch(infos.t_assembly);
-      sys->reduced = sys->stiffness.principal_submatrix(sys->solve_index, int(sys->solve_dofs.size()));
-    }
-    const double t_analysis = now();
-    {
-      Stopwatch watch(infos.t_analysis);
-      sys->cholesky.analyze(sys->reduced, interface_reduced, options.ordering);
-    }
-    progress(MC_LOG_PHASE, "analysis: body %d, %zu unknowns, ordering and symbolic factorization in %.3g s", b + 1,
-             sys->solve_dofs.size(), now() - t_analysis);
-    const double t_factor = now();
-    {
-      Stopwatch watch(infos.t_factor);
-      try {
-        sys->cholesky.factorize(sys->reduced);
-      } catch (const Error &e) {
-        if (e.status() != MC_ERROR_SINGULAR) throw;
-        fail(MC_ERROR_SINGULAR, "body %d: %s", b + 1, e.what());
-      }
-    }
-    infos.factorizations++;
-    progress(MC_LOG_PHASE, "factorization: body %d, %ld nonzeros in the Cholesky factor, %.3g s", b + 1,
-             long(sys->cholesky.factor_nnz()), now() - t_factor);
+  // Each body's factorization and, with contact, its share of S = sum_b s_b. The sum is formed
+  // the same way whatever the thread count, so that the results do not depend on it.
+  std::vector<double> s_b[2];
+  double t_operator[2] = {0, 0};
+  for_each_body([&](int b, BodyWork &work) {
+    factorize_body(b, work);
+    if (!contact_ || !system_[b]) return;
+    const double start = now();
+    interface_block(b, s_b[b], work);
+    t_operator[b] = now() - start;
+  });
+  if (contact_) {
+    Stopwatch watch(infos.t_contact);
+    const double start = now();
+    ContactSystem &cs = *contact_;
+    const size_t q = size_t(cs.rows.size());
+    cs.s.assign(q * q, 0.0);
+    for (int b = 0; b < 2; ++b)
+      if (!s_b[b].empty())
+        for (size_t k = 0; k < q * q; ++k) cs.s[k] += s_b[b][k];
+    for (size_t j = 0; j < q; ++j)
+      for (size_t i = j + 1; i < q; ++i) cs.s[j * q + i] = cs.s[i * q + j];
+    cs.last_active.clear();
+    progress(MC_LOG_PHASE, "interface operator: S = B K^+ B^T of order %zu, %.3g s", q,
+             t_operator[0] + t_operator[1] + now() - start);
   }
-  if (contact_) build_contact_operator();
   built_version_ = structure_version_;
-}
-
-// S = sum over bodies of B_G L_GG^-T L_GG^-1 B_G^T: a triangular solve with the trailing block
-// of each factor and a rank-k update, all dense BLAS 3.
-void Model::build_contact_operator() {
-  Stopwatch watch(infos.t_contact);
-  const double t_operator = now();
-  ContactSystem &cs = *contact_;
-  const int q = cs.rows.size();
-  cs.s.assign(size_t(q) * q, 0.0);
-  for (int b = 0; b < 2; ++b) {
-    BodySystem &sys = *system_[b];
-    const int ng = int(sys.interface.size());
-    if (ng == 0 || q == 0) continue;
-    std::vector<int> order;
-    std::vector<double> l = sys.cholesky.interface_factor(order);
-    std::vector<int> factor_position(sys.stiffness.n, -1);
-    for (int k = 0; k < ng; ++k) factor_position[sys.interface[order[k]]] = k;
-    std::vector<double> w(size_t(ng) * q, 0.0);
-    for (int r = 0; r < q; ++r)
-      for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) {
-        int k = factor_position[cs.b_dof[b][p]];
-        if (k >= 0) w[size_t(r) * ng + k] += cs.b_value[b][p];
-      }
-    double one = 1.0;
-    dtrsm_("L", "L", "N", "N", &ng, &q, &one, l.data(), &ng, w.data(), &ng);
-    dsyrk_("U", "T", &q, &ng, &one, w.data(), &ng, &one, cs.s.data(), &q);
-    cs.w[b] = std::move(w), cs.w_rows[b] = ng;
-  }
-  for (int j = 0; j < q; ++j)
-    for (int i = j + 1; i < q; ++i) cs.s[size_t(j) * q + i] = cs.s[size_t(i) * q + j];
-  cs.last_active.clear();
-  progress(MC_LOG_PHASE, "interface operator: S = B K^+ B^T of order %d, %.3g s", q, now() - t_operator);
 }
 
 double Model::initial_gap(size_t pos) const {
@@ -260,8 +358,11 @@ void Model::solve() {
     fail(MC_ERROR_STATE, "body %d has a contact surface but body %d has none: contact needs both (mc_set_contact)",
          body[0].has_contact ? 1 : 2, body[0].has_contact ? 2 : 1);
   const bool rebuild = built_version_ != structure_version_;
-  progress(MC_LOG_PHASE, rebuild ? "solve: start, assembling and factorizing"
-                                 : "solve: start, reusing the factorizations and the interface operator");
+  threads_ = body_threads();
+  infos.threads = threads_;
+  progress(MC_LOG_PHASE, "solve: start, %s%s",
+           rebuild ? "assembling and factorizing" : "reusing the factorizations and the interface operator",
+           threads_ > 1 ? " (the two bodies at once, on 2 threads)" : "");
   effective_supports();
   if (rebuild) {
     built_version_ = 0;
@@ -271,11 +372,11 @@ void Model::solve() {
   // Loads with the prescribed displacements lifted: f_eff = f - K u_prescribed.
   const double t_loads = now();
   std::vector<double> f[2], lifted[2], v[2], y[2];
-  for (int b = 0; b < 2; ++b) {
-    if (!system_[b]) continue;
+  for_each_body([&](int b, BodyWork &work) {
+    if (!system_[b]) return;
     BodySystem &sys = *system_[b];
     {
-      Stopwatch watch(infos.t_assembly);
+      Stopwatch watch(work.infos.t_assembly);
       f[b] = load_vector(b);
       std::vector<double> up(sys.stiffness.n, 0.0), kup(sys.stiffness.n, 0.0);
       bool any_prescribed_motion = false;  // supports at rest (the usual case) lift nothing
@@ -290,7 +391,7 @@ void Model::solve() {
     std::vector<double> x(sys.solve_dofs.size());
     for (size_t k = 0; k < x.size(); ++k) x[k] = lifted[b][sys.solve_dofs[k]];
     {
-      Stopwatch watch(infos.t_solve);
+      Stopwatch watch(work.infos.t_solve);
       if (contact_) {
         y[b].resize(x.size());
         sys.cholesky.forward(x.data(), y[b].data());
@@ -301,9 +402,9 @@ void Model::solve() {
     v[b].assign(sys.stiffness.n, 0.0);
     if (!contact_)
       for (size_t k = 0; k < x.size(); ++k) v[b][sys.solve_dofs[k]] = x[k];
-    infos.dofs += long(sys.solve_dofs.size() + sys.rigid.pinned_dofs.size());
-    infos.factor_nnz += sys.cholesky.factor_nnz();
-  }
+    work.infos.dofs += long(sys.solve_dofs.size() + sys.rigid.pinned_dofs.size());
+    work.infos.factor_nnz += sys.cholesky.factor_nnz();
+  });
   progress(MC_LOG_PHASE, "loads: load vectors and %s, %.3g s", contact_ ? "forward solves y = L^-1 P f" : "solves v = K^-1 f",
            now() - t_loads);
 
@@ -410,10 +511,10 @@ void Model::solve() {
 
   // u = K^+ (f_eff - B^T lambda) + R alpha, then the prescribed values.
   const double t_recovery = now();
-  int mode_offset = 0;
-  double f_norm = 0, residual_norm = 0;
-  for (int b = 0; b < 2; ++b) {
-    if (!system_[b]) continue;
+  int mode_offset[2] = {0, system_[0] ? system_[0]->rigid.count : 0};  // body b's modes in alpha
+  double f_norm2[2] = {0, 0}, residual_norm2[2] = {0, 0}, energy[2] = {0, 0};
+  for_each_body([&](int b, BodyWork &work) {
+    if (!system_[b]) return;
     BodySystem &sys = *system_[b];
     const int ndof = sys.stiffness.n;
     std::vector<double> contact_force(ndof, 0.0), rigid_motion(ndof, 0.0);  // rigid_motion: R alpha
@@ -431,14 +532,13 @@ void Model::solve() {
         dgemv_("N", &ng, &q, &minus, contact_->w[b].data(), &ng, lambda.data(), &one, &plus, z_interface, &one);
       }
       {
-        Stopwatch watch(infos.t_solve);
+        Stopwatch watch(work.infos.t_solve);
         sys.cholesky.backward(z.data(), x.data());
       }
       std::fill(v[b].begin(), v[b].end(), 0.0);
       for (size_t k = 0; k < x.size(); ++k) v[b][sys.solve_dofs[k]] = x[k];
       for (int c = 0; c < sys.rigid.count; ++c)
-        for (int i = 0; i < ndof; ++i) rigid_motion[i] += alpha[mode_offset + c] * sys.rigid.modes[size_t(c) * ndof + i];
-      mode_offset += sys.rigid.count;
+        for (int i = 0; i < ndof; ++i) rigid_motion[i] += alpha[mode_offset[b] + c] * sys.rigid.modes[size_t(c) * ndof + i];
     }
     Body &body_ = body[b];
     // Reactions, energy and the equilibrium residual from the full stiffness. K R = 0, so K is
@@ -458,9 +558,9 @@ void Model::solve() {
       // Relative to the load of the reduced problem, f - K u_prescribed: a body moved only by
       // prescribed displacements has f = 0, and its residual is then measured against the forces
       // those displacements cause, not in absolute units.
-      else residual_norm += r * r, f_norm += lifted[b][i] * lifted[b][i] + contact_force[i] * contact_force[i];
+      else residual_norm2[b] += r * r, f_norm2[b] += lifted[b][i] * lifted[b][i] + contact_force[i] * contact_force[i];
     }
-    infos.energy += 0.5 * dot(elastic, ku);
+    energy[b] = 0.5 * dot(elastic, ku);
     // Cell-averaged stresses.
     const Mesh &mesh = body_.mesh;
     const int npc = mesh.nodes_per_cell();
@@ -475,7 +575,10 @@ void Model::solve() {
       if (npc == 3) triangle_stress(p, law, measure(), ue, &body_.stress[4 * size_t(c)]);
       else quadrilateral_stress(p, law, measure(), bbar, ue, &body_.stress[4 * size_t(c)]);
     }
-  }
+  });
+  // Per-body sums added in body order, whatever the thread count.
+  const double residual_norm = residual_norm2[0] + residual_norm2[1], f_norm = f_norm2[0] + f_norm2[1];
+  infos.energy = energy[0] + energy[1];
   infos.equilibrium = std::sqrt(residual_norm) / std::max(std::sqrt(f_norm), 1e-300);
   if (f_norm == 0) infos.equilibrium = std::sqrt(residual_norm);
 

@@ -12,6 +12,7 @@
 #include "sparse_cholesky.hpp"
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mc {
@@ -82,12 +83,30 @@ struct Options {
   int contact_normal = MC_NORMAL_NONMORTAR;
   int contact_surface = MC_SURFACE_SMOOTH;
   double feature_angle = 40;  // degrees (docs/robustness.md: chosen by measurement)
+  int threads = 0;  // MC_OPTION_THREADS: 0 automatic, 1 serial, n: at most n threads
 };
 
 struct Infos {
   long dofs = 0, factor_nnz = 0, iterations = 0, active = 0, contact_rows = 0, factorizations = 0;
   double t_assembly = 0, t_analysis = 0, t_factor = 0, t_solve = 0, t_contact = 0, t_total = 0;
   double energy = 0, complementarity = 0, equilibrium = 0;
+  int threads = 1;  // threads the last solve ran the bodies' work on (1 or 2)
+};
+
+// The smaller body's unknowns (2 x its nodes) from which MC_OPTION_THREADS = 0 (automatic)
+// solves the two bodies at once on a machine with two or more cores. Chosen by measurement
+// (docs/benchmarks.md, "Threads"): below about 15000 the re-solve, a few milliseconds, was
+// slower on two threads (starting them costs more than they save), and up to 25000 the gain was
+// within the noise of a shared machine; from 30000 on it was clear in every run.
+constexpr long kParallelMinBodyDofs = 30000;
+
+// One body's share of a phase that runs for both bodies at once: its own timings and counts
+// (added to the model's infos in body order) and, when it runs on a thread of its own, its
+// progress messages, kept until the calling thread sends them on.
+struct BodyWork {
+  Infos infos;
+  ProgressLog log;
+  std::vector<std::pair<mc_log_level, std::string>> lines;
 };
 
 class Model {
@@ -119,14 +138,21 @@ public:
   std::vector<double> contact_force, contact_gap, contact_pressure;
 
 private:
+  int body_threads() const;
+  // Runs task(b, work) for both bodies: one after the other, or with two threads body 2's on a
+  // std::thread joined before returning. Exceptions are rethrown here, body 1's first.
+  template <class Task> void for_each_body(Task &&task);
+  std::unique_ptr<BodySystem> assemble_body(int b, BodyWork &work) const;
+  void factorize_body(int b, BodyWork &work);
+  void interface_block(int b, std::vector<double> &s_b, BodyWork &work);
   void build_structure();
-  void build_contact_operator();
   std::vector<double> load_vector(int b) const;
   void effective_supports();
   // The supports a solve uses: the host's (mc_fix) and, in an axisymmetric model, u_r = 0 at
   // the nodes on the axis. Per DOF, like Body::prescribed and prescribed_value.
   std::vector<char> fixed_[2];
   std::vector<double> fixed_value_[2];
+  int threads_ = 1;  // body threads of the solve under way
   long structure_version_ = 1, built_version_ = 0;
   std::unique_ptr<BodySystem> system_[2];
   std::unique_ptr<ContactSystem> contact_;

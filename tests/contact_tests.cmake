@@ -12,7 +12,10 @@ set_tests_properties(test_contact test_contact_convergence PROPERTIES TIMEOUT 60
 add_test(NAME blas_is_openblas COMMAND sh -c
   "ldd '$<TARGET_FILE:mortarcontact>' | awk '/libblas|liblapack|libopenblas/ {print $3}' | xargs -n1 readlink -f | tee /dev/stderr | grep -v openblas && exit 1 || exit 0")
 
-# Two models in two threads at once.
+# Threads: MC_OPTION_THREADS, two models in two host threads at once. Run a second time with
+# OpenBLAS at one thread, where the threaded results must be the serial ones bit for bit.
 find_package(Threads REQUIRED)
 mc_add_check_test(test_model_threads test_model_threads.c)
-target_link_libraries(test_model_threads PRIVATE hertz_scene Threads::Threads)
+target_link_libraries(test_model_threads PRIVATE hertz_scene Threads::Threads PkgConfig::OPENBLAS)
+add_test(NAME test_model_threads_blas1 COMMAND test_model_threads)
+set_tests_properties(test_model_threads_blas1 PROPERTIES TIMEOUT 120 ENVIRONMENT OPENBLAS_NUM_THREADS=1)

@@ -54,6 +54,16 @@ case "$mode" in
     CK_FORK=no ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       ctest --test-dir "$asan" -L memcheck --output-on-failure -j1
     t_asan=$((SECONDS - t0))
+    # (a') ThreadSanitizer (gcc): the thread tests (MC_OPTION_THREADS, models in host threads), a
+    # lean build of just that program. OpenBLAS is not instrumented; tools/tsan.supp says why its
+    # reports are suppressed, and nothing else is.
+    t0=$SECONDS
+    tsan=${MC_TSAN_DIR:-build-tsan}
+    cmake -S . -B "$tsan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMC_SANITIZE_THREAD=ON -DMC_BUILD_BENCH=OFF >/dev/null
+    cmake --build "$tsan" -j"$(nproc)" --target test_model_threads
+    CK_FORK=no TSAN_OPTIONS="suppressions=$PWD/tools/tsan.supp halt_on_error=1 second_deadlock_stack=1" \
+      ctest --test-dir "$tsan" -R '^test_model_threads$' --output-on-failure -j1
+    t_tsan=$((SECONDS - t0))
     # (b) valgrind memcheck of the same programs from the normal build. Left out for time (they
     # run under ASan/UBSan above; under valgrind they took 3, 10 and 11 minutes): the convergence
     # study and the two long scene suites. test_contact keeps the contact paths under valgrind.
@@ -78,7 +88,7 @@ case "$mode" in
     fi
     grep -E '^(INFO: .*corpus|stat::)|Done' "$fuzz/fuzz.log" || true
     t_fuzz=$((SECONDS - t0))
-    echo "robustness steps: ASan/UBSan ${t_asan} s, valgrind ${t_valgrind} s, fuzzing ${t_fuzz} s" ;;
+    echo "robustness steps: ASan/UBSan ${t_asan} s, TSan ${t_tsan} s, valgrind ${t_valgrind} s, fuzzing ${t_fuzz} s" ;;
   *)
     echo "usage: $0 demo|test" >&2; exit 2 ;;
 esac

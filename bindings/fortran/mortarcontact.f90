@@ -43,7 +43,8 @@ module mortarcontact
   integer, parameter, public :: MC_X = 1, MC_Y = 2, MC_XY = 3
   integer, parameter, public :: MC_OPTION_METHOD = 1, MC_OPTION_TOLERANCE = 2, &
        MC_OPTION_MAX_ITERATIONS = 3, MC_OPTION_ORDERING = 4, MC_OPTION_Q1_INTEGRATION = 6, &
-       MC_OPTION_CONTACT_NORMAL = 7, MC_OPTION_CONTACT_SURFACE = 8, MC_OPTION_FEATURE_ANGLE = 9
+       MC_OPTION_CONTACT_NORMAL = 7, MC_OPTION_CONTACT_SURFACE = 8, MC_OPTION_FEATURE_ANGLE = 9, &
+       MC_OPTION_THREADS = 10
   integer, parameter, public :: MC_METHOD_MORTAR = 0, MC_METHOD_DUAL_MORTAR = 1, &
        MC_METHOD_NODE_TO_SEGMENT = 2
   integer, parameter, public :: MC_NORMAL_NONMORTAR = 0, MC_NORMAL_MORTAR = 1

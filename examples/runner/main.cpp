@@ -204,6 +204,7 @@ void set_options(mc_model *m, const Scene &scene) {
         "mc_set_option_int");
   setup(m, mc_set_option_real(m, MC_OPTION_FEATURE_ANGLE, s.feature_angle), scene, "solver.feature_angle",
         "mc_set_option_real");
+  setup(m, mc_set_option_int(m, MC_OPTION_THREADS, s.threads), scene, "solver.threads", "mc_set_option_int");
 }
 
 // ---- results ------------------------------------------------------------------------------

@@ -108,6 +108,13 @@ class Value {
     return int(j_.get<long long>());
   }
 
+  // An integer in [lo, hi].
+  int integer_in(long long lo, long long hi) const {
+    if (!j_.is_number_integer() || j_.get<long long>() < lo || j_.get<long long>() > hi)
+      fail("must be an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", got " + describe());
+    return int(j_.get<long long>());
+  }
+
   std::string string() const {
     if (!j_.is_string()) fail("must be a string, got " + describe());
     std::string s = j_.get<std::string>();
@@ -270,11 +277,11 @@ Body parse_body(const Value &v, int index, const std::string &base_dir) {
 
 Solver parse_solver(const Value &v) {
   // Defaults: the library's (mortarcontact.h).
-  Solver s{MC_METHOD_MORTAR, 1e-10, 200, MC_NORMAL_NONMORTAR, MC_Q1_FULL, MC_ORDERING_AUTO, MC_SURFACE_SMOOTH, 40};
+  Solver s{MC_METHOD_MORTAR, 1e-10, 200, MC_NORMAL_NONMORTAR, MC_Q1_FULL, MC_ORDERING_AUTO, MC_SURFACE_SMOOTH, 40, 0};
   if (!v.has("solver")) return s;
   Value o = v.child("solver");
   o.expect_object({"method", "tolerance", "max_iterations", "contact_normal", "q1_integration", "ordering",
-                   "contact_surface", "feature_angle"});
+                   "contact_surface", "feature_angle", "threads"});
   if (o.has("method"))
     s.method = o.child("method").choice({{"mortar", MC_METHOD_MORTAR},
                                          {"dual_mortar", MC_METHOD_DUAL_MORTAR},
@@ -290,6 +297,7 @@ Solver parse_solver(const Value &v) {
   if (o.has("contact_surface"))
     s.contact_surface = o.child("contact_surface").choice({{"smooth", MC_SURFACE_SMOOTH}, {"faceted", MC_SURFACE_FACETED}});
   if (o.has("feature_angle")) s.feature_angle = o.child("feature_angle").number();  // the library checks the range
+  if (o.has("threads")) s.threads = o.child("threads").integer_in(0, 1024);
   return s;
 }
 

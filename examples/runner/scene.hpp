@@ -53,6 +53,7 @@ struct Solver {
   int ordering;        // MC_ORDERING_*
   int contact_surface;   // MC_SURFACE_*
   double feature_angle;  // degrees
+  int threads;         // MC_OPTION_THREADS: 0 automatic, 1 serial, n at most n
 };
 
 struct Output {

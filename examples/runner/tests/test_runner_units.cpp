@@ -259,6 +259,8 @@ START_TEST(valid_scene_parsed_with_defaults) {
   ck_assert_int_eq(s.solver.contact_surface, MC_SURFACE_SMOOTH);
   ck_assert_double_eq(s.solver.feature_angle, 40.0);
   ck_assert_double_eq(s.solver.tolerance, 1e-10);
+  ck_assert_int_eq(s.solver.threads, 0);  // MC_OPTION_THREADS: automatic
+  ck_assert_int_eq(parse_scene(scene_text("\"dual_mortar\"", "\"dual_mortar\", \"threads\": 1"), "s.json").solver.threads, 1);
   ck_assert_str_eq(s.bodies[0].mesh_path.c_str(), "dir/m.msh");  // relative to the scene file
   ck_assert_str_eq(s.output.pressure_csv.c_str(), "dir/out/p.csv");
   ck_assert(s.output.vtu.empty());
@@ -318,6 +320,8 @@ START_TEST(scene_errors_name_the_key) {
              "analytic.load: missing");
   ASSERT_HAS(scene_error(scene_text("\"method\": \"dual_mortar\"", "\"max_iterations\": 2.5")),
              "solver.max_iterations: must be an integer >= 1");
+  ASSERT_HAS(scene_error(scene_text("\"method\": \"dual_mortar\"", "\"threads\": -1")),
+             "solver.threads: must be an integer from 0 to 1024, got number -1");
   ASSERT_HAS(scene_error("{ \"bodies\": [ {} ] }"), "bodies: must list exactly two bodies");
   ASSERT_HAS(scene_error("[1, 2]"), "top level: must be an object");
   e = scene_error("{\n  \"bodies\": [\n  ,\n]}");
