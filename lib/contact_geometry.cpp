@@ -296,10 +296,12 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
   g.gap0.assign(n, kNoGap);
   g.projection.assign(n, SurfacePoint{});
   bool any = false;
+  int hint = -1;  // neighbouring positions hit neighbouring segments
   for (size_t j = 0; j < n; ++j) {
     int seg;
     double s, t;
-    if (curve2.cast(body1.node(g.nodes[j]), g.normals[j], seg, s, t)) g.gap0[j] = t, g.projection[j] = {seg, s}, any = true;
+    if (curve2.cast(body1.node(g.nodes[j]), g.normals[j], seg, s, t, hint))
+      g.gap0[j] = t, g.projection[j] = {seg, s}, any = true, hint = seg;
   }
   if (!any)
     fail(MC_ERROR_CONTACT,
@@ -357,8 +359,9 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
         const double xim = 0.5 * (xi0 + xi1);
         int mortar;
         double s, t;
-        if (!curve2.cast(curve1.point(seg, xim), look(seg, xim), mortar, s, t)) continue;
+        if (!curve2.cast(curve1.point(seg, xim), look(seg, xim), mortar, s, t, hint)) continue;
         pieces.push_back({k, xi0, xi1, mortar});
+        hint = mortar;
       }
     }
     runs_of_face(context, pieces, g.runs, g.tributary);

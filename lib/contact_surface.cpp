@@ -186,6 +186,13 @@ SurfaceCurve::SurfaceCurve(const Mesh &mesh, const std::vector<SurfaceSegment> &
         c.length = norm(minus(c.pb, c.pa));
         c.edge_normal = edge_normal(c.pa, c.pb);
         c.ta = scaled(tangent_of(c.na), c.length), c.tb = scaled(tangent_of(c.nb), c.length);
+        // The curve lies in the convex hull of its Bezier points (the chord if faceted).
+        const Point hull[4] = {c.pa, c.pb, plus(c.pa, scaled(c.ta, 1.0 / 3)), minus(c.pb, scaled(c.tb, 1.0 / 3))};
+        c.box_lo = c.box_hi = c.pa;
+        for (int h = 1; h < (smooth_ ? 4 : 2); ++h) {
+          c.box_lo = {std::min(c.box_lo.x, hull[h].x), std::min(c.box_lo.y, hull[h].y)};
+          c.box_hi = {std::max(c.box_hi.x, hull[h].x), std::max(c.box_hi.y, hull[h].y)};
+        }
         segments_.push_back(c);
       }
       faces_.push_back(std::move(face));
@@ -274,13 +281,30 @@ bool SurfaceCurve::intersect_line(int seg, Point p, Point n, double slack, doubl
   return true;
 }
 
-bool SurfaceCurve::cast(Point p, Point n, int &seg, double &s, double &t) const {
+double SurfaceCurve::box_distance(int seg, Point p) const {
+  const CurveSegment &c = segments_[seg];
+  const double dx = std::max({c.box_lo.x - p.x, 0.0, p.x - c.box_hi.x});
+  const double dy = std::max({c.box_lo.y - p.y, 0.0, p.y - c.box_hi.y});
+  return std::hypot(dx, dy);
+}
+
+bool SurfaceCurve::cast(Point p, Point n, int &seg, double &s, double &t, int hint) const {
+  const int count = int(segments_.size());
   double best = 0;
   bool found = false;
-  for (int k = 0; k < int(segments_.size()); ++k) {
+  auto consider = [&](int k) {
     double sk, tk;
-    if (!intersect_line(k, p, n, 1e-12, sk, tk)) continue;
+    if (!intersect_line(k, p, n, 1e-12, sk, tk)) return;
     if (!found || std::fabs(tk) < std::fabs(best)) best = tk, seg = k, s = std::clamp(sk, 0.0, 1.0), t = tk, found = true;
+  };
+  if (hint >= 0 && hint < count)
+    for (int k : {hint, hint - 1, hint + 1})
+      if (k >= 0 && k < count) consider(k);
+  for (int k = 0; k < count; ++k) {
+    if (hint >= 0 && k >= hint - 1 && k <= hint + 1) continue;
+    // A hit on segment k is at least its box's distance away from p: no nearer than the best.
+    if (found && box_distance(k, p) > std::fabs(best) * (1 + 1e-12)) continue;
+    consider(k);
   }
   return found;
 }
@@ -288,7 +312,7 @@ bool SurfaceCurve::cast(Point p, Point n, int &seg, double &s, double &t) const 
 bool SurfaceCurve::closest_point(Point p, Point facing, int &seg, double &s) const {
   double best = 1e300;
   bool found = false;
-  for (int k = 0; k < int(segments_.size()); ++k) {
+  auto consider = [&](int k) {
     const CurveSegment &c = segments_[k];
     Point e = minus(c.pb, c.pa);
     double x = std::clamp(dot(minus(p, c.pa), e) / dot(e, e), 0.0, 1.0);
@@ -300,10 +324,22 @@ bool SurfaceCurve::closest_point(Point p, Point facing, int &seg, double &s) con
         if (std::fabs(next - x) <= 1e-15) break;
         x = next;
       }
-    if (dot(surface_normal(k, x), facing) >= 0) continue;
+    if (dot(surface_normal(k, x), facing) >= 0) return;
     double distance = norm(minus(point(k, x), p));
     if (distance < best) best = distance, seg = k, s = x, found = true;
+  };
+  // The segment whose box is nearest first; then only the segments whose box is nearer than
+  // the best point so far (the box's distance bounds the curve's from below).
+  const int count = int(segments_.size());
+  int nearest = -1;
+  double nearest_box = 1e300;
+  for (int k = 0; k < count; ++k) {
+    const double d = box_distance(k, p);
+    if (d < nearest_box) nearest_box = d, nearest = k;
   }
+  if (nearest >= 0) consider(nearest);
+  for (int k = 0; k < count; ++k)
+    if (k != nearest && box_distance(k, p) <= best) consider(k);
   return found;
 }
 

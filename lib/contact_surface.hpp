@@ -48,6 +48,7 @@ struct CurveSegment {
   Point ta, tb;        // Hermite end tangents (smooth), scaled to the chord length
   Point edge_normal;   // unit normal of the straight edge
   double length;       // chord length
+  Point box_lo, box_hi;  // a box around the curve (its Bezier points' or the chord's)
 };
 
 class SurfaceCurve {
@@ -74,12 +75,16 @@ public:
   // against n: s in [-slack, 1+slack] and t; false if there is none.
   bool intersect_line(int seg, Point p, Point n, double slack, double &s, double &t) const;
   // The nearest hit of the line p + t n (|t| least) on a segment facing against n, over all
-  // segments. Returns false if the line misses the surface.
-  bool cast(Point p, Point n, int &seg, double &s, double &t) const;
+  // segments. Returns false if the line misses the surface. `hint`: a segment likely hit (tried
+  // first with its neighbours, so that segments farther than its hit are skipped), or -1.
+  bool cast(Point p, Point n, int &seg, double &s, double &t, int hint = -1) const;
   // The point of the surface closest to p among segments facing against `facing`.
   bool closest_point(Point p, Point facing, int &seg, double &s) const;
 
 private:
+  // Distance from p to segment seg's box: a lower bound of the distance to its curve.
+  double box_distance(int seg, Point p) const;
+
   bool smooth_ = true;
   std::vector<SurfaceFace> faces_;
   std::vector<CurveSegment> segments_;

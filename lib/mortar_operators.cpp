@@ -1,5 +1,6 @@
 #include "mortar_operators.hpp"
 #include "error.hpp"
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -25,13 +26,18 @@ void add_interpolation(const ContactGeometry &g, SurfacePoint at, std::map<int, 
   row[s.b] += at.eta;
 }
 
-void append_row(ConstraintRows &rows, const TracePoint &t, const std::map<int, double> &body2) {
+// A row: body 1 at trace point t; body 2 with weights w over nodes (both n long, nodes
+// ascending). Weights below 1e-17 of the row's largest are left out: D^-1 decays geometrically
+// away from the diagonal, so most of a long run's row is round-off, and B stays sparse.
+void append_row(ConstraintRows &rows, const TracePoint &t, const int *nodes, const double *w, int n) {
   rows.position1.push_back(t.a);
   rows.weight1.push_back(t.is_position() ? 1.0 : 1 - t.xi);
   if (!t.is_position()) rows.position1.push_back(t.b), rows.weight1.push_back(t.xi);
   rows.start1.push_back(int(rows.position1.size()));
-  for (auto &[node, w] : body2)
-    if (w != 0) rows.body2_node.push_back(node), rows.weight2.push_back(w);
+  double largest = 0;
+  for (int k = 0; k < n; ++k) largest = std::max(largest, std::fabs(w[k]));
+  for (int k = 0; k < n; ++k)
+    if (w[k] != 0 && std::fabs(w[k]) >= 1e-17 * largest) rows.body2_node.push_back(nodes[k]), rows.weight2.push_back(w[k]);
   rows.start2.push_back(int(rows.body2_node.size()));
   rows.normal.push_back(t.normal);
   rows.gap0.push_back(t.gap0);
@@ -40,9 +46,12 @@ void append_row(ConstraintRows &rows, const TracePoint &t, const std::map<int, d
 
 // The pointwise row at a trace point (node-to-segment, and the ends of Gamma_c in (3.2)).
 void append_pointwise_row(const ContactGeometry &g, ConstraintRows &rows, const TracePoint &t) {
-  std::map<int, double> w;
-  add_interpolation(g, t.projection, w);
-  append_row(rows, t, w);
+  std::map<int, double> row;
+  add_interpolation(g, t.projection, row);
+  std::vector<int> nodes;
+  std::vector<double> w;
+  for (auto &[node, value] : row) nodes.push_back(node), w.push_back(value);
+  append_row(rows, t, nodes.data(), w.data(), int(nodes.size()));
 }
 
 // Solves the tridiagonal system rows first..last of (lower, diag, upper) for nc right-hand
@@ -182,10 +191,7 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, co
   for (int k = 0; k < n; ++k) {
     const bool end = !closed && (k == 0 || k == n - 1);
     const double *values = end ? end_row[k == 0 ? 0 : 1].data() : &rhs[size_t(k) * nc];
-    std::map<int, double> entries;
-    for (int c = 0; c < nc; ++c)
-      if (values[c] != 0) entries[column_node[c]] = values[c];
-    append_row(rows, run.trace[k], entries);
+    append_row(rows, run.trace[k], column_node.data(), values, nc);
   }
 }
 
