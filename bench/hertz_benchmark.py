@@ -9,7 +9,7 @@ p0, a, H1 norm, re-solve time) and bench/getfem_hertz.py (same meshes, bit for b
   - with --update-docs, replaces the generated section of docs/benchmarks.md.
 
 usage: /usr/bin/python3 bench/hertz_benchmark.py [--build build] [--quick] [--update-docs]
-       [--no-getfem] [--repeat 3] [--from-json]
+       [--no-getfem] [--getfem-from-json] [--repeat 3] [--from-json]
 (--quick: three small sizes, for a smoke run; the documented numbers come from the default.)
 Needs python3-matplotlib and, for the peer, python3-getfem (Debian).
 """
@@ -61,6 +61,8 @@ def main():
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--no-getfem", action="store_true")
+    ap.add_argument("--getfem-from-json", action="store_true",
+                    help="reuse GetFEM's numbers from the last run's JSON (its code did not change), run ours")
     ap.add_argument("--update-docs", action="store_true")
     ap.add_argument("--from-json", action="store_true",
                     help="rebuild the report and the plot from the JSON files of the last run (no solving)")
@@ -81,7 +83,7 @@ def main():
     peer = []
     if not args.no_getfem:
         peer_json = os.path.join(args.out, "hertz_getfem.json")
-        if not args.from_json:
+        if not args.from_json and not args.getfem_from_json:
             run(["/usr/bin/python3", os.path.join(HERE, "getfem_hertz.py"), "--json", peer_json, "--h1"]
                 + [str(h) for h in peer_sizes])
         peer = json.load(open(peer_json))

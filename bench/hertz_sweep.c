@@ -21,8 +21,9 @@
  *   a_moment  2 sqrt(sum f_j x_j^2 / sum f_j) from the nodal contact forces (exact for the
  *             elliptical Hertz distribution).
  *
- * usage: hertz_sweep [--ratio r] [--repeat n] [--normal nonmortar|mortar]
+ * usage: hertz_sweep [--ratio r] [--repeat n] [--normal nonmortar|mortar] [--threads n]
  *                    [--cases plain,mortar,dual,nts] [--json file] h1 [h1 ...]
+ * (--threads: MC_OPTION_THREADS for every solve; default: the library's, automatic)
  */
 #define _POSIX_C_SOURCE 200809L
 #include "bench_timing.h"
@@ -136,10 +137,13 @@ static mc_status apply_load(mc_model *m, const hertz_scene *s, double scale) {
 }
 
 /* One solve of the scene (setup included in t_wall); fills r on the last repeat. */
+static int threads_option = -1; /* --threads: MC_OPTION_THREADS, or -1 for the library's default */
+
 static void run_once(const hertz_scene *s, int method, int normal, int last, result *r, double *t_wall) {
   mc_model *m = NULL;
   double start = bench_wall();
   TRY(mc_create(&m));
+  if (threads_option >= 0) TRY(mc_set_option_int(m, MC_OPTION_THREADS, threads_option));
   for (int b = 0; b < 2; ++b) {
     const hertz_mesh *mesh = &s->body[b];
     TRY(mc_set_mesh(m, b + 1, mesh->n_nodes, mesh->xy, mesh->n_cells, mesh->nodes_per_cell, mesh->cells));
@@ -266,11 +270,12 @@ int main(int argc, char **argv) {
     else if (!strcmp(argv[i], "--repeat") && i + 1 < argc) repeat = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--json") && i + 1 < argc) json_path = argv[++i];
     else if (!strcmp(argv[i], "--cases") && i + 1 < argc) cases = argv[++i];
+    else if (!strcmp(argv[i], "--threads") && i + 1 < argc) threads_option = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--normal") && i + 1 < argc)
       normal = !strcmp(argv[++i], "mortar") ? MC_NORMAL_MORTAR : MC_NORMAL_NONMORTAR;
     else if (n_sizes < 64 && atof(argv[i]) > 0) h1s[n_sizes++] = atof(argv[i]);
     else {
-      fprintf(stderr, "usage: %s [--ratio r] [--repeat n] [--normal nonmortar|mortar] [--cases list] [--json file] h1...\n",
+      fprintf(stderr, "usage: %s [--ratio r] [--repeat n] [--normal nonmortar|mortar] [--threads n] [--cases list] [--json file] h1...\n",
               argv[0]);
       return 2;
     }
