@@ -158,7 +158,7 @@ int cell_b_matrices(const Point *p, int npc, const LineMeasure &measure, int n_s
   return n;
 }
 
-// ke += weight * B^T D B
+// The upper triangle of ke += weight * B^T D B (ke is symmetric: cell_stiffness mirrors it).
 void add_btdb(int n, int n_strain, const double *b, const double *d, double weight, double *ke) {
   const int m = 2 * n;
   double db[4 * 8];
@@ -166,21 +166,23 @@ void add_btdb(int n, int n_strain, const double *b, const double *d, double weig
     for (int j = 0; j < m; ++j) {
       double s = 0;
       for (int k = 0; k < n_strain; ++k) s += d[4 * r + k] * b[k * m + j];
-      db[r * m + j] = s;
+      db[r * m + j] = weight * s;
     }
   for (int i = 0; i < m; ++i)
-    for (int j = 0; j < m; ++j) {
+    for (int j = i; j < m; ++j) {
       double s = 0;
       for (int r = 0; r < n_strain; ++r) s += b[r * m + i] * db[r * m + j];
-      ke[i * m + j] += weight * s;
+      ke[i * m + j] += s;
     }
 }
 
 void cell_stiffness(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar, double *ke) {
   double b[4][32], weight[4];
-  const int n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight);
+  const int n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight), m = 2 * npc;
   std::memset(ke, 0, size_t(4 * npc * npc) * sizeof(double));
   for (int g = 0; g < n; ++g) add_btdb(npc, law.n_strain, b[g], law.d, weight[g], ke);
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < i; ++j) ke[i * m + j] = ke[j * m + i];
 }
 
 void stress_from_strain(const PlaneLaw &law, const double eps[4], double sigma[4]) {
