@@ -4,6 +4,7 @@
 // the model's message.
 #include "error.hpp"
 #include "model.hpp"
+#include "plane_vectors.hpp"
 #include "mortarcontact.h"
 #include "vtu_writer.hpp"
 #include <cfloat>
@@ -414,9 +415,8 @@ mc_status mc_set_contact(mc_model *m, int body, mc_int n_edges, const mc_int *ed
     for (int node = 0; node < b.mesh.n_nodes(); ++node) {
       const int in = arriving[node], out = leaving[node];
       if (in < 0 || out < 0) continue;
-      const mc::Point p = b.mesh.node(surface[in].a), q = b.mesh.node(node), r = b.mesh.node(surface[out].b);
-      const double dx1 = q.x - p.x, dy1 = q.y - p.y, dx2 = r.x - q.x, dy2 = r.y - q.y;
-      const double turn = std::atan2(dx1 * dy2 - dy1 * dx2, dx1 * dx2 + dy1 * dy2) * 180 / 3.14159265358979323846;
+      const double turn = mc::turn_angle(b.mesh.node(surface[in].a), b.mesh.node(node), b.mesh.node(surface[out].b)) *
+                          180 / 3.14159265358979323846;
       if (std::fabs(turn) > kFoldAngleDegrees)
         fail(MC_ERROR_CONTACT, "edges[%d..%d] = (%d, %d) and edges[%d..%d] = (%d, %d) fold back at node %d: the surface "
              "turns by %.1f degrees there (more than %.0f): a contact surface must not fold back on itself",

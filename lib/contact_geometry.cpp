@@ -1,6 +1,7 @@
 #include "contact_geometry.hpp"
 #include "error.hpp"
 #include "mortarcontact.h"
+#include "plane_vectors.hpp"
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -8,17 +9,6 @@
 namespace mc {
 
 namespace {
-
-double cross(Point u, Point v) { return u.x * v.y - u.y * v.x; }
-double dot(Point u, Point v) { return u.x * v.x + u.y * v.y; }
-Point minus(Point u, Point v) { return {u.x - v.x, u.y - v.y}; }
-Point lerp(Point u, Point v, double s) { return {u.x + s * (v.x - u.x), u.y + s * (v.y - u.y)}; }
-Point unit(Point u) {
-  double l = std::hypot(u.x, u.y);
-  return {u.x / l, u.y / l};
-}
-// Outward normal of an edge a->b with the body on its left.
-Point edge_normal(Point a, Point b) { return unit({b.y - a.y, a.x - b.x}); }
 
 // The direction along which body 1 looks for body 2 at (segment, parameter) of its curve.
 using LookDirection = std::function<Point(int, double)>;

@@ -1,5 +1,6 @@
 #include "contact_surface.hpp"
 #include "error.hpp"
+#include "plane_vectors.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -9,15 +10,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double cross(Point u, Point v) { return u.x * v.y - u.y * v.x; }
-double dot(Point u, Point v) { return u.x * v.x + u.y * v.y; }
-Point minus(Point u, Point v) { return {u.x - v.x, u.y - v.y}; }
-Point plus(Point u, Point v) { return {u.x + v.x, u.y + v.y}; }
-Point scaled(Point u, double s) { return {s * u.x, s * u.y}; }
-double norm(Point u) { return std::hypot(u.x, u.y); }
-Point unit(Point u) { return scaled(u, 1 / norm(u)); }
-// Outward normal of an edge a->b with the body on its left.
-Point edge_normal(Point a, Point b) { return unit({b.y - a.y, a.x - b.x}); }
 // The direction of travel whose outward normal is n (the body on the left).
 Point tangent_of(Point n) { return {-n.y, n.x}; }
 
@@ -67,12 +59,6 @@ std::vector<Chain> chains_of(const std::vector<SurfaceSegment> &surface) {
     chains.push_back(c);
   }
   return chains;
-}
-
-// Signed angle by which the direction of travel turns at node b of the path a -> b -> c.
-double turn_angle(Point a, Point b, Point c) {
-  Point d1 = minus(b, a), d2 = minus(c, b);
-  return std::atan2(cross(d1, d2), dot(d1, d2));
 }
 
 // Splits a chain into faces at corners (turns above the feature angle). A closed loop without
