@@ -7,29 +7,43 @@
  *          clamped at its bottom, body 1 on rollers on its left side and held vertically by
  *          contact alone, a uniform traction on its top;
  *   hertz  the Hertz scene (examples/scenes/hertz_scene.h, h2 = 1.37 h1), mortar method.
- * Per size, in one child process (so that sizes do not share memory): one untimed serial solve
- * (the first solve of a process maps fresh memory, later ones reuse it: 10-15 % of the time at
- * 10^5 DOFs), then for each repeat the serial and the automatic solve one after the other, in
- * turn first (so that neither order nor a change of load on the machine favours one), each timed
- * from mc_create to the results read back, then a re-solve after a load change. Prints medians, the ratio auto/serial, the thread count the automatic
- * solve chose, and whether both gave the same displacements bit for bit.
+ * Each measurement runs in a child process of its own (so that neither mode inherits the other's
+ * heap, or OpenBLAS worker threads still spinning after the other's calls): one untimed solve
+ * (the first solve of a process maps fresh memory: 10-15 % of the time at 10^5 DOFs), then the
+ * timed solve, from mc_create to the results read back, and a re-solve after a load change.
+ * Serial and automatic alternate, in turn first, so that neither order nor a change of load on
+ * the machine favours one. Prints medians, the ratio auto/serial, the thread count the
+ * automatic solve chose, and whether both gave the same displacements bit for bit.
+ * --same-process 1 measures as runs 1 to 4 of docs/benchmarks.md did: one process per size, one
+ * untimed serial solve, then the two modes alternating in that process.
  *
- * usage: threads_bench [--repeat n] [--threads n] equal:N | hertz:h1 ...
+ * usage: threads_bench [--repeat n] [--threads n] [--phases 1] [--same-process 1] equal:N | hertz:h1 ...
  *        (default: the sizes of docs/benchmarks.md, 10^4 to 2*10^6 DOFs, 3 repeats;
- *         --threads: the value compared with serial, default 0 = automatic)
+ *         --threads: the value compared with serial, default 0 = automatic;
+ *         --phases 1: every solve's phase messages on stderr, timed from mc_create)
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DEFAULT_SOURCE /* MAP_ANONYMOUS */
 #include "bench_timing.h"
 #include "hertz_scene.h"
 #include "mortarcontact.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
 #define MAX_REPEAT 15
+
+static int show_phases; /* --phases: print each solve's log with the wall time since mc_create */
+static double phase_origin;
+
+static void print_phase(void *user, mc_log_level level, const char *message) {
+  (void)user;
+  if (level == MC_LOG_PHASE) fprintf(stderr, "  %7.3f  %s\n", bench_wall() - phase_origin, message);
+}
 
 /* A scene: the two meshes, supports, load edges and contact edges. */
 typedef struct scene {
@@ -102,6 +116,11 @@ static void solve(const scene *sc, int threads, timing *out) {
   mc_model *m = NULL;
   double start = bench_wall();
   mc_status st = mc_create(&m);
+  if (show_phases) {
+    phase_origin = start;
+    fprintf(stderr, "%s solve:\n", threads == 1 ? "serial" : "threaded");
+    if (!st) st = mc_set_log_callback(m, print_phase, NULL);
+  }
   for (int b = 0; b < 2 && !st; ++b) {
     st = mc_set_mesh(m, b + 1, s->body[b].n_nodes, s->body[b].xy, s->body[b].n_cells, 3, s->body[b].cells);
     if (!st) st = mc_set_material(m, b + 1, 1.0, 0.3);
@@ -124,6 +143,7 @@ static void solve(const scene *sc, int threads, timing *out) {
   out->dofs = (long)dofs;
   /* a load step: the factorizations and S are reused */
   start = bench_wall();
+  if (show_phases) phase_origin = start, fprintf(stderr, "re-solve:\n");
   if (!st) st = load(m, sc, 1.5);
   if (!st) st = mc_solve(m);
   if (!st) st = mc_get_displacement(m, 1, out->u);
@@ -157,6 +177,32 @@ static int chosen_threads(const scene *sc, int threads) {
   return seen;
 }
 
+/* One measurement in a child process: what it sends back through shared memory. */
+typedef struct shared_result {
+  double first, resolve;
+  long dofs;
+  int ok;
+} shared_result;
+
+static int solve_in_child(const scene *sc, int threads, shared_result *out, double *u, size_t n_u) {
+  out->ok = 0;
+  pid_t child = fork();
+  if (child < 0) return 0;
+  if (child == 0) {
+    timing t = {0};
+    solve(sc, threads, &t); /* not timed */
+    if (t.ok) solve(sc, threads, &t);
+    out->first = t.first, out->resolve = t.resolve, out->dofs = t.dofs, out->ok = t.ok;
+    if (t.ok) memcpy(u, t.u, sizeof(double) * n_u);
+    _exit(t.ok ? 0 : 1);
+  }
+  int status = 0;
+  waitpid(child, &status, 0);
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0 && out->ok;
+}
+
+static int same_process; /* --same-process 1: both modes in one process, as in runs 1 to 4 */
+
 static int run(const char *spec, int repeat, int threads) {
   scene sc;
   int bad;
@@ -170,18 +216,45 @@ static int run(const char *spec, int repeat, int threads) {
   double first[2][MAX_REPEAT], resolve[2][MAX_REPEAT];
   timing t[2] = {{0}, {0}};
   int identical = 1;
-  /* A first solve, not timed: the process's first solve of a size pays for mapping fresh memory,
-     which later ones reuse. Then the two alternate, in turn first (first is not last). */
-  solve(&sc, 1, &t[0]);
-  for (int k = 0; k < repeat; ++k)
-    for (int turn = 0; turn < 2; ++turn) {
-      const int mode = (turn + k) % 2;
-      solve(&sc, mode == 0 ? 1 : threads, &t[mode]);
-      if (!t[mode].ok) return 1;
-      first[mode][k] = t[mode].first, resolve[mode][k] = t[mode].resolve;
-      if (turn == 1)
-        identical = identical && memcmp(t[0].u, t[1].u, sizeof(double) * 2 * (size_t)(sc.s.body[0].n_nodes + sc.s.body[1].n_nodes)) == 0;
+  const size_t n_u = 2 * (size_t)(sc.s.body[0].n_nodes + sc.s.body[1].n_nodes);
+  if (same_process) {
+    /* A first solve, not timed: the process's first solve of a size pays for mapping fresh
+       memory, which later ones reuse. Then the two alternate, in turn first. */
+    solve(&sc, 1, &t[0]);
+    for (int k = 0; k < repeat; ++k)
+      for (int turn = 0; turn < 2; ++turn) {
+        const int mode = (turn + k) % 2;
+        solve(&sc, mode == 0 ? 1 : threads, &t[mode]);
+        if (!t[mode].ok) return 1;
+        first[mode][k] = t[mode].first, resolve[mode][k] = t[mode].resolve;
+        if (turn == 1) identical = identical && memcmp(t[0].u, t[1].u, sizeof(double) * n_u) == 0;
+      }
+  } else {
+    /* Each measurement in a process of its own, serial and automatic alternating (in turn
+       first): an untimed solve (the first solve of a process maps fresh memory), then the timed
+       solve and re-solve. So neither mode inherits the other's heap or OpenBLAS's worker threads
+       still spinning after a call (docs/benchmarks.md, "Threads"). */
+    shared_result *shared = mmap(NULL, 2 * sizeof(shared_result) + 2 * n_u * sizeof(double), PROT_READ | PROT_WRITE,
+                                 MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+    if (shared == MAP_FAILED) return 1;
+    double *u_shared = (double *)(shared + 2);
+    for (int k = 0; k < repeat; ++k) {
+      for (int turn = 0; turn < 2; ++turn) {
+        const int mode = (turn + k) % 2;
+        if (!solve_in_child(&sc, mode == 0 ? 1 : threads, &shared[mode], u_shared + mode * n_u, n_u)) return 1;
+        first[mode][k] = shared[mode].first, resolve[mode][k] = shared[mode].resolve;
+        t[mode].dofs = shared[mode].dofs;
+      }
+      identical = identical && memcmp(u_shared, u_shared + n_u, sizeof(double) * n_u) == 0;
     }
+    munmap(shared, 2 * sizeof(shared_result) + 2 * n_u * sizeof(double));
+  }
+  /* every measurement on stderr, in the order taken, for the spread */
+  fprintf(stderr, "%s samples (serial / auto, first solve; re-solve):", spec);
+  for (int k = 0; k < repeat; ++k) fprintf(stderr, " %.3f/%.3f", first[0][k], first[1][k]);
+  fprintf(stderr, ";");
+  for (int k = 0; k < repeat; ++k) fprintf(stderr, " %.4f/%.4f", resolve[0][k], resolve[1][k]);
+  fprintf(stderr, "\n");
   double f1 = bench_median(first[0], repeat), fa = bench_median(first[1], repeat);
   double r1 = bench_median(resolve[0], repeat), ra = bench_median(resolve[1], repeat);
   printf("| %s | %ld | %d + %d | %d | %.3f | %.3f | %.2f | %.4f | %.4f | %.2f | %s |\n", strncmp(spec, "equal", 5) ? "hertz" : "equal",
@@ -201,6 +274,8 @@ int main(int argc, char **argv) {
   while (first + 1 < argc && argv[first][0] == '-') {
     if (strcmp(argv[first], "--repeat") == 0) repeat = atoi(argv[first + 1]);
     else if (strcmp(argv[first], "--threads") == 0) threads = atoi(argv[first + 1]);
+    else if (strcmp(argv[first], "--phases") == 0) show_phases = atoi(argv[first + 1]);
+    else if (strcmp(argv[first], "--same-process") == 0) same_process = atoi(argv[first + 1]);
     else break;
     first += 2;
   }

@@ -109,9 +109,10 @@ enum {
    n >= 2 at most n: two when both bodies have a mesh (a third would have nothing to do).
    Threads the library starts: with two, mc_solve starts one std::thread at a time (named
    "mc-body2") for body 2's share of a phase while the calling thread does body 1's, and joins
-   it before that phase ends. The phases: assembly (with the rigid modes); ordering,
-   factorization and the body's block of the interface operator; the load solves; the recovery
-   (displacements, reactions, stresses). A re-solve runs only the last two. No thread outlives
+   it before that phase ends. The phases: first, everything a body needs before the interface
+   problem (assembly with the rigid modes, ordering, factorization, the body's block of the
+   interface operator, its load solve); then the recovery (displacements, reactions, stresses).
+   A re-solve runs two: the load solves, and the recovery. No thread outlives
    mc_solve, no other call starts one, and if none can be started the solve runs serially. The
    log callback is still called only from the calling thread, with the messages in the serial
    order; an error on body 2's thread is returned as usual (body 1's first, as serially).

@@ -43,6 +43,7 @@ private:
   static uint64_t edge_key(int a, int b);
   void check_cell_shapes(int base);
   void derive_boundary(int base);
+  void fail_on_duplicate_cell(int base) const;
 
   int n_nodes_ = 0, n_cells_ = 0, nodes_per_cell_ = 0;
   std::vector<double> xy_;

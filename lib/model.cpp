@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <pthread.h>
 #include <sched.h>
 #include <system_error>
@@ -262,11 +263,13 @@ void Model::interface_block(int b, std::vector<double> &s_b, BodyWork &work) {
   cs.w[b] = std::move(w), cs.w_rows[b] = ng;
 }
 
-void Model::build_structure() {
+// The contact geometry, then everything one body needs up to the interface problem in one
+// phase per body: stiffness, ordering, factorization, its block of S and, through `then`, its
+// load solve. One phase, not one per step, so that a body finishing a step early goes on with
+// its next one instead of waiting for the other body (docs/benchmarks.md, "Threads").
+void Model::build_structure(const std::function<void(int, BodyWork &)> &then) {
   contact_.reset();
   for (auto &sys : system_) sys.reset();
-  for_each_body([&](int b, BodyWork &work) { system_[b] = assemble_body(b, work); });
-
   if (contact_active()) {
     Stopwatch watch(infos.t_contact);
     const double t_geometry = now();
@@ -305,11 +308,14 @@ void Model::build_structure() {
   std::vector<double> s_b[2];
   double t_operator[2] = {0, 0};
   for_each_body([&](int b, BodyWork &work) {
+    system_[b] = assemble_body(b, work);
     factorize_body(b, work);
-    if (!contact_ || !system_[b]) return;
-    const double start = now();
-    interface_block(b, s_b[b], work);
-    t_operator[b] = now() - start;
+    if (contact_ && system_[b]) {
+      const double start = now();
+      interface_block(b, s_b[b], work);
+      t_operator[b] = now() - start;
+    }
+    then(b, work);
   });
   if (contact_) {
     Stopwatch watch(infos.t_contact);
@@ -345,6 +351,44 @@ double Model::row_initial_gap(int r) const {
   return g;
 }
 
+// One body's loads with the prescribed displacements lifted, f_eff = f - K u_prescribed, and
+// their first solve.
+void Model::solve_loads(int b, BodyWork &work, LoadSolve &out) const {
+  if (!system_[b]) return;
+  const double start = now();
+  BodySystem &sys = *system_[b];
+  {
+    Stopwatch watch(work.infos.t_assembly);
+    out.f = load_vector(b);
+    std::vector<double> up(sys.stiffness.n, 0.0), kup(sys.stiffness.n, 0.0);
+    bool any_prescribed_motion = false;  // supports at rest (the usual case) lift nothing
+    for (int i = 0; i < sys.stiffness.n; ++i)
+      if (fixed_[b][i] && fixed_value_[b][i] != 0) up[i] = fixed_value_[b][i], any_prescribed_motion = true;
+    if (any_prescribed_motion) sys.stiffness.multiply(up.data(), kup.data());
+    out.lifted.resize(sys.stiffness.n);
+    for (int i = 0; i < sys.stiffness.n; ++i) out.lifted[i] = fixed_[b][i] ? 0 : out.f[i] - kup[i];
+  }
+  // Without contact v = K^+ f_eff; with contact only its first half y = L^-1 P f_eff, which
+  // is all the interface problem needs (B v = W^T y_G); the recovery finishes the solve.
+  std::vector<double> x(sys.solve_dofs.size());
+  for (size_t k = 0; k < x.size(); ++k) x[k] = out.lifted[sys.solve_dofs[k]];
+  {
+    Stopwatch watch(work.infos.t_solve);
+    if (contact_) {
+      out.y.resize(x.size());
+      sys.cholesky.forward(x.data(), out.y.data());
+    } else {
+      sys.cholesky.solve(x.data());
+    }
+  }
+  out.v.assign(sys.stiffness.n, 0.0);
+  if (!contact_)
+    for (size_t k = 0; k < x.size(); ++k) out.v[sys.solve_dofs[k]] = x[k];
+  work.infos.dofs += long(sys.solve_dofs.size() + sys.rigid.pinned_dofs.size());
+  work.infos.factor_nnz += sys.cholesky.factor_nnz();
+  out.seconds = now() - start;
+}
+
 void Model::solve() {
   const double start = now();
   infos = Infos{};
@@ -364,50 +408,18 @@ void Model::solve() {
            rebuild ? "assembling and factorizing" : "reusing the factorizations and the interface operator",
            threads_ > 1 ? " (the two bodies at once, on 2 threads)" : "");
   effective_supports();
+  // Each body's loads and their first solve: in the phase that factorizes it when the structure
+  // is rebuilt, on their own otherwise.
+  LoadSolve loads[2];
+  auto load_step = [&](int b, BodyWork &work) { solve_loads(b, work, loads[b]); };
   if (rebuild) {
     built_version_ = 0;
-    build_structure();
+    build_structure(load_step);
+  } else {
+    for_each_body(load_step);
   }
-
-  // Loads with the prescribed displacements lifted: f_eff = f - K u_prescribed.
-  const double t_loads = now();
-  std::vector<double> f[2], lifted[2], v[2], y[2];
-  for_each_body([&](int b, BodyWork &work) {
-    if (!system_[b]) return;
-    BodySystem &sys = *system_[b];
-    {
-      Stopwatch watch(work.infos.t_assembly);
-      f[b] = load_vector(b);
-      std::vector<double> up(sys.stiffness.n, 0.0), kup(sys.stiffness.n, 0.0);
-      bool any_prescribed_motion = false;  // supports at rest (the usual case) lift nothing
-      for (int i = 0; i < sys.stiffness.n; ++i)
-        if (fixed_[b][i] && fixed_value_[b][i] != 0) up[i] = fixed_value_[b][i], any_prescribed_motion = true;
-      if (any_prescribed_motion) sys.stiffness.multiply(up.data(), kup.data());
-      lifted[b].resize(sys.stiffness.n);
-      for (int i = 0; i < sys.stiffness.n; ++i) lifted[b][i] = fixed_[b][i] ? 0 : f[b][i] - kup[i];
-    }
-    // Without contact v = K^+ f_eff; with contact only its first half y = L^-1 P f_eff, which
-    // is all the interface problem needs (B v = W^T y_G); the recovery finishes the solve.
-    std::vector<double> x(sys.solve_dofs.size());
-    for (size_t k = 0; k < x.size(); ++k) x[k] = lifted[b][sys.solve_dofs[k]];
-    {
-      Stopwatch watch(work.infos.t_solve);
-      if (contact_) {
-        y[b].resize(x.size());
-        sys.cholesky.forward(x.data(), y[b].data());
-      } else {
-        sys.cholesky.solve(x.data());
-      }
-    }
-    v[b].assign(sys.stiffness.n, 0.0);
-    if (!contact_)
-      for (size_t k = 0; k < x.size(); ++k) v[b][sys.solve_dofs[k]] = x[k];
-    work.infos.dofs += long(sys.solve_dofs.size() + sys.rigid.pinned_dofs.size());
-    work.infos.factor_nnz += sys.cholesky.factor_nnz();
-  });
   progress(MC_LOG_PHASE, "loads: load vectors and %s, %.3g s", contact_ ? "forward solves y = L^-1 P f" : "solves v = K^-1 f",
-           now() - t_loads);
-
+           loads[0].seconds + loads[1].seconds);
   std::vector<double> lambda;
   std::vector<double> alpha;
   if (contact_) {
@@ -426,7 +438,7 @@ void Model::solve() {
         if (ng == 0 || q == 0) continue;
         int one = 1;
         double plus = 1.0;
-        const double *y_interface = y[b].data() + system_[b]->cholesky.interface_start();
+        const double *y_interface = loads[b].y.data() + system_[b]->cholesky.interface_start();
         dgemv_("T", &ng, &q, &plus, cs.w[b].data(), &ng, y_interface, &one, &plus, bv.data(), &one);
       }
       qp.d.assign(q, 0.0);
@@ -450,7 +462,7 @@ void Model::solve() {
             qp.g.push_back(s);
           }
           double e = 0;
-          for (int i = 0; i < ndof; ++i) e += mode[i] * lifted[b][i];
+          for (int i = 0; i < ndof; ++i) e += mode[i] * loads[b].lifted[i];
           qp.e.push_back(e);
           qp.k++;
         }
@@ -523,7 +535,7 @@ void Model::solve() {
         for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
           contact_force[contact_->b_dof[b][p]] -= contact_->b_value[b][p] * lambda[r];
       // u = K^+ (f_eff - B^T lambda) = P^T L^-T (y - [0; W lambda]): the backward half only.
-      std::vector<double> x(sys.solve_dofs.size()), z(y[b]);
+      std::vector<double> x(sys.solve_dofs.size()), z(loads[b].y);
       const int ng = contact_->w_rows[b], q = contact_->rows.size();
       if (ng > 0 && q > 0) {
         int one = 1;
@@ -535,8 +547,8 @@ void Model::solve() {
         Stopwatch watch(work.infos.t_solve);
         sys.cholesky.backward(z.data(), x.data());
       }
-      std::fill(v[b].begin(), v[b].end(), 0.0);
-      for (size_t k = 0; k < x.size(); ++k) v[b][sys.solve_dofs[k]] = x[k];
+      std::fill(loads[b].v.begin(), loads[b].v.end(), 0.0);
+      for (size_t k = 0; k < x.size(); ++k) loads[b].v[sys.solve_dofs[k]] = x[k];
       for (int c = 0; c < sys.rigid.count; ++c)
         for (int i = 0; i < ndof; ++i) rigid_motion[i] += alpha[mode_offset[b] + c] * sys.rigid.modes[size_t(c) * ndof + i];
     }
@@ -545,7 +557,7 @@ void Model::solve() {
     // applied to u without R alpha: a floating body that travels far compared with its
     // deformation (a large initial gap) would otherwise leave round-off eps |K| |R alpha| in all
     // three. (The rigid modes vanish at prescribed components.)
-    std::vector<double> elastic(v[b]);
+    std::vector<double> elastic(loads[b].v);
     for (int i = 0; i < ndof; ++i) if (fixed_[b][i]) elastic[i] = fixed_value_[b][i];
     body_.u = elastic;
     for (int i = 0; i < ndof; ++i) body_.u[i] += rigid_motion[i];
@@ -553,12 +565,12 @@ void Model::solve() {
     sys.stiffness.multiply(elastic.data(), ku.data());
     body_.reaction.assign(ndof, 0.0);
     for (int i = 0; i < ndof; ++i) {
-      double r = ku[i] - f[b][i] - contact_force[i];
+      double r = ku[i] - loads[b].f[i] - contact_force[i];
       if (fixed_[b][i]) body_.reaction[i] = r;
       // Relative to the load of the reduced problem, f - K u_prescribed: a body moved only by
       // prescribed displacements has f = 0, and its residual is then measured against the forces
       // those displacements cause, not in absolute units.
-      else residual_norm2[b] += r * r, f_norm2[b] += lifted[b][i] * lifted[b][i] + contact_force[i] * contact_force[i];
+      else residual_norm2[b] += r * r, f_norm2[b] += loads[b].lifted[i] * loads[b].lifted[i] + contact_force[i] * contact_force[i];
     }
     energy[b] = 0.5 * dot(elastic, ku);
     // Cell-averaged stresses.

@@ -10,6 +10,7 @@
 #include "progress_log.hpp"
 #include "rigid_modes.hpp"
 #include "sparse_cholesky.hpp"
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -109,6 +110,13 @@ struct BodyWork {
   std::vector<std::pair<mc_log_level, std::string>> lines;
 };
 
+// One body's loads and their first solve: f, f_eff = f - K u_prescribed (0 at prescribed
+// components), and either v = K^-1 f_eff (no contact) or y = L^-1 P f_eff (contact).
+struct LoadSolve {
+  std::vector<double> f, lifted, v, y;
+  double seconds = 0;
+};
+
 class Model {
 public:
   Body body[2];
@@ -145,7 +153,8 @@ private:
   std::unique_ptr<BodySystem> assemble_body(int b, BodyWork &work) const;
   void factorize_body(int b, BodyWork &work);
   void interface_block(int b, std::vector<double> &s_b, BodyWork &work);
-  void build_structure();
+  void build_structure(const std::function<void(int, BodyWork &)> &then);
+  void solve_loads(int b, BodyWork &work, LoadSolve &out) const;
   std::vector<double> load_vector(int b) const;
   void effective_supports();
   // The supports a solve uses: the host's (mc_fix) and, in an axisymmetric model, u_r = 0 at

@@ -190,6 +190,16 @@ START_TEST(test_mesh_errors) {
     try_mesh(&b, 5, xy, 3, 3, tri, MC_ERROR_MESH, NULL);
   }
   {
+    /* two faults: the edge 2-3 in a third cell (cell 3) and cells 0 and 4 overlapping along
+       0-1 (an edge of lower nodes, met later in cell order); then the overlap first. The first
+       wrong edge in cell order is the one reported. */
+    double xy[12] = {0, 0, 1, 0, 1, 1, 0, 1, 0.5, 2, 0.5, -1};
+    mc_int triple_first[15] = {0, 1, 2, 0, 2, 3, 3, 2, 4, 2, 3, 5, 0, 1, 4};
+    try_mesh(&b, 6, xy, 5, 3, triple_first, MC_ERROR_MESH, "edge 2-3 of cell 3 is shared by more than two cells");
+    mc_int overlap_first[15] = {0, 1, 2, 0, 2, 3, 0, 1, 4, 3, 2, 4, 2, 3, 5};
+    try_mesh(&b, 6, xy, 5, 3, overlap_first, MC_ERROR_MESH, "cells 0 and 2 overlap along edge 0-1");
+  }
+  {
     /* all nodes at one point */
     double xy[6] = {1, 1, 1, 1, 1, 1};
     mc_int tri[3] = {0, 1, 2};
