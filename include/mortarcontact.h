@@ -118,9 +118,10 @@ enum {
    order; an error on body 2's thread is returned as usual (body 1's first, as serially).
    BLAS: while both bodies run, each one's BLAS calls use its share of the cores. With
    OpenBLAS's pthread build (Debian's default) the thread count is process-wide and threaded
-   calls take turns on one lock, so mc_solve lowers the count to 1 for those phases and puts the previous count back after each (unless it was changed
+   calls take turns on one lock, so an mc_solve that uses two threads lowers the count to 1 from
+   its start to its end and puts the previous count back before returning (unless it was changed
    meanwhile, e.g. by another model's solve: that value then stands); a host thread calling
-   BLAS during those phases also gets one thread. With the OpenMP build each body thread sets
+   BLAS during such a solve also gets one thread. With the OpenMP build each body thread sets
    only its own OpenMP thread count to half the cores (the calling thread's is put back). CHOLMOD's OpenMP team
    stays at one thread as always. Results: bit for bit those of the serial solve when OpenBLAS
    runs one thread per call anyway (OPENBLAS_NUM_THREADS=1; tested); otherwise they differ by

@@ -3,15 +3,17 @@
 // loaded is chosen by the system's alternatives (or LD_LIBRARY_PATH), not at build time:
 // - pthread build (the default): one process-wide thread count, and one process-wide lock that
 //   a threaded level-3 call holds. Two threads calling it at once with a pool of two ran 1.7 to
-//   3 times slower than one after the other, so while both bodies run the count is lowered to
-//   one (a body asking for more would only wait on the other's calls), and put back after;
+//   3 times slower than one after the other, so during a solve that runs both bodies at once
+//   the count is lowered to one (a body asking for more would only wait on the other's calls;
+//   and between the phases a call would wake a worker that spins on into the next phase), and
+//   put back after;
 // - OpenMP build: each call sizes its team by the calling thread's OpenMP nthreads-var, a
 //   per-thread setting: each body thread sets its own, and the calling thread's is put back.
 #pragma once
 
 namespace mc {
 
-// A scope on the calling thread around a phase that runs both bodies at once: with the pthread
+// A scope on the calling thread around a solve that runs both bodies at once: with the pthread
 // build, OpenBLAS's process-wide thread count is at most per_body inside it. It is put back on
 // leaving only if it is still the value set here (another model's solve or the host may have
 // set it meanwhile: theirs then stands). per_body = 0: nothing is changed.

@@ -88,10 +88,9 @@ template <class Task> void Model::for_each_body(Task &&task) {
   BodyWork work[2];
   std::exception_ptr error[2];
   // With two body threads, each one's BLAS calls get its share of the cores (blas_threads.hpp):
-  // one thread with OpenBLAS's pthread build, whose threaded level-3 calls wait on one process-
-  // wide lock (two bodies asking for more would take turns); half the cores with the OpenMP build.
+  // one thread with OpenBLAS's pthread build (the count solve() lowered for the whole solve),
+  // half the cores with the OpenMP build (each body thread's own setting, here).
   const bool parallel = threads_ > 1;
-  BlasPoolShare pool_share(parallel ? 1 : 0);
   const int blas_per_body = parallel ? std::max(1, available_cores() / 2) : 0;
   auto run = [&](int b) {
     try {
@@ -408,6 +407,13 @@ void Model::solve() {
            rebuild ? "assembling and factorizing" : "reusing the factorizations and the interface operator",
            threads_ > 1 ? " (the two bodies at once, on 2 threads)" : "");
   effective_supports();
+  // With two body threads, OpenBLAS's pthread build runs one thread per call for the whole
+  // solve, not only while both bodies run: its threaded level-3 calls take turns on one
+  // process-wide lock (two bodies asking for more would wait on each other), and a call between
+  // the phases (the active-set solve's) would wake its worker, which then spins for a while
+  // after the call, into the next phase, on a core a body thread needs (measured: the re-solve's
+  // recovery at 5*10^5 DOFs took 0.06 or 0.10 s, depending on it; docs/benchmarks.md, "Threads").
+  BlasPoolShare pool_share(threads_ > 1 ? 1 : 0);
   // Each body's loads and their first solve: in the phase that factorizes it when the structure
   // is rebuilt, on their own otherwise.
   LoadSolve loads[2];

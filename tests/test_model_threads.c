@@ -36,6 +36,7 @@
 #include <unistd.h>
 
 int openblas_get_num_threads(void); /* OpenBLAS, which the library links (test blas_is_openblas) */
+int openblas_get_parallel(void);    /* 0 sequential, 1 pthread build, 2 OpenMP build */
 
 /* ---- threads of this process -------------------------------------------- */
 
@@ -292,6 +293,58 @@ START_TEST(threads_are_those_the_header_promises) {
 }
 END_TEST
 
+/* OpenBLAS's process-wide count, as the log callback (on the calling thread) sees it during a
+   solve: the start message, then every later one. */
+typedef struct blas_seen {
+  int at_start, least_after, most_after, messages;
+} blas_seen;
+
+static void note_blas_count(void *user, mc_log_level level, const char *message) {
+  (void)level;
+  blas_seen *seen = user;
+  const int n = openblas_get_num_threads();
+  if (strstr(message, "solve: start")) {
+    seen->at_start = n;
+    return;
+  }
+  seen->least_after = seen->messages ? (n < seen->least_after ? n : seen->least_after) : n;
+  seen->most_after = seen->messages ? (n > seen->most_after ? n : seen->most_after) : n;
+  seen->messages++;
+}
+
+START_TEST(blas_count_is_one_through_a_two_thread_solve) {
+  /* The header: an mc_solve on two threads runs OpenBLAS's pthread build at one thread per call
+     from its start to its end (the active-set solve between the body phases included), and puts
+     the host's count back before it returns; on one thread it never touches the count. */
+  const int host = openblas_get_num_threads(), pthread_build = openblas_get_parallel() == 1;
+  for (int threads = 1; threads <= 2; ++threads)
+    for (int resolve = 0; resolve <= 1; ++resolve) {
+      hertz_scene scene;
+      ck_assert_int_eq(hertz_scene_build(&scene, 0.012, 1.37 * 0.012, 0), 0);
+      mc_model *m = hertz_model(&scene, MC_METHOD_MORTAR, threads);
+      blas_seen seen = {0, 0, 0, 0};
+      if (resolve) OK(mc_solve(m)); /* then the re-solve is the one watched */
+      OK(mc_set_log_callback(m, note_blas_count, &seen));
+      if (resolve) {
+        const mc_int node = 0;
+        const double force[2] = {0.0, -1e-4};
+        OK(mc_add_nodal_force(m, 1, 1, &node, force));
+      }
+      OK(mc_solve(m));
+      mc_destroy(m);
+      hertz_scene_free(&scene);
+      const int inside = threads == 2 && pthread_build ? 1 : host;
+      printf("MC_OPTION_THREADS %d, %s: OpenBLAS count %d at the start, %d to %d after (host %d)\n", threads,
+             resolve ? "re-solve" : "first solve", seen.at_start, seen.least_after, seen.most_after, host);
+      ck_assert_int_ge(seen.messages, resolve ? 4 : 10);
+      ck_assert_int_eq(seen.at_start, host);
+      ck_assert_int_eq(seen.least_after, inside);
+      ck_assert_int_eq(seen.most_after, inside);
+      ck_assert_int_eq(openblas_get_num_threads(), host);
+    }
+}
+END_TEST
+
 START_TEST(threads_stay_within_the_cores) {
   /* One model in this thread, then two models in two host threads, each solving its bodies on
      two threads. Allowed: the threads running now (this one, OpenBLAS's workers if already
@@ -431,6 +484,7 @@ int main(void) {
   tcase_add_test(tc, two_host_threads_match_serial);
   tcase_add_test(tc, threads_are_those_the_header_promises);
   tcase_add_test(tc, threads_stay_within_the_cores);
+  tcase_add_test(tc, blas_count_is_one_through_a_two_thread_solve);
   tcase_add_test(tc, errors_on_body_threads_reach_the_caller);
   tcase_add_test(tc, log_comes_from_the_calling_thread_in_serial_order);
   tcase_add_test(tc, option_threads_is_checked);
