@@ -18,7 +18,7 @@
  * untimed serial solve, then the two modes alternating in that process.
  *
  * usage: threads_bench [--repeat n] [--threads n] [--phases 1] [--same-process 1] equal:N | hertz:h1 ...
- *        (default: the sizes of docs/benchmarks.md, 10^4 to 2*10^6 DOFs, 3 repeats;
+ *        (default: the sizes of docs/benchmarks.md, 10^4 to 2*10^6 DOFs, 5 repeats;
  *         --threads: the value compared with serial, default 0 = automatic;
  *         --phases 1: every solve's phase messages on stderr, timed from mc_create)
  */
@@ -270,7 +270,7 @@ int main(int argc, char **argv) {
   static const char *defaults[] = {"equal:50",    "equal:87",     "equal:158",   "equal:224",  "equal:354",
                                    "equal:500",   "equal:707",    "hertz:0.012", "hertz:0.006", "hertz:0.004",
                                    "hertz:0.0025", "hertz:0.0017", "hertz:0.00107", "hertz:0.0008"};
-  int repeat = 3, threads = 0, first = 1;
+  int repeat = 5, threads = 0, first = 1;
   while (first + 1 < argc && argv[first][0] == '-') {
     if (strcmp(argv[first], "--repeat") == 0) repeat = atoi(argv[first + 1]);
     else if (strcmp(argv[first], "--threads") == 0) threads = atoi(argv[first + 1]);
@@ -279,7 +279,7 @@ int main(int argc, char **argv) {
     else break;
     first += 2;
   }
-  if (repeat < 1 || repeat > MAX_REPEAT) repeat = 3;
+  if (repeat < 1 || repeat > MAX_REPEAT) repeat = 5;
   int count = argc > first ? argc - first : (int)(sizeof defaults / sizeof *defaults);
   printf("| scene | DOFs | unknowns per body | threads (auto) | serial s | auto s | auto/serial | re-solve serial s | re-solve auto s | auto/serial | same u bit for bit |\n");
   printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
