@@ -20,7 +20,9 @@
  * usage: threads_bench [--repeat n] [--threads n] [--phases 1] [--same-process 1] equal:N | hertz:h1 ...
  *        (default: the sizes of docs/benchmarks.md, 10^4 to 2*10^6 DOFs, 5 repeats;
  *         --threads: the value compared with serial, default 0 = automatic;
- *         --phases 1: every solve's phase messages on stderr, timed from mc_create)
+ *         --phases 1: every solve's phase messages on stderr, timed from mc_create;
+ *         --only t: no comparison, `repeat` solves with MC_OPTION_THREADS = t in one process,
+ *         each time on stderr: for profiling with perf)
  */
 #define _POSIX_C_SOURCE 200809L
 #define _DEFAULT_SOURCE /* MAP_ANONYMOUS */
@@ -202,6 +204,7 @@ static int solve_in_child(const scene *sc, int threads, shared_result *out, doub
 }
 
 static int same_process; /* --same-process 1: both modes in one process, as in runs 1 to 4 */
+static int only = -1;     /* --only t: `repeat` solves with MC_OPTION_THREADS = t in this process (for perf) */
 
 static int run(const char *spec, int repeat, int threads) {
   scene sc;
@@ -215,6 +218,16 @@ static int run(const char *spec, int repeat, int threads) {
   }
   double first[2][MAX_REPEAT], resolve[2][MAX_REPEAT];
   timing t[2] = {{0}, {0}};
+  if (only >= 0) {
+    for (int k = 0; k < repeat; ++k) {
+      solve(&sc, only, &t[0]);
+      if (!t[0].ok) return 1;
+      fprintf(stderr, "%s threads %d: first solve %.3f s, re-solve %.4f s\n", spec, only, t[0].first, t[0].resolve);
+    }
+    free(t[0].u);
+    hertz_scene_free(&sc.s);
+    return 0;
+  }
   int identical = 1;
   const size_t n_u = 2 * (size_t)(sc.s.body[0].n_nodes + sc.s.body[1].n_nodes);
   if (same_process) {
@@ -276,6 +289,7 @@ int main(int argc, char **argv) {
     else if (strcmp(argv[first], "--threads") == 0) threads = atoi(argv[first + 1]);
     else if (strcmp(argv[first], "--phases") == 0) show_phases = atoi(argv[first + 1]);
     else if (strcmp(argv[first], "--same-process") == 0) same_process = atoi(argv[first + 1]);
+    else if (strcmp(argv[first], "--only") == 0) only = atoi(argv[first + 1]);
     else break;
     first += 2;
   }

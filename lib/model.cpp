@@ -403,17 +403,18 @@ void Model::solve() {
   const bool rebuild = built_version_ != structure_version_;
   threads_ = body_threads();
   infos.threads = threads_;
+  // With two body threads, OpenBLAS's pthread build runs one thread per call for the whole
+  // solve (from before its first log message), not only while both bodies run: its threaded
+  // level-3 calls take turns on one process-wide lock (two bodies asking for more would wait
+  // on each other), and a call between the phases (the active-set solve's) would wake its
+  // worker, which then spins for a while after the call, into the next phase, on a core a body
+  // thread needs (measured: the re-solve's recovery at 5*10^5 DOFs took 0.06 or 0.10 s,
+  // depending on it; docs/benchmarks.md, "Threads").
+  BlasPoolShare pool_share(threads_ > 1 ? 1 : 0);
   progress(MC_LOG_PHASE, "solve: start, %s%s",
            rebuild ? "assembling and factorizing" : "reusing the factorizations and the interface operator",
            threads_ > 1 ? " (the two bodies at once, on 2 threads)" : "");
   effective_supports();
-  // With two body threads, OpenBLAS's pthread build runs one thread per call for the whole
-  // solve, not only while both bodies run: its threaded level-3 calls take turns on one
-  // process-wide lock (two bodies asking for more would wait on each other), and a call between
-  // the phases (the active-set solve's) would wake its worker, which then spins for a while
-  // after the call, into the next phase, on a core a body thread needs (measured: the re-solve's
-  // recovery at 5*10^5 DOFs took 0.06 or 0.10 s, depending on it; docs/benchmarks.md, "Threads").
-  BlasPoolShare pool_share(threads_ > 1 ? 1 : 0);
   // Each body's loads and their first solve: in the phase that factorizes it when the structure
   // is rebuilt, on their own otherwise.
   LoadSolve loads[2];
