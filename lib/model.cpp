@@ -166,11 +166,6 @@ std::unique_ptr<BodySystem> Model::assemble_body(int b, BodyWork &work) const {
   const double t_assembly = now();
   {
     Stopwatch watch(work.infos.t_assembly);
-    if (axisymmetric && !body_.cell_elasticity.empty())
-      fail(MC_ERROR_MATERIAL,
-           "body %d: mc_set_cell_elasticity gives the in-plane law only, and an axisymmetric model also needs "
-           "its hoop terms: use mc_set_material, or a plane model",
-           b + 1);
     if (!body_.cell_elasticity.empty()) {
       for (int c = 0; c < body_.mesh.n_cells(); ++c) sys->laws.push_back(general_plane_law(&body_.cell_elasticity[9 * size_t(c)]));
     } else {
@@ -396,6 +391,13 @@ void Model::solve() {
   for (int b = 0; b < 2; ++b) {
     if (body[b].has_mesh && !body[b].has_material)
       fail(MC_ERROR_STATE, "body %d has no material: call mc_set_material or mc_set_cell_elasticity", b + 1);
+    // Checked here, before any work, so that this error comes first whatever else is wrong
+    // (the contact geometry is built before the bodies are assembled).
+    if (body[b].has_mesh && axisymmetric && !body[b].cell_elasticity.empty())
+      fail(MC_ERROR_MATERIAL,
+           "body %d: mc_set_cell_elasticity gives the in-plane law only, and an axisymmetric model also needs "
+           "its hoop terms: use mc_set_material, or a plane model",
+           b + 1);
   }
   if (body[0].has_contact != body[1].has_contact)
     fail(MC_ERROR_STATE, "body %d has a contact surface but body %d has none: contact needs both (mc_set_contact)",

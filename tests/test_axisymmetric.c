@@ -354,6 +354,30 @@ START_TEST(test_axis_overrides_and_cell_law) {
 }
 END_TEST
 
+/* The in-plane law's error is found before any work: with contact surfaces that do not face
+   each other as well (body 1's top, looking away from body 2), the solve still names the law,
+   then the contact surfaces once the law is fixed; then it solves. */
+START_TEST(test_cell_law_error_comes_first) {
+  sc_mesh mesh[2];
+  mc_model *m = stack(0, MC_METHOD_MORTAR, 7, mesh);
+  double *d = malloc(sizeof(double) * 9 * mesh[1].n_cells);
+  for (mc_int c = 0; c < mesh[1].n_cells; ++c)
+    sc_isotropic_law(kE2, kNu2, MC_PLANE_STRAIN, d + 9 * c, NULL);
+  OK(mc_set_cell_elasticity(m, 2, d));
+  OK(mc_set_contact(m, 1, mesh[0].n_side_edges[SC_TOP], mesh[0].side_edges[SC_TOP]));
+  FAILS(mc_solve(m), MC_ERROR_MATERIAL, "body 2: mc_set_cell_elasticity");
+  OK(mc_set_material(m, 2, kE2, kNu2));
+  FAILS(mc_solve(m), MC_ERROR_CONTACT, "do not face each other");
+  OK(mc_set_contact(m, 1, mesh[0].n_side_edges[SC_BOTTOM], mesh[0].side_edges[SC_BOTTOM]));
+  OK(mc_solve(m));
+  ck_assert_msg(stack_error(m, mesh) < 1e-10 * kPressure, "displacement error %g", stack_error(m, mesh));
+  free(d);
+  mc_destroy(m);
+  sc_mesh_free(&mesh[0]);
+  sc_mesh_free(&mesh[1]);
+}
+END_TEST
+
 /* Edges on the axis are no surface of the 3D body: the weight 2 pi r vanishes on them. A
    pressure or a traction there adds nothing (the solution is bit for bit the same); as contact
    edges of body 1 they give their nodes no tributary measure: a node with only axis edges gets
@@ -523,6 +547,7 @@ static Suite *axisymmetric_suite(void) {
   tcase_add_loop_test(tc, test_rigid_motion, 0, 3);
   tcase_add_test(tc, test_negative_radius);
   tcase_add_test(tc, test_axis_overrides_and_cell_law);
+  tcase_add_test(tc, test_cell_law_error_comes_first);
   tcase_add_loop_test(tc, test_axis_edges, 0, 2);
   tcase_add_loop_test(tc, test_switch_plane, 0, 2);
   tcase_add_loop_test(tc, test_shrink_fit, 0, 3);
