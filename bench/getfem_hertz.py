@@ -55,6 +55,8 @@ import time
 
 import numpy as np
 
+from getfem_common import add_flat_integral_contact, elastic_bodies
+
 E, NU, P, RADIUS = 1.0, 0.3, 0.01, 1.0
 GROWTH, FINE_HALF_WIDTH, MAX_SCALED_CELLS = 1.15, 0.4, 8
 DELTA0 = 0.01  # initial rigid downward shift of body 1 (Newton start), not part of the answer
@@ -218,17 +220,7 @@ def solve(gf, sc, formulation, h1, args):
     t_mesh = time.perf_counter() - t0
 
     t0 = time.perf_counter()
-    mfu1, mfu2 = gf.MeshFem(m1, 2), gf.MeshFem(m2, 2)
-    mfu1.set_classical_fem(1)
-    mfu2.set_classical_fem(1)
-    mim1, mim2 = gf.MeshIm(m1, gf.Integ("IM_TRIANGLE(2)")), gf.MeshIm(m2, gf.Integ("IM_TRIANGLE(2)"))
-    md = gf.Model("real")
-    md.add_fem_variable("u1", mfu1)
-    md.add_fem_variable("u2", mfu2)
-    md.add_initialized_data("E", [E])
-    md.add_initialized_data("nu", [NU])
-    md.add_isotropic_linearized_elasticity_pstrain_brick(mim1, "u1", "E", "nu")
-    md.add_isotropic_linearized_elasticity_pstrain_brick(mim2, "u2", "E", "nu")
+    md, (mfu1, mfu2), (mim1, mim2) = elastic_bodies(gf, m1, m2, E, NU)
     md.add_source_term(mim1, "[0;%.17g].Test_u1" % (-P / 2.0), TOP)
     md.add_Dirichlet_condition_with_simplification("u2", BOTTOM)
     axis = sc["axis1"]
@@ -259,19 +251,9 @@ def solve(gf, sc, formulation, h1, args):
             md.add_nodal_contact_between_nonmatching_meshes_brick(
                 mim1, mim2, "u1", "u2", "lam_n", "r", CONTACT, CONTACT, 1, 0, 1)
     else:
-        mfl = gf.MeshFem(m1, 1)
-        mfl.set_classical_fem(1)
-        md.add_filtered_fem_variable("lam", mfl, CONTACT)
-        # the contact integrals see kinks (pos_part) and non-matching P1 traces: use a rule
-        # well beyond the polynomial degree so that quadrature is not the limiting error
-        mimc = gf.MeshIm(m1, gf.Integ("IM_TRIANGLE(13)"))
-        md.add_interpolate_transformation_from_expression("Pi", m1, m2, "[X(1);0]")
         # pointwise the Alart-Curnier equation has the same roots for every r > 0; tested in
         # its weak (integral) form against P1 mu it does not exactly, hence --gwfl-r-scale
-        md.add_initialized_data("r", [args.gwfl_r_scale * E / h1])
-        md.add_macro("gap", "X(2) + u1(2) - Interpolate(u2,Pi)(2)")
-        md.add_nonlinear_term(mimc, "-lam*(Test_u1(2) - Interpolate(Test_u2,Pi)(2))", CONTACT)
-        md.add_nonlinear_term(mimc, "(1/r)*(lam - pos_part(lam - r*gap))*Test_lam", CONTACT)
+        mfl, mimc = add_flat_integral_contact(gf, md, m1, m2, CONTACT, args.gwfl_r_scale * E / h1)
     # Newton start: body 1 shifted rigidly down so that it overlaps body 2 near x = 0
     u1 = np.zeros(mfu1.nbdof())
     u1[1::2] = -DELTA0

@@ -22,6 +22,7 @@ import time
 import numpy as np
 
 import getfem as gf
+from getfem_common import add_flat_integral_contact, elastic_bodies
 
 E, NU, PRESSURE, HEIGHT, SHIFT = 1.0, 0.3, 0.01, 0.4, 1e-3
 MAX_RES = 1e-12  # Newton's residual tolerance (--max-res)
@@ -51,17 +52,7 @@ def solve(nx):
     t0 = time.perf_counter()
     m1, m2 = strip(nx, length, 0.0), strip(int(round(1.37 * nx)), length, -HEIGHT)
     m1.set_region(CONTACT, m1.region(BOTTOM))
-    mfu1, mfu2 = gf.MeshFem(m1, 2), gf.MeshFem(m2, 2)
-    mfu1.set_classical_fem(1)
-    mfu2.set_classical_fem(1)
-    mim1, mim2 = gf.MeshIm(m1, gf.Integ("IM_TRIANGLE(2)")), gf.MeshIm(m2, gf.Integ("IM_TRIANGLE(2)"))
-    md = gf.Model("real")
-    md.add_fem_variable("u1", mfu1)
-    md.add_fem_variable("u2", mfu2)
-    md.add_initialized_data("E", [E])
-    md.add_initialized_data("nu", [NU])
-    md.add_isotropic_linearized_elasticity_pstrain_brick(mim1, "u1", "E", "nu")
-    md.add_isotropic_linearized_elasticity_pstrain_brick(mim2, "u2", "E", "nu")
+    md, (mfu1, mfu2), (mim1, _) = elastic_bodies(gf, m1, m2, E, NU)
     md.add_source_term(mim1, "[0;%.17g].Test_u1" % -PRESSURE, TOP)
     # body 2: u_y = 0 on its bottom; both bodies: u_x = 0 at the left bottom corner (pointwise)
     bottom_pts = mfu2.basic_dof_nodes(np.sort(mfu2.basic_dof_on_region(BOTTOM))[::2])
@@ -73,15 +64,7 @@ def solve(nx):
         md.add_initialized_data(name + "_pt", pt)
         md.add_initialized_data(name + "_dir", [1.0, 0.0])
         md.add_pointwise_constraints_with_multipliers(var, name + "_pt", name + "_dir")
-    mfl = gf.MeshFem(m1, 1)
-    mfl.set_classical_fem(1)
-    md.add_filtered_fem_variable("lam", mfl, CONTACT)
-    mimc = gf.MeshIm(m1, gf.Integ("IM_TRIANGLE(13)"))
-    md.add_interpolate_transformation_from_expression("Pi", m1, m2, "[X(1);0]")
-    md.add_initialized_data("r", [E * nx / length])  # E / h
-    md.add_macro("gap", "X(2) + u1(2) - Interpolate(u2,Pi)(2)")
-    md.add_nonlinear_term(mimc, "-lam*(Test_u1(2) - Interpolate(Test_u2,Pi)(2))", CONTACT)
-    md.add_nonlinear_term(mimc, "(1/r)*(lam - pos_part(lam - r*gap))*Test_lam", CONTACT)
+    add_flat_integral_contact(gf, md, m1, m2, CONTACT, E * nx / length)  # r = E / h
     u1 = np.zeros(mfu1.nbdof())
     u1[1::2] = -SHIFT
     md.set_variable("u1", u1)
