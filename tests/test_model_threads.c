@@ -315,8 +315,8 @@ static void note_blas_count(void *user, mc_log_level level, const char *message)
 START_TEST(blas_count_is_one_through_a_two_thread_solve) {
   /* The header: an mc_solve on two threads runs OpenBLAS's pthread build at one thread per call
      from its start (its first log message included) to its end (the active-set solve between the
-     body phases included), and puts
-     the host's count back before it returns; on one thread it never touches the count. */
+     body phases included), and puts the host's count back before it returns; on one thread it
+     never touches the count. */
   const int host = openblas_get_num_threads(), pthread_build = openblas_get_parallel() == 1;
   for (int threads = 1; threads <= 2; ++threads)
     for (int resolve = 0; resolve <= 1; ++resolve) {
