@@ -12,8 +12,10 @@
  * a dense trailing block of each factor) costs most.
  *
  * For each nx prints the contact solve's time and the parts the log reports (contact geometry,
- * interface operator, active-set solve), the factors' nonzeros, and the plain solve of the same
- * meshes and load with body 1 held vertically on its bottom instead of by contact.
+ * interface operator, active-set solve), the factors' nonzeros, the plain solve of the same
+ * meshes and load with body 1 held vertically on its bottom instead of by contact, and the two
+ * accuracy infos: MC_INFO_COMPLEMENTARITY (of the condensed problem) and MC_INFO_GAP_RESIDUAL
+ * (of the returned displacements).
  *
  * usage: long_interface [nx ...]   (default: 250 500 1000 2000 4000)
  */
@@ -79,8 +81,8 @@ static mc_model *strips(const sc_mesh mesh[2], int contact, parts *log) {
 int main(int argc, char **argv) {
   static const int defaults[] = {250, 500, 1000, 2000, 4000};
   const int count = argc > 1 ? argc - 1 : (int)(sizeof defaults / sizeof *defaults);
-  printf("| nx | contact nodes | DOFs | nnz(L) contact | nnz(L) plain | contact solve s | geometry s | interface operator s | active-set s | plain solve s | contact/plain | pressure error / p |\n");
-  printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  printf("| nx | contact nodes | DOFs | nnz(L) contact | nnz(L) plain | contact solve s | geometry s | interface operator s | active-set s | plain solve s | contact/plain | pressure error / p | MC_INFO_COMPLEMENTARITY | MC_INFO_GAP_RESIDUAL |\n");
+  printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (int k = 0; k < count; ++k) {
     const int nx = argc > 1 ? atoi(argv[k + 1]) : defaults[k];
     const int nx2 = (int)lround(1.37 * nx);
@@ -104,6 +106,9 @@ int main(int argc, char **argv) {
     int64_t dofs = 0, nnz_contact = 0, nnz_plain = 0;
     mc_get_info_int(m, MC_INFO_DOFS, &dofs);
     mc_get_info_int(m, MC_INFO_FACTOR_NNZ, &nnz_contact);
+    double complementarity = 0, gap_residual = 0;
+    mc_get_info_real(m, MC_INFO_COMPLEMENTARITY, &complementarity);
+    mc_get_info_real(m, MC_INFO_GAP_RESIDUAL, &gap_residual);
     /* 3. Its answer against the exact one: every contact pressure p. */
     mc_int n = 0;
     mc_get_contact_count(m, &n);
@@ -123,9 +128,9 @@ int main(int argc, char **argv) {
     const double t_plain = bench_wall() - start;
     mc_get_info_int(plain, MC_INFO_FACTOR_NNZ, &nnz_plain);
     mc_destroy(plain);
-    printf("| %d | %d | %ld | %ld | %ld | %.3f | %.3f | %.3f | %.3f | %.4f | %.0f | %.1e |\n", nx, (int)n, (long)dofs,
-           (long)nnz_contact, (long)nnz_plain, t_contact, log.geometry, log.interface, log.active_set, t_plain,
-           t_contact / t_plain, worst);
+    printf("| %d | %d | %ld | %ld | %ld | %.3f | %.3f | %.3f | %.3f | %.4f | %.0f | %.1e | %.1e | %.1e |\n", nx, (int)n,
+           (long)dofs, (long)nnz_contact, (long)nnz_plain, t_contact, log.geometry, log.interface, log.active_set, t_plain,
+           t_contact / t_plain, worst, complementarity, gap_residual);
     fflush(stdout);
     sc_mesh_free(&mesh[0]);
     sc_mesh_free(&mesh[1]);

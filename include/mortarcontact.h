@@ -178,8 +178,15 @@ enum {
   MC_INFO_TIME_TOTAL = 25,         /* real, seconds: the whole mc_solve */
   MC_INFO_STRAIN_ENERGY = 26,      /* real: 1/2 u^T K u over both bodies */
   MC_INFO_COMPLEMENTARITY = 27,    /* real: largest relative violation of lambda>=0, gap>=0, lambda*gap=0 */
-  MC_INFO_EQUILIBRIUM = 28         /* real: ||K u + B^T lambda - f|| / ||f - K u_prescribed, B^T lambda||
+  MC_INFO_EQUILIBRIUM = 28,        /* real: ||K u + B^T lambda - f|| / ||f - K u_prescribed, B^T lambda||
                                       on the free unknowns (u without its rigid-mode part) */
+  MC_INFO_GAP_RESIDUAL = 29        /* real: the gaps of the returned displacements: largest |gap| of a row
+                                      with lambda > 0, or penetration of one with lambda = 0, as a length
+                                      (the row's weighted gap over its weights), relative to the largest
+                                      displacement or initial gap; 0 without contact. Round-off level
+                                      unless the condensation lost accuracy, which
+                                      MC_INFO_COMPLEMENTARITY (the condensed problem's) does not show
+                                      (docs/robustness.md, "Known limitations") */
 };
 
 /* ---- lifecycle, errors, version ---------------------------------------- */

@@ -110,7 +110,8 @@ enum class Info : int {
   time_total = MC_INFO_TIME_TOTAL,
   strain_energy = MC_INFO_STRAIN_ENERGY,
   complementarity = MC_INFO_COMPLEMENTARITY,
-  equilibrium = MC_INFO_EQUILIBRIUM
+  equilibrium = MC_INFO_EQUILIBRIUM,
+  gap_residual = MC_INFO_GAP_RESIDUAL
 };
 
 enum class LogLevel : int { phase = MC_LOG_PHASE, iteration = MC_LOG_ITERATION };

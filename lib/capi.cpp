@@ -559,7 +559,7 @@ mc_status mc_get_info_int(const mc_model *m, int info, int64_t *value) {
       case MC_INFO_CONTACT_NODES: *value = i.contact_rows; break;
       case MC_INFO_FACTORIZATIONS: *value = i.factorizations; break;
       default:
-        if (info >= MC_INFO_TIME_ASSEMBLY && info <= MC_INFO_EQUILIBRIUM)
+        if (info >= MC_INFO_TIME_ASSEMBLY && info <= MC_INFO_GAP_RESIDUAL)
           fail(MC_ERROR_ARGUMENT, "info = %d is real-valued: use mc_get_info_real", info);
         fail(MC_ERROR_ARGUMENT, "info = %d: not an info", info);
     }
@@ -580,6 +580,7 @@ mc_status mc_get_info_real(const mc_model *m, int info, double *value) {
       case MC_INFO_STRAIN_ENERGY: *value = i.energy; break;
       case MC_INFO_COMPLEMENTARITY: *value = i.complementarity; break;
       case MC_INFO_EQUILIBRIUM: *value = i.equilibrium; break;
+      case MC_INFO_GAP_RESIDUAL: *value = i.gap_residual; break;
       default:
         if (info >= MC_INFO_DOFS && info <= MC_INFO_FACTORIZATIONS)
           fail(MC_ERROR_ARGUMENT, "info = %d is integer-valued: use mc_get_info_int", info);

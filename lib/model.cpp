@@ -345,6 +345,33 @@ double Model::row_initial_gap(int r) const {
   return g;
 }
 
+// MC_INFO_GAP_RESIDUAL: the complementarity of the gaps of the displacements returned, not of
+// the condensed problem's (MC_INFO_COMPLEMENTARITY). The two agree unless the condensation lost
+// accuracy: its right-hand side d = B K^+ f - g0 can be far larger than the gaps it yields (a
+// slender body factorized alone is as compliant as a free beam), and the gaps of the recovered
+// u then carry round-off of d's size (docs/robustness.md, "Known limitations"). A row's gap is a
+// weighted mean (the mortar weights); divided by the sum of its body-1 weights it is a length,
+// here relative to the largest displacement or initial gap, the size its round-off scales with.
+double Model::recovered_gap_residual(const std::vector<double> &lambda) const {
+  const ConstraintRows &rows = contact_->rows;
+  double worst = 0, scale = 0;
+  for (int b = 0; b < 2; ++b)
+    for (double u : body[b].u) scale = std::max(scale, std::fabs(u));
+  for (int r = 0; r < rows.size(); ++r) {
+    double weight = 0;
+    for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p) weight += std::fabs(rows.weight1[p]);
+    if (weight == 0) continue;
+    double gap = row_initial_gap(r);
+    scale = std::max(scale, std::fabs(gap) / weight);
+    for (int b = 0; b < 2; ++b)
+      for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
+        gap -= contact_->b_value[b][p] * body[b].u[contact_->b_dof[b][p]];
+    // Active rows must close (gap 0), inactive ones must not penetrate (gap >= 0).
+    worst = std::max(worst, (lambda[r] > 0 ? std::fabs(gap) : std::max(0.0, -gap)) / weight);
+  }
+  return scale > 0 ? worst / scale : worst;
+}
+
 // One body's loads with the prescribed displacements lifted, f_eff = f - K u_prescribed, and
 // their first solve.
 void Model::solve_loads(int b, BodyWork &work, LoadSolve &out) const {
@@ -622,6 +649,7 @@ void Model::solve() {
       if (rows.own_position[r] >= 0) contact_gap[rows.own_position[r]] = gap;
       for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p) contact_force[rows.position1[p]] += rows.weight1[p] * lambda[r];
     }
+    infos.gap_residual = recovered_gap_residual(lambda);
     for (size_t pos = 0; pos < n; ++pos)
       // The tributary measure includes the thickness (or 2 pi r): a position whose contact edges
       // all lie on the axis stands for no area; its force is reported, its pressure as 0.

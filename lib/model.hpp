@@ -91,6 +91,7 @@ struct Infos {
   long dofs = 0, factor_nnz = 0, iterations = 0, active = 0, contact_rows = 0, factorizations = 0;
   double t_assembly = 0, t_analysis = 0, t_factor = 0, t_solve = 0, t_contact = 0, t_total = 0;
   double energy = 0, complementarity = 0, equilibrium = 0;
+  double gap_residual = 0;  // MC_INFO_GAP_RESIDUAL: complementarity of the returned displacements' gaps
   int threads = 1;  // threads the last solve ran the bodies' work on (1 or 2)
 };
 
@@ -142,6 +143,7 @@ public:
   double initial_gap(size_t pos) const;
   // g0 of constraint row r with the host's offsets.
   double row_initial_gap(int r) const;
+  double recovered_gap_residual(const std::vector<double> &lambda) const;
   // Contact results per body-1 contact node (after a contact solve).
   std::vector<double> contact_force, contact_gap, contact_pressure;
 

@@ -74,6 +74,9 @@ void assert_kkt(mc_model *m, const contact_data *c, double length_scale) {
   OK(mc_get_info_real(m, MC_INFO_COMPLEMENTARITY, &complementarity));
   ck_assert_msg(equilibrium < 1e-10, "equilibrium residual %g", equilibrium);
   ck_assert_msg(complementarity < 1e-10, "complementarity %g", complementarity);
+  double gap_residual;
+  OK(mc_get_info_real(m, MC_INFO_GAP_RESIDUAL, &gap_residual));
+  ck_assert_msg(gap_residual < 1e-10, "gap residual of the returned displacements %g", gap_residual);
 }
 
 /* Largest |displacement| of both bodies and |g0| of the seeing nodes: the length scale of the

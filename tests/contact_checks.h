@@ -34,7 +34,7 @@ void contact_free(contact_data *c);
 /* KKT of (3.5) from the returned arrays: lambda >= 0, gap >= 0, lambda gap = 0 (relative to the
    largest force and to length_scale, the size of the displacements and initial gaps), no force
    where no mortar surface is seen; plus the library's own residual infos
-   (MC_INFO_EQUILIBRIUM, MC_INFO_COMPLEMENTARITY < 1e-10). */
+   (MC_INFO_EQUILIBRIUM, MC_INFO_COMPLEMENTARITY, MC_INFO_GAP_RESIDUAL < 1e-10). */
 void assert_kkt(mc_model *m, const contact_data *c, double length_scale);
 /* Largest |displacement| of both bodies and |g0| of the seeing nodes: the length scale of the
    gap checks. */

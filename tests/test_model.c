@@ -203,6 +203,8 @@ START_TEST(test_infos) {
   ck_assert(r == 0);
   OK(mc_get_info_real(m, MC_INFO_EQUILIBRIUM, &r));
   ck_assert(r >= 0 && r <= 1e-10);
+  OK(mc_get_info_real(m, MC_INFO_GAP_RESIDUAL, &r));
+  ck_assert(r == 0); /* no contact */
 
   /* wrong kinds and unknown infos */
   FAILS(mc_get_info_int(m, MC_INFO_STRAIN_ENERGY, &v), MC_ERROR_ARGUMENT, "info");
@@ -210,7 +212,7 @@ START_TEST(test_infos) {
   FAILS(mc_get_info_int(m, 7, &v), MC_ERROR_ARGUMENT, "info");
   FAILS(mc_get_info_int(m, 19, &v), MC_ERROR_ARGUMENT, "info");
   FAILS(mc_get_info_real(m, MC_INFO_DOFS, &r), MC_ERROR_ARGUMENT, "info");
-  FAILS(mc_get_info_real(m, 29, &r), MC_ERROR_ARGUMENT, "info");
+  FAILS(mc_get_info_real(m, 30, &r), MC_ERROR_ARGUMENT, "info");
   FAILS(mc_get_info_real(m, -1, &r), MC_ERROR_ARGUMENT, "info");
   FAILS(mc_get_info_int(m, MC_INFO_DOFS, NULL), MC_ERROR_ARGUMENT, "value");
   FAILS(mc_get_info_real(m, MC_INFO_STRAIN_ENERGY, NULL), MC_ERROR_ARGUMENT, "value");

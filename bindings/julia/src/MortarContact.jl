@@ -135,6 +135,7 @@ const MC_INFO_TIME_TOTAL = Cint(25)
 const MC_INFO_STRAIN_ENERGY = Cint(26)
 const MC_INFO_COMPLEMENTARITY = Cint(27)
 const MC_INFO_EQUILIBRIUM = Cint(28)
+const MC_INFO_GAP_RESIDUAL = Cint(29)
 
 for name in names(@__MODULE__; all=true)
     startswith(String(name), "MC_") && @eval export $name

@@ -38,6 +38,7 @@ class TestPatch(unittest.TestCase):
             np.testing.assert_allclose(s[:, 1], -patch_scene.PRESSURE, rtol=1e-8)
             self.assertEqual(m.get_info(mc.MC_INFO_ACTIVE_NODES), int(np.sum(m.get_contact_force() > 0)))
             self.assertLess(m.get_info(mc.MC_INFO_COMPLEMENTARITY), 1e-8)
+            self.assertLess(m.get_info(mc.MC_INFO_GAP_RESIDUAL), 1e-10)  # a real info (float), at round-off
 
     def test_mortar(self):
         self.check(mc.MC_METHOD_MORTAR, 0)
