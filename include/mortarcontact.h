@@ -112,7 +112,10 @@ enum {
    it before that phase ends. The phases: first, everything a body needs before the interface
    problem (assembly with the rigid modes, ordering, factorization, the body's block of the
    interface operator, its load solve); then the recovery (displacements, reactions, stresses).
-   A re-solve runs two: the load solves, and the recovery. No thread outlives
+   A re-solve runs two: the load solves, and the recovery. A solve whose recovered gaps are
+   above round-off (MC_INFO_GAP_RESIDUAL > 1e-13) is refined: each refinement step (at most 3)
+   adds two phases (the residuals' forward solves, the corrections' backward solves), and the
+   recovery of reactions and stresses runs once more. No thread outlives
    mc_solve, no other call starts one, and if none can be started the solve runs serially. The
    log callback is still called only from the calling thread, with the messages in the serial
    order; an error on body 2's thread is returned as usual (body 1's first, as serially).
@@ -183,10 +186,11 @@ enum {
   MC_INFO_GAP_RESIDUAL = 29        /* real: the gaps of the returned displacements: largest |gap| of a row
                                       with lambda > 0, or penetration of one with lambda = 0, as a length
                                       (the row's weighted gap over its weights), relative to the largest
-                                      displacement or initial gap; 0 without contact. Round-off level
-                                      unless the condensation lost accuracy, which
-                                      MC_INFO_COMPLEMENTARITY (the condensed problem's) does not show
-                                      (docs/robustness.md, "Known limitations") */
+                                      displacement or initial gap; 0 without contact. Above 1e-13 the
+                                      solve refines its answer (up to 3 steps of iterative refinement
+                                      on the full problem's residuals) and reports the value after;
+                                      MC_INFO_COMPLEMENTARITY, the condensed problem's, cannot show
+                                      what the condensation lost (docs/robustness.md) */
 };
 
 /* ---- lifecycle, errors, version ---------------------------------------- */

@@ -225,6 +225,17 @@ bool primal_active_set(const DualQp &p, double s_scale, double d_scale, std::vec
 
 }  // namespace
 
+bool solve_correction(const DualQp &p, const std::vector<char> &active, std::vector<double> &dl,
+                      std::vector<double> &da) {
+  double s_scale = 0;
+  for (int i = 0; i < p.q; ++i) s_scale = std::max(s_scale, p.s[size_t(i) * p.q + i]);
+  if (!(s_scale > 0)) s_scale = 1;
+  std::vector<int> act;
+  for (int i = 0; i < p.q; ++i)
+    if (active[i]) act.push_back(i);
+  return solve_on_active_set(p, act, s_scale, dl, da);
+}
+
 DualQpResult solve_dual_qp(const DualQp &p, double tolerance, int max_iterations, const std::vector<char> &start,
                            const DualQpObserver &observe) {
   DualQpResult result;

@@ -48,4 +48,12 @@ using DualQpObserver = std::function<void(const DualQpIteration &)>;
 DualQpResult solve_dual_qp(const DualQp &problem, double tolerance, int max_iterations,
                            const std::vector<char> &active, const DualQpObserver &observe = {});
 
+// One step of iterative refinement on a fixed active set (Model::refine_solution): the
+// correction (dl, da) with
+//   S_AA dl_A - G_A da = d_A,  G_A^T dl_A = e,  dl = 0 off A,
+// where d and e of `problem` hold the residuals (d = B K^+ r_f - gap, e = R^T r_f) and A is the
+// set of rows where `active` is set. Returns false if the system is singular.
+bool solve_correction(const DualQp &problem, const std::vector<char> &active, std::vector<double> &dl,
+                      std::vector<double> &da);
+
 }  // namespace mc

@@ -372,6 +372,119 @@ double Model::recovered_gap_residual(const std::vector<double> &lambda) const {
   return scale > 0 ? worst / scale : worst;
 }
 
+// Iterative refinement of the solution on the active set the QP found (docs/robustness.md,
+// "Long contact interfaces"). The condensed problem's right-hand side d = B K^+ f - g can be
+// far larger than the gaps and displacements it yields (a slender body factorized alone bends
+// like a free beam: |d|/|u| reached 4*10^7 on the long strips), and the recovered u then
+// carries round-off of d's size. The residuals of the full problem, computed in the original
+// unknowns, are free of that cancellation:
+//   r_f = f - K u - B^T lambda (free unknowns),  gap = g - B u (active rows),
+// and the correction (du, dl, da) with K du + B_A^T dl = r_f, B_A du = gap, i.e.
+//   S_AA dl - G_A da = (B K^+ r_f)_A - gap_A,  G_A^T dl = R^T r_f,  du = K^+ (r_f - B^T dl) + R da,
+// costs one forward and one backward solve per body and a dense solve of the active block.
+// A step is kept only if it lowers MC_INFO_GAP_RESIDUAL by half and keeps lambda >= 0; at most
+// kMaxRefinementSteps. Returns whether any step was kept (loads[b].v, lambda, alpha, body[b].u
+// and infos.gap_residual then hold the refined solution). `qp` keeps S and G; its d and e are
+// overwritten with the residuals.
+bool Model::refine_solution(DualQp &qp, LoadSolve loads[2], std::vector<double> &lambda, std::vector<double> &alpha) {
+  const double start = now(), first = infos.gap_residual;
+  const ContactSystem &cs = *contact_;
+  const int q = cs.rows.size();
+  const int mode_offset[2] = {0, system_[0] ? system_[0]->rigid.count : 0};
+  std::vector<char> active(q);
+  for (int r = 0; r < q; ++r) active[r] = lambda[r] > 0;
+  int steps = 0;
+  for (int step = 0; step < kMaxRefinementSteps; ++step) {
+    // 1. The equilibrium residual of each body and its forward solve y_r = L^-1 P r_f.
+    std::vector<double> residual[2], residual_y[2];
+    for_each_body([&](int b, BodyWork &work) {
+      if (!system_[b]) return;
+      const BodySystem &sys = *system_[b];
+      const int ndof = sys.stiffness.n;
+      std::vector<double> elastic(loads[b].v), ku(ndof);
+      for (int i = 0; i < ndof; ++i)
+        if (fixed_[b][i]) elastic[i] = fixed_value_[b][i];
+      sys.stiffness.multiply(elastic.data(), ku.data());  // K R = 0: the rigid motion drops out
+      std::vector<double> &rf = residual[b];
+      rf.assign(ndof, 0.0);
+      for (int i = 0; i < ndof; ++i)
+        if (!fixed_[b][i]) rf[i] = loads[b].f[i] - ku[i];
+      for (int r = 0; r < q; ++r)
+        for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p)
+          if (!fixed_[b][cs.b_dof[b][p]]) rf[cs.b_dof[b][p]] -= cs.b_value[b][p] * lambda[r];
+      std::vector<double> x(sys.solve_dofs.size());
+      for (size_t k = 0; k < x.size(); ++k) x[k] = rf[sys.solve_dofs[k]];
+      residual_y[b].resize(x.size());
+      Stopwatch watch(work.infos.t_solve);
+      sys.cholesky.forward(x.data(), residual_y[b].data());
+    });
+    // 2. The correction on the active set: d = B K^+ r_f - gap (B K^+ r_f = sum W_b^T y_r,G),
+    //    e = R^T r_f, in body order.
+    qp.d.assign(q, 0.0);
+    for (int b = 0; b < 2; ++b) {
+      const int ng = cs.w_rows[b];
+      if (!system_[b] || ng == 0 || q == 0) continue;
+      int one = 1, rows = q;
+      double plus = 1.0;
+      const double *y_interface = residual_y[b].data() + system_[b]->cholesky.interface_start();
+      dgemv_("T", &ng, &rows, &plus, cs.w[b].data(), &ng, y_interface, &one, &plus, qp.d.data(), &one);
+    }
+    for (int r = 0; r < q; ++r) {
+      double gap = row_initial_gap(r);
+      for (int b = 0; b < 2; ++b)
+        for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) gap -= cs.b_value[b][p] * body[b].u[cs.b_dof[b][p]];
+      qp.d[r] -= gap;
+    }
+    qp.e.assign(qp.k, 0.0);
+    for (int b = 0; b < 2; ++b) {
+      if (!system_[b]) continue;
+      const RigidModes &rm = system_[b]->rigid;
+      const int ndof = system_[b]->stiffness.n;
+      for (int c = 0; c < rm.count; ++c)
+        for (int i = 0; i < ndof; ++i) qp.e[mode_offset[b] + c] += rm.modes[size_t(c) * ndof + i] * residual[b][i];
+    }
+    std::vector<double> dl, da;
+    if (!solve_correction(qp, active, dl, da)) break;
+    std::vector<double> new_lambda(lambda), new_alpha(alpha);
+    bool feasible = true;
+    for (int r = 0; r < q; ++r) new_lambda[r] += dl[r], feasible = feasible && new_lambda[r] >= 0;
+    for (int c = 0; c < qp.k; ++c) new_alpha[c] += da[c];
+    if (!feasible) break;
+    // 3. du = K^+ (r_f - B^T dl) + R da = P^T L^-T (y_r - [0; W dl]) + R da, per body.
+    std::vector<double> kept_v[2] = {loads[0].v, loads[1].v}, kept_u[2] = {body[0].u, body[1].u};
+    for_each_body([&](int b, BodyWork &work) {
+      if (!system_[b]) return;
+      const BodySystem &sys = *system_[b];
+      const int ndof = sys.stiffness.n, ng = cs.w_rows[b];
+      std::vector<double> &z = residual_y[b], dx(sys.solve_dofs.size());
+      if (ng > 0 && q > 0) {
+        int one = 1, rows = q;
+        double minus = -1.0, plus = 1.0;
+        dgemv_("N", &ng, &rows, &minus, cs.w[b].data(), &ng, dl.data(), &one, &plus, z.data() + sys.cholesky.interface_start(),
+               &one);
+      }
+      {
+        Stopwatch watch(work.infos.t_solve);
+        sys.cholesky.backward(z.data(), dx.data());
+      }
+      for (size_t k = 0; k < dx.size(); ++k) loads[b].v[sys.solve_dofs[k]] += dx[k];
+      std::vector<double> &u = body[b].u;
+      for (int i = 0; i < ndof; ++i) u[i] = fixed_[b][i] ? fixed_value_[b][i] : loads[b].v[i];
+      for (int c = 0; c < sys.rigid.count; ++c)
+        for (int i = 0; i < ndof; ++i) u[i] += new_alpha[mode_offset[b] + c] * sys.rigid.modes[size_t(c) * ndof + i];
+    });
+    const double refined = recovered_gap_residual(new_lambda);
+    if (!(refined <= 0.5 * infos.gap_residual)) {  // no real gain: the step is undone
+      for (int b = 0; b < 2; ++b) loads[b].v = kept_v[b], body[b].u = kept_u[b];
+      break;
+    }
+    lambda = new_lambda, alpha = new_alpha, infos.gap_residual = refined, ++steps;
+  }
+  progress(MC_LOG_PHASE, "refinement: gap residual of the displacements %.3g -> %.3g in %d step%s, %.3g s", first,
+           infos.gap_residual, steps, steps == 1 ? "" : "s", now() - start);
+  return steps > 0;
+}
+
 // One body's loads with the prescribed displacements lifted, f_eff = f - K u_prescribed, and
 // their first solve.
 void Model::solve_loads(int b, BodyWork &work, LoadSolve &out) const {
@@ -458,10 +571,10 @@ void Model::solve() {
            loads[0].seconds + loads[1].seconds);
   std::vector<double> lambda;
   std::vector<double> alpha;
+  DualQp qp;  // kept for the refinement (its S and G)
   if (contact_) {
     ContactSystem &cs = *contact_;
     const int q = cs.rows.size();
-    DualQp qp;
     qp.q = q;
     {
       Stopwatch watch(infos.t_contact);
@@ -561,7 +674,9 @@ void Model::solve() {
   const double t_recovery = now();
   int mode_offset[2] = {0, system_[0] ? system_[0]->rigid.count : 0};  // body b's modes in alpha
   double f_norm2[2] = {0, 0}, residual_norm2[2] = {0, 0}, energy[2] = {0, 0};
-  for_each_body([&](int b, BodyWork &work) {
+  // displacements_known: loads[b].v already holds K^+ (f_eff - B^T lambda) (after a refinement).
+  bool displacements_known = false;
+  auto recover = [&](int b, BodyWork &work) {
     if (!system_[b]) return;
     BodySystem &sys = *system_[b];
     const int ndof = sys.stiffness.n;
@@ -570,6 +685,10 @@ void Model::solve() {
       for (int r = 0; r < contact_->rows.size(); ++r)
         for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
           contact_force[contact_->b_dof[b][p]] -= contact_->b_value[b][p] * lambda[r];
+      for (int c = 0; c < sys.rigid.count; ++c)
+        for (int i = 0; i < ndof; ++i) rigid_motion[i] += alpha[mode_offset[b] + c] * sys.rigid.modes[size_t(c) * ndof + i];
+    }
+    if (contact_ && !displacements_known) {
       // u = K^+ (f_eff - B^T lambda) = P^T L^-T (y - [0; W lambda]): the backward half only.
       std::vector<double> x(sys.solve_dofs.size()), z(loads[b].y);
       const int ng = contact_->w_rows[b], q = contact_->rows.size();
@@ -585,8 +704,6 @@ void Model::solve() {
       }
       std::fill(loads[b].v.begin(), loads[b].v.end(), 0.0);
       for (size_t k = 0; k < x.size(); ++k) loads[b].v[sys.solve_dofs[k]] = x[k];
-      for (int c = 0; c < sys.rigid.count; ++c)
-        for (int i = 0; i < ndof; ++i) rigid_motion[i] += alpha[mode_offset[b] + c] * sys.rigid.modes[size_t(c) * ndof + i];
     }
     Body &body_ = body[b];
     // Reactions, energy and the equilibrium residual from the full stiffness. K R = 0, so K is
@@ -623,7 +740,16 @@ void Model::solve() {
       if (npc == 3) triangle_stress(p, law, measure(), ue, &body_.stress[4 * size_t(c)]);
       else quadrilateral_stress(p, law, measure(), bbar, ue, &body_.stress[4 * size_t(c)]);
     }
-  });
+  };
+  for_each_body(recover);
+  if (contact_) {
+    infos.gap_residual = recovered_gap_residual(lambda);
+    if (infos.gap_residual > kRefineAboveGapResidual && refine_solution(qp, loads, lambda, alpha)) {
+      displacements_known = true;
+      f_norm2[0] = f_norm2[1] = residual_norm2[0] = residual_norm2[1] = 0;
+      for_each_body(recover);  // reactions, energy and stresses of the refined displacements
+    }
+  }
   // Per-body sums added in body order, whatever the thread count.
   const double residual_norm = residual_norm2[0] + residual_norm2[1], f_norm = f_norm2[0] + f_norm2[1];
   infos.energy = energy[0] + energy[1];
@@ -649,7 +775,6 @@ void Model::solve() {
       if (rows.own_position[r] >= 0) contact_gap[rows.own_position[r]] = gap;
       for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p) contact_force[rows.position1[p]] += rows.weight1[p] * lambda[r];
     }
-    infos.gap_residual = recovered_gap_residual(lambda);
     for (size_t pos = 0; pos < n; ++pos)
       // The tributary measure includes the thickness (or 2 pi r): a position whose contact edges
       // all lie on the axis stands for no area; its force is reported, its pressure as 0.

@@ -102,6 +102,13 @@ struct Infos {
 // within the noise of a shared machine; from 30000 on it was clear in every run.
 constexpr long kParallelMinBodyDofs = 30000;
 
+// The refinement of a contact solve (Model::refine_solution) runs when the gaps of the
+// recovered displacements (MC_INFO_GAP_RESIDUAL) exceed this: at most 1.1e-14 in every contact
+// scene of the test suite, 3e-11 and more on the long strips (docs/robustness.md). Each step
+// costs a forward and a backward solve per body and a dense solve of the active block.
+constexpr double kRefineAboveGapResidual = 1e-13;
+constexpr int kMaxRefinementSteps = 3;
+
 // One body's share of a phase that runs for both bodies at once: its own timings and counts
 // (added to the model's infos in body order) and, when it runs on a thread of its own, its
 // progress messages, kept until the calling thread sends them on.
@@ -144,6 +151,7 @@ public:
   // g0 of constraint row r with the host's offsets.
   double row_initial_gap(int r) const;
   double recovered_gap_residual(const std::vector<double> &lambda) const;
+  bool refine_solution(DualQp &qp, LoadSolve loads[2], std::vector<double> &lambda, std::vector<double> &alpha);
   // Contact results per body-1 contact node (after a contact solve).
   std::vector<double> contact_force, contact_gap, contact_pressure;
 
