@@ -12,7 +12,7 @@
  * a dense trailing block of each factor) costs most.
  *
  * For each nx prints the contact solve's time and the parts the log reports (contact geometry,
- * interface operator, active-set solve), the factors' nonzeros, the plain solve of the same
+ * interface operator, active-set solve, refinement), the factors' nonzeros, the plain solve of the same
  * meshes and load with body 1 held vertically on its bottom instead of by contact, and the two
  * accuracy infos: MC_INFO_COMPLEMENTARITY (of the condensed problem) and MC_INFO_GAP_RESIDUAL
  * (of the returned displacements).
@@ -29,7 +29,7 @@
 
 /* The seconds at the end of the log messages of the contact parts ("..., 0.123 s"). */
 typedef struct parts {
-  double geometry, interface, active_set;
+  double geometry, interface, active_set, refinement;
 } parts;
 
 static double trailing_seconds(const char *message) {
@@ -43,6 +43,7 @@ static void note_parts(void *user, mc_log_level level, const char *message) {
   if (strncmp(message, "contact geometry", 16) == 0) p->geometry = trailing_seconds(message);
   if (strncmp(message, "interface operator", 18) == 0) p->interface = trailing_seconds(message);
   if (strncmp(message, "active-set solve", 16) == 0) p->active_set = trailing_seconds(message);
+  if (strncmp(message, "refinement", 10) == 0) p->refinement = trailing_seconds(message);
 }
 
 static const double kPressure = 0.01;
@@ -81,8 +82,8 @@ static mc_model *strips(const sc_mesh mesh[2], int contact, parts *log) {
 int main(int argc, char **argv) {
   static const int defaults[] = {250, 500, 1000, 2000, 4000};
   const int count = argc > 1 ? argc - 1 : (int)(sizeof defaults / sizeof *defaults);
-  printf("| nx | contact nodes | DOFs | nnz(L) contact | nnz(L) plain | contact solve s | geometry s | interface operator s | active-set s | plain solve s | contact/plain | pressure error / p | MC_INFO_COMPLEMENTARITY | MC_INFO_GAP_RESIDUAL |\n");
-  printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  printf("| nx | contact nodes | DOFs | nnz(L) contact | nnz(L) plain | contact solve s | geometry s | interface operator s | active-set s | refinement s | plain solve s | contact/plain | pressure error / p | MC_INFO_COMPLEMENTARITY | MC_INFO_GAP_RESIDUAL |\n");
+  printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (int k = 0; k < count; ++k) {
     const int nx = argc > 1 ? atoi(argv[k + 1]) : defaults[k];
     const int nx2 = (int)lround(1.37 * nx);
@@ -94,7 +95,7 @@ int main(int argc, char **argv) {
       return 1;
     }
     /* 2. The contact solve, timed from mc_solve to its return. */
-    parts log = {0, 0, 0};
+    parts log = {0, 0, 0, 0};
     mc_model *m = strips(mesh, 1, &log);
     if (!m) return 1;
     double start = bench_wall();
@@ -128,9 +129,9 @@ int main(int argc, char **argv) {
     const double t_plain = bench_wall() - start;
     mc_get_info_int(plain, MC_INFO_FACTOR_NNZ, &nnz_plain);
     mc_destroy(plain);
-    printf("| %d | %d | %ld | %ld | %ld | %.3f | %.3f | %.3f | %.3f | %.4f | %.0f | %.1e | %.1e | %.1e |\n", nx, (int)n,
-           (long)dofs, (long)nnz_contact, (long)nnz_plain, t_contact, log.geometry, log.interface, log.active_set, t_plain,
-           t_contact / t_plain, worst, complementarity, gap_residual);
+    printf("| %d | %d | %ld | %ld | %ld | %.3f | %.3f | %.3f | %.3f | %.3f | %.4f | %.0f | %.1e | %.1e | %.1e |\n", nx,
+           (int)n, (long)dofs, (long)nnz_contact, (long)nnz_plain, t_contact, log.geometry, log.interface, log.active_set,
+           log.refinement, t_plain, t_contact / t_plain, worst, complementarity, gap_residual);
     fflush(stdout);
     sc_mesh_free(&mesh[0]);
     sc_mesh_free(&mesh[1]);
