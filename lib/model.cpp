@@ -372,7 +372,7 @@ double Model::recovered_gap_residual(const std::vector<double> &lambda) const {
   return scale > 0 ? worst / scale : worst;
 }
 
-// Iterative refinement of the solution on the active set the QP found (docs/robustness.md,
+// Iterative refinement of the solution on the active set the QP found (docs/benchmarks.md,
 // "Long contact interfaces"). The condensed problem's right-hand side d = B K^+ f - g can be
 // far larger than the gaps and displacements it yields (a slender body factorized alone bends
 // like a free beam: |d|/|u| reached 4*10^7 on the long strips), and the recovered u then
