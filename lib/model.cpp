@@ -345,6 +345,23 @@ double Model::row_initial_gap(int r) const {
   return g;
 }
 
+// Row r's gap g_r - B_r u with the bodies' current displacements (body[b].u).
+double Model::row_gap(int r) const {
+  double gap = row_initial_gap(r);
+  for (int b = 0; b < 2; ++b)
+    for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
+      gap -= contact_->b_value[b][p] * body[b].u[contact_->b_dof[b][p]];
+  return gap;
+}
+
+// u += R alpha for body b (its rigid modes' share of alpha; nothing for a held body).
+void Model::add_rigid_motion(int b, const std::vector<double> &alpha, std::vector<double> &u) const {
+  const RigidModes &rm = system_[b]->rigid;
+  const int ndof = system_[b]->stiffness.n, offset = b == 0 || !system_[0] ? 0 : system_[0]->rigid.count;
+  for (int c = 0; c < rm.count; ++c)
+    for (int i = 0; i < ndof; ++i) u[i] += alpha[offset + c] * rm.modes[size_t(c) * ndof + i];
+}
+
 // MC_INFO_GAP_RESIDUAL: the complementarity of the gaps of the displacements returned, not of
 // the condensed problem's (MC_INFO_COMPLEMENTARITY). The two agree unless the condensation lost
 // accuracy: its right-hand side d = B K^+ f - g0 can be far larger than the gaps it yields (a
@@ -361,11 +378,8 @@ double Model::recovered_gap_residual(const std::vector<double> &lambda) const {
     double weight = 0;
     for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p) weight += std::fabs(rows.weight1[p]);
     if (weight == 0) continue;
-    double gap = row_initial_gap(r);
-    scale = std::max(scale, std::fabs(gap) / weight);
-    for (int b = 0; b < 2; ++b)
-      for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
-        gap -= contact_->b_value[b][p] * body[b].u[contact_->b_dof[b][p]];
+    scale = std::max(scale, std::fabs(row_initial_gap(r)) / weight);
+    const double gap = row_gap(r);
     // Active rows must close (gap 0), inactive ones must not penetrate (gap >= 0).
     worst = std::max(worst, (lambda[r] > 0 ? std::fabs(gap) : std::max(0.0, -gap)) / weight);
   }
@@ -429,12 +443,7 @@ bool Model::refine_solution(DualQp &qp, LoadSolve loads[2], std::vector<double> 
       const double *y_interface = residual_y[b].data() + system_[b]->cholesky.interface_start();
       dgemv_("T", &ng, &rows, &plus, cs.w[b].data(), &ng, y_interface, &one, &plus, qp.d.data(), &one);
     }
-    for (int r = 0; r < q; ++r) {
-      double gap = row_initial_gap(r);
-      for (int b = 0; b < 2; ++b)
-        for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) gap -= cs.b_value[b][p] * body[b].u[cs.b_dof[b][p]];
-      qp.d[r] -= gap;
-    }
+    for (int r = 0; r < q; ++r) qp.d[r] -= row_gap(r);
     qp.e.assign(qp.k, 0.0);
     for (int b = 0; b < 2; ++b) {
       if (!system_[b]) continue;
@@ -470,8 +479,7 @@ bool Model::refine_solution(DualQp &qp, LoadSolve loads[2], std::vector<double> 
       for (size_t k = 0; k < dx.size(); ++k) loads[b].v[sys.solve_dofs[k]] += dx[k];
       std::vector<double> &u = body[b].u;
       for (int i = 0; i < ndof; ++i) u[i] = fixed_[b][i] ? fixed_value_[b][i] : loads[b].v[i];
-      for (int c = 0; c < sys.rigid.count; ++c)
-        for (int i = 0; i < ndof; ++i) u[i] += new_alpha[mode_offset[b] + c] * sys.rigid.modes[size_t(c) * ndof + i];
+      add_rigid_motion(b, new_alpha, u);
     });
     const double refined = recovered_gap_residual(new_lambda);
     if (!(refined <= 0.5 * infos.gap_residual)) {  // no real gain: the step is undone
@@ -672,7 +680,6 @@ void Model::solve() {
 
   // u = K^+ (f_eff - B^T lambda) + R alpha, then the prescribed values.
   const double t_recovery = now();
-  int mode_offset[2] = {0, system_[0] ? system_[0]->rigid.count : 0};  // body b's modes in alpha
   double f_norm2[2] = {0, 0}, residual_norm2[2] = {0, 0}, energy[2] = {0, 0};
   // displacements_known: loads[b].v already holds K^+ (f_eff - B^T lambda) (after a refinement).
   bool displacements_known = false;
@@ -685,8 +692,7 @@ void Model::solve() {
       for (int r = 0; r < contact_->rows.size(); ++r)
         for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
           contact_force[contact_->b_dof[b][p]] -= contact_->b_value[b][p] * lambda[r];
-      for (int c = 0; c < sys.rigid.count; ++c)
-        for (int i = 0; i < ndof; ++i) rigid_motion[i] += alpha[mode_offset[b] + c] * sys.rigid.modes[size_t(c) * ndof + i];
+      add_rigid_motion(b, alpha, rigid_motion);
     }
     if (contact_ && !displacements_known) {
       // u = K^+ (f_eff - B^T lambda) = P^T L^-T (y - [0; W lambda]): the backward half only.
@@ -768,10 +774,7 @@ void Model::solve() {
     // of a position is its force over its tributary length on Gamma_c (lumped recovery).
     const ConstraintRows &rows = contact_->rows;
     for (int r = 0; r < rows.size(); ++r) {
-      double gap = row_initial_gap(r);
-      for (int b = 0; b < 2; ++b)
-        for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
-          gap -= contact_->b_value[b][p] * body[b].u[contact_->b_dof[b][p]];
+      const double gap = row_gap(r);
       if (rows.own_position[r] >= 0) contact_gap[rows.own_position[r]] = gap;
       for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p) contact_force[rows.position1[p]] += rows.weight1[p] * lambda[r];
     }
