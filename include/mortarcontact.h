@@ -97,8 +97,26 @@ enum {
   MC_OPTION_CONTACT_SURFACE = 8, /* int: MC_SURFACE_*; the geometry of gaps and normals; default MC_SURFACE_SMOOTH */
   MC_OPTION_FEATURE_ANGLE = 9,   /* real, degrees in (0, 180): a contact chain is split into separately
                                     smoothed faces where adjacent edges turn by more than this; default 40 */
-  MC_OPTION_THREADS = 10        /* int: threads for the two bodies' work; default 0 (see below) */
+  MC_OPTION_THREADS = 10,       /* int: threads for the two bodies' work; default 0 (see below) */
+  MC_OPTION_INTERFACE_SOLVER = 11 /* int: MC_INTERFACE_*; how the contact problem is solved; default
+                                     MC_INTERFACE_AUTO (see below) */
 };
+
+/* Values of MC_OPTION_INTERFACE_SOLVER, and of MC_INFO_INTERFACE_SOLVER (which one ran).
+   Both paths give the same answer to round-off (docs/theory.md, "Two interface solvers").
+   MC_INTERFACE_AUTO (default): the library analyses both (symbolically: no numeric work),
+     estimates their time and memory, and runs the cheaper; the log says which and why.
+   MC_INTERFACE_CONDENSED: each body factorized alone with its contact unknowns last, the
+     problem condensed onto the q contact rows (S = B K^+ B^T, dense q x q) and solved there.
+     A re-solve with new loads is then nearly free, but time grows like q^3 and memory like q^2:
+     the choice for contact zones small beside the bodies (Hertz, punches, fits of few nodes).
+   MC_INTERFACE_SPARSE: the two bodies and the active rows solved together, sparse: each
+     active-set iteration factorizes K + rho B_A^T B_A (one symbolic analysis for all of them)
+     and solves the exact saddle-point problem on that active set by conjugate gradients on the
+     multipliers, preconditioned by that factor (no penalty error remains). Cost: a few
+     factorizations of the two bodies whatever q is; the choice for long interfaces (strips,
+     liners, layered bodies). A re-solve whose active set does not change reuses the factor. */
+enum { MC_INTERFACE_AUTO = 0, MC_INTERFACE_CONDENSED = 1, MC_INTERFACE_SPARSE = 2 };
 
 /* MC_OPTION_THREADS: how many threads mc_solve runs the two bodies' work on.
    0 (default) automatic: two when the process may run on two or more cores (its affinity mask)
@@ -173,6 +191,8 @@ enum {
   MC_INFO_CONTACT_NODES = 5,       /* int: constraint rows: body-1 positions that see body 2, plus the
                                       ends of Gamma_c inside partly covered edges */
   MC_INFO_FACTORIZATIONS = 6,      /* int: numeric factorizations done by the last solve (0 on reuse) */
+  MC_INFO_INTERFACE_SOLVER = 7,    /* int: the contact solve that ran: MC_INTERFACE_CONDENSED or
+                                      MC_INTERFACE_SPARSE; 0 without contact */
   MC_INFO_TIME_ASSEMBLY = 20,      /* real, seconds */
   MC_INFO_TIME_ANALYSIS = 21,      /* real, seconds: ordering and symbolic factorization */
   MC_INFO_TIME_FACTORIZATION = 22, /* real, seconds: numeric factorization */

@@ -73,7 +73,8 @@ enum class Option : int {
   contact_normal = MC_OPTION_CONTACT_NORMAL,
   contact_surface = MC_OPTION_CONTACT_SURFACE,
   feature_angle = MC_OPTION_FEATURE_ANGLE,
-  threads = MC_OPTION_THREADS
+  threads = MC_OPTION_THREADS,
+  interface_solver = MC_OPTION_INTERFACE_SOLVER
 };
 
 /// Values of Option::method.
@@ -95,6 +96,14 @@ enum class Ordering : int { automatic = MC_ORDERING_AUTO, amd = MC_ORDERING_AMD,
 /// Values of Option::q1_integration.
 enum class Q1Integration : int { full = MC_Q1_FULL, bbar = MC_Q1_BBAR };
 
+/// Values of Option::interface_solver ("auto" is a C++ keyword), and of Info::interface_solver
+/// (which one ran: condensed or sparse; 0 without contact).
+enum class InterfaceSolver : int {
+  automatic = MC_INTERFACE_AUTO,
+  condensed = MC_INTERFACE_CONDENSED,
+  sparse = MC_INTERFACE_SPARSE
+};
+
 enum class Info : int {
   dofs = MC_INFO_DOFS,
   factor_nnz = MC_INFO_FACTOR_NNZ,
@@ -102,6 +111,7 @@ enum class Info : int {
   active_nodes = MC_INFO_ACTIVE_NODES,
   contact_nodes = MC_INFO_CONTACT_NODES,
   factorizations = MC_INFO_FACTORIZATIONS,
+  interface_solver = MC_INFO_INTERFACE_SOLVER,
   time_assembly = MC_INFO_TIME_ASSEMBLY,
   time_analysis = MC_INFO_TIME_ANALYSIS,
   time_factorization = MC_INFO_TIME_FACTORIZATION,

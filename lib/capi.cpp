@@ -501,6 +501,13 @@ mc_status mc_set_option_int(mc_model *m, int option, int64_t value) {
                "threads, n up to 1024", (long long)value);
         model.options.threads = int(value);  // how, not what: the results and factorizations stay valid
         break;
+      case MC_OPTION_INTERFACE_SOLVER:
+        if (value < MC_INTERFACE_AUTO || value > MC_INTERFACE_SPARSE)
+          fail(MC_ERROR_ARGUMENT, "value = %lld: MC_OPTION_INTERFACE_SOLVER takes MC_INTERFACE_AUTO (0), "
+               "MC_INTERFACE_CONDENSED (1) or MC_INTERFACE_SPARSE (2)", (long long)value);
+        model.options.interface_solver = int(value);
+        model.structure_changed();  // the two paths factorize different matrices
+        break;
       case MC_OPTION_TOLERANCE:
       case MC_OPTION_FEATURE_ANGLE:
         fail(MC_ERROR_ARGUMENT, "option = %d is real-valued: use mc_set_option_real", option);
@@ -522,7 +529,7 @@ mc_status mc_set_option_real(mc_model *m, int option, double value) {
     if (option != MC_OPTION_TOLERANCE) {
       if (option == MC_OPTION_METHOD || option == MC_OPTION_MAX_ITERATIONS || option == MC_OPTION_ORDERING ||
           option == MC_OPTION_Q1_INTEGRATION || option == MC_OPTION_CONTACT_NORMAL ||
-          option == MC_OPTION_CONTACT_SURFACE || option == MC_OPTION_THREADS)
+          option == MC_OPTION_CONTACT_SURFACE || option == MC_OPTION_THREADS || option == MC_OPTION_INTERFACE_SOLVER)
         fail(MC_ERROR_ARGUMENT, "option = %d is integer-valued: use mc_set_option_int", option);
       fail(MC_ERROR_ARGUMENT, "option = %d: not a real option", option);
     }
@@ -558,6 +565,7 @@ mc_status mc_get_info_int(const mc_model *m, int info, int64_t *value) {
       case MC_INFO_ACTIVE_NODES: *value = i.active; break;
       case MC_INFO_CONTACT_NODES: *value = i.contact_rows; break;
       case MC_INFO_FACTORIZATIONS: *value = i.factorizations; break;
+      case MC_INFO_INTERFACE_SOLVER: *value = i.interface_solver; break;
       default:
         if (info >= MC_INFO_TIME_ASSEMBLY && info <= MC_INFO_GAP_RESIDUAL)
           fail(MC_ERROR_ARGUMENT, "info = %d is real-valued: use mc_get_info_real", info);
@@ -582,7 +590,7 @@ mc_status mc_get_info_real(const mc_model *m, int info, double *value) {
       case MC_INFO_EQUILIBRIUM: *value = i.equilibrium; break;
       case MC_INFO_GAP_RESIDUAL: *value = i.gap_residual; break;
       default:
-        if (info >= MC_INFO_DOFS && info <= MC_INFO_FACTORIZATIONS)
+        if (info >= MC_INFO_DOFS && info <= MC_INFO_INTERFACE_SOLVER)
           fail(MC_ERROR_ARGUMENT, "info = %d is integer-valued: use mc_get_info_int", info);
         fail(MC_ERROR_ARGUMENT, "info = %d: not an info", info);
     }

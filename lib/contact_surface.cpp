@@ -183,6 +183,75 @@ SurfaceCurve::SurfaceCurve(const Mesh &mesh, const std::vector<SurfaceSegment> &
       }
       faces_.push_back(std::move(face));
     }
+  build_grid();
+}
+
+void SurfaceCurve::build_grid() {
+  const int count = int(segments_.size());
+  cell_start_.assign(1, 0), cell_segment_.clear(), grid_nx_ = grid_ny_ = 0;
+  if (count == 0) return;
+  Point lo = segments_[0].box_lo, hi = segments_[0].box_hi;
+  double total = 0;
+  for (const CurveSegment &c : segments_) {
+    lo = {std::min(lo.x, c.box_lo.x), std::min(lo.y, c.box_lo.y)};
+    hi = {std::max(hi.x, c.box_hi.x), std::max(hi.y, c.box_hi.y)};
+    total += std::max(c.box_hi.x - c.box_lo.x, c.box_hi.y - c.box_lo.y);
+  }
+  // Cells about the size of a segment, at most a few per segment in all.
+  const double wx = hi.x - lo.x, wy = hi.y - lo.y, extent = std::max(wx, wy);
+  double cell = std::max(total / count, 1e-12 * std::max(extent, 1e-300));
+  while ((std::floor(wx / cell) + 1) * (std::floor(wy / cell) + 1) > 4.0 * count + 16) cell *= 2;
+  grid_lo_ = lo, cell_ = cell > 0 ? cell : 1;
+  grid_nx_ = int(std::floor(wx / cell_)) + 1, grid_ny_ = int(std::floor(wy / cell_)) + 1;
+  auto cell_range = [&](const CurveSegment &c, int &i0, int &i1, int &j0, int &j1) {
+    i0 = std::clamp(int(std::floor((c.box_lo.x - lo.x) / cell_)), 0, grid_nx_ - 1);
+    i1 = std::clamp(int(std::floor((c.box_hi.x - lo.x) / cell_)), 0, grid_nx_ - 1);
+    j0 = std::clamp(int(std::floor((c.box_lo.y - lo.y) / cell_)), 0, grid_ny_ - 1);
+    j1 = std::clamp(int(std::floor((c.box_hi.y - lo.y) / cell_)), 0, grid_ny_ - 1);
+  };
+  std::vector<int> count_in(size_t(grid_nx_) * grid_ny_ + 1, 0);
+  int i0, i1, j0, j1;
+  for (const CurveSegment &c : segments_) {
+    cell_range(c, i0, i1, j0, j1);
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i) count_in[size_t(j) * grid_nx_ + i + 1]++;
+  }
+  for (size_t k = 1; k < count_in.size(); ++k) count_in[k] += count_in[k - 1];
+  cell_start_ = count_in;
+  cell_segment_.assign(size_t(count_in.back()), 0);
+  for (int k = 0; k < count; ++k) {
+    cell_range(segments_[k], i0, i1, j0, j1);
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i) cell_segment_[size_t(count_in[size_t(j) * grid_nx_ + i]++)] = k;
+  }
+}
+
+template <class Visit, class GoOn> void SurfaceCurve::visit_near(Point p, Visit &&visit, GoOn &&go_on) const {
+  if (grid_nx_ == 0) return;
+  // p's cell, clamped to the grid: distances from the clamped point bound those from p below
+  // (the projection onto the grid's box does not increase distances to points inside it).
+  const int ci = std::clamp(int(std::floor((p.x - grid_lo_.x) / cell_)), 0, grid_nx_ - 1);
+  const int cj = std::clamp(int(std::floor((p.y - grid_lo_.y) / cell_)), 0, grid_ny_ - 1);
+  std::vector<int> seen;  // a segment spans a few cells: visited once
+  const int rings = std::max({ci, grid_nx_ - 1 - ci, cj, grid_ny_ - 1 - cj});
+  for (int r = 0; r <= rings; ++r) {
+    if (r > 0 && !go_on((r - 1) * cell_)) return;
+    for (int j = cj - r; j <= cj + r; ++j) {
+      if (j < 0 || j >= grid_ny_) continue;
+      const bool edge_row = j == cj - r || j == cj + r;
+      for (int i = ci - r; i <= ci + r; i += edge_row ? 1 : 2 * std::max(r, 1)) {
+        if (i < 0 || i >= grid_nx_) continue;
+        const size_t cell = size_t(j) * grid_nx_ + i;
+        for (int q = cell_start_[cell]; q < cell_start_[cell + 1]; ++q) {
+          const int k = cell_segment_[size_t(q)];
+          if (std::find(seen.begin(), seen.end(), k) != seen.end()) continue;
+          seen.push_back(k);
+          visit(k);
+        }
+        if (r == 0) break;
+      }
+    }
+  }
 }
 
 int SurfaceCurve::segment_of(int face, int k) const {
@@ -276,28 +345,46 @@ double SurfaceCurve::box_distance(int seg, Point p) const {
 
 bool SurfaceCurve::cast(Point p, Point n, int &seg, double &s, double &t, int hint) const {
   const int count = int(segments_.size());
+  // The nearest hit (|t| least); among equally near ones the first in the order of a scan that
+  // tries the hint and its neighbours, then every segment by index (rank below).
+  auto rank = [&](int k) {
+    if (hint >= 0 && hint < count) {
+      if (k == hint) return -3;
+      if (k == hint - 1) return -2;
+      if (k == hint + 1) return -1;
+    }
+    return k;
+  };
   double best = 0;
   bool found = false;
   auto consider = [&](int k) {
     double sk, tk;
     if (!intersect_line(k, p, n, 1e-12, sk, tk)) return;
-    if (!found || std::fabs(tk) < std::fabs(best)) best = tk, seg = k, s = std::clamp(sk, 0.0, 1.0), t = tk, found = true;
+    if (!found || std::fabs(tk) < std::fabs(best) || (std::fabs(tk) == std::fabs(best) && rank(k) < rank(seg)))
+      best = tk, seg = k, s = std::clamp(sk, 0.0, 1.0), t = tk, found = true;
   };
   if (hint >= 0 && hint < count)
     for (int k : {hint, hint - 1, hint + 1})
       if (k >= 0 && k < count) consider(k);
-  for (int k = 0; k < count; ++k) {
-    if (hint >= 0 && k >= hint - 1 && k <= hint + 1) continue;
-    // A hit on segment k is at least its box's distance away from p: no nearer than the best.
-    if (found && box_distance(k, p) > std::fabs(best) * (1 + 1e-12)) continue;
-    consider(k);
-  }
+  // A hit on segment k is at least its box's distance away from p: no nearer than the best.
+  visit_near(
+      p,
+      [&](int k) {
+        if (hint >= 0 && k >= hint - 1 && k <= hint + 1) return;
+        if (found && box_distance(k, p) > std::fabs(best) * (1 + 1e-12)) return;
+        consider(k);
+      },
+      [&](double distance) { return !found || distance <= std::fabs(best) * (1 + 1e-12); });
   return found;
 }
 
 bool SurfaceCurve::closest_point(Point p, Point facing, int &seg, double &s) const {
   double best = 1e300;
   bool found = false;
+  int nearest = -1;
+  // Among equally near points, the first of a scan that tries the segment whose box is nearest,
+  // then every segment by index.
+  auto rank = [&](int k) { return k == nearest ? -1 : k; };
   auto consider = [&](int k) {
     const CurveSegment &c = segments_[k];
     Point e = minus(c.pb, c.pa);
@@ -312,20 +399,26 @@ bool SurfaceCurve::closest_point(Point p, Point facing, int &seg, double &s) con
       }
     if (dot(surface_normal(k, x), facing) >= 0) return;
     double distance = norm(minus(point(k, x), p));
-    if (distance < best) best = distance, seg = k, s = x, found = true;
+    if (distance < best || (distance == best && found && rank(k) < rank(seg))) best = distance, seg = k, s = x, found = true;
   };
-  // The segment whose box is nearest first; then only the segments whose box is nearer than
-  // the best point so far (the box's distance bounds the curve's from below).
-  const int count = int(segments_.size());
-  int nearest = -1;
+  // The segment whose box is nearest (the first by index among equals) first; then only the
+  // segments whose box is nearer than the best point so far (the box's distance bounds the
+  // curve's from below).
   double nearest_box = 1e300;
-  for (int k = 0; k < count; ++k) {
-    const double d = box_distance(k, p);
-    if (d < nearest_box) nearest_box = d, nearest = k;
-  }
+  visit_near(
+      p,
+      [&](int k) {
+        const double d = box_distance(k, p);
+        if (d < nearest_box || (d == nearest_box && k < nearest)) nearest_box = d, nearest = k;
+      },
+      [&](double distance) { return nearest < 0 || distance <= nearest_box; });
   if (nearest >= 0) consider(nearest);
-  for (int k = 0; k < count; ++k)
-    if (k != nearest && box_distance(k, p) <= best) consider(k);
+  visit_near(
+      p,
+      [&](int k) {
+        if (k != nearest && box_distance(k, p) <= best) consider(k);
+      },
+      [&](double distance) { return distance <= best; });
   return found;
 }
 

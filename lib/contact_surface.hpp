@@ -84,10 +84,23 @@ public:
 private:
   // Distance from p to segment seg's box: a lower bound of the distance to its curve.
   double box_distance(int seg, Point p) const;
+  // A uniform grid of cells over the segments' boxes (each segment listed in every cell its box
+  // meets), so that cast and closest_point look at the segments near p first and stop when the
+  // rest are farther than what they found: O(1) segments a query on a mesh-like surface, where a
+  // scan of all segments made the geometry of a long interface cost O(q^2)
+  // (docs/benchmarks.md, "Long contact interfaces").
+  void build_grid();
+  // Calls visit(k) once for each segment, ring after ring of cells around p, while
+  // go_on(d) holds for d, a lower bound of the distance from p to the cells not yet visited.
+  template <class Visit, class GoOn> void visit_near(Point p, Visit &&visit, GoOn &&go_on) const;
 
   bool smooth_ = true;
   std::vector<SurfaceFace> faces_;
   std::vector<CurveSegment> segments_;
+  Point grid_lo_{0, 0};
+  double cell_ = 1;
+  int grid_nx_ = 0, grid_ny_ = 0;
+  std::vector<int> cell_start_, cell_segment_;
 };
 
 }  // namespace mc

@@ -225,6 +225,18 @@ bool primal_active_set(const DualQp &p, double s_scale, double d_scale, std::vec
 
 }  // namespace
 
+double load_imbalance(const DualQp &p) {
+  if (p.k == 0) return 0;
+  double e_norm = 0;
+  for (double v : p.e) e_norm += v * v;
+  e_norm = std::sqrt(e_norm);
+  std::vector<double> gt(size_t(p.k) * p.q), x;  // G^T, column j = row j of G
+  for (int j = 0; j < p.q; ++j)
+    for (int c = 0; c < p.k; ++c) gt[size_t(j) * p.k + c] = p.g[size_t(c) * p.q + j];
+  const double residual = nonnegative_least_squares(p.k, p.q, gt, p.e, x);
+  return e_norm > 0 ? residual / e_norm : residual;
+}
+
 bool solve_correction(const DualQp &p, const std::vector<char> &active, std::vector<double> &dl,
                       std::vector<double> &da) {
   double s_scale = 0;

@@ -48,6 +48,11 @@ using DualQpObserver = std::function<void(const DualQpIteration &)>;
 DualQpResult solve_dual_qp(const DualQp &problem, double tolerance, int max_iterations,
                            const std::vector<char> &active, const DualQpObserver &observe = {});
 
+// Floating bodies: min ||G^T l - e|| / ||e|| over l >= 0 (0 without floating bodies). Above
+// 1e-8 no contact forces (which only push) can balance the loads (DualQpOutcome::loads_not_balanced).
+// Uses p.g, p.e, p.q and p.k only.
+double load_imbalance(const DualQp &p);
+
 // One step of iterative refinement on a fixed active set (Model::refine_solution): the
 // correction (dl, da) with
 //   S_AA dl_A - G_A da = d_A,  G_A^T dl_A = e,  dl = 0 off A,

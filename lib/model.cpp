@@ -3,7 +3,7 @@
 #include "error.hpp"
 #include "lapack.hpp"
 #include <algorithm>
-#include <chrono>
+#include "stopwatch.hpp"
 #include <cmath>
 #include <exception>
 #include <functional>
@@ -17,17 +17,7 @@ namespace mc {
 
 namespace {
 
-double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
-// Adds the elapsed time since `start` to `sum` when it goes out of scope.
-struct Stopwatch {
-  double &sum;
-  double start = now();
-  explicit Stopwatch(double &s) : sum(s) {}
-  ~Stopwatch() { sum += now() - start; }
-};
 
 double dot(const std::vector<double> &a, const std::vector<double> &b) {
   double s = 0;
@@ -186,8 +176,9 @@ std::unique_ptr<BodySystem> Model::assemble_body(int b, BodyWork &work) const {
   return sys;
 }
 
-// The reduced stiffness of one body, its ordering (interface unknowns last) and factorization.
-void Model::factorize_body(int b, BodyWork &work) {
+// The reduced stiffness of one body: supports and the pins of its rigid modes removed, and its
+// contact unknowns (those in B), which the condensed path orders last.
+void Model::reduce_body(int b, BodyWork &work) {
   BodySystem *sys = system_[b].get();
   if (!sys) return;
   const int ndof = sys->stiffness.n;
@@ -197,18 +188,22 @@ void Model::factorize_body(int b, BodyWork &work) {
   sys->solve_dofs.clear();
   for (int i = 0; i < ndof; ++i)
     if (!excluded[i]) sys->solve_index[i] = int(sys->solve_dofs.size()), sys->solve_dofs.push_back(i);
-  std::vector<int> interface_reduced;
   sys->interface.clear();
   if (contact_) {
     std::vector<char> mark(ndof, 0);
     for (int dof : contact_->b_dof[b])
       if (sys->solve_index[dof] >= 0 && !mark[dof]) mark[dof] = 1, sys->interface.push_back(dof);
-    for (int dof : sys->interface) interface_reduced.push_back(sys->solve_index[dof]);
   }
-  {
-    Stopwatch watch(work.infos.t_assembly);
-    sys->reduced = sys->stiffness.principal_submatrix(sys->solve_index, int(sys->solve_dofs.size()));
-  }
+  Stopwatch watch(work.infos.t_assembly);
+  sys->reduced = sys->stiffness.principal_submatrix(sys->solve_index, int(sys->solve_dofs.size()));
+}
+
+// The condensed path's ordering (interface unknowns last) and symbolic factorization.
+void Model::analyze_body(int b, BodyWork &work) {
+  BodySystem *sys = system_[b].get();
+  if (!sys) return;
+  std::vector<int> interface_reduced;
+  for (int dof : sys->interface) interface_reduced.push_back(sys->solve_index[dof]);
   const double t_analysis = now();
   {
     Stopwatch watch(work.infos.t_analysis);
@@ -216,6 +211,11 @@ void Model::factorize_body(int b, BodyWork &work) {
   }
   work.log(MC_LOG_PHASE, "analysis: body %d, %zu unknowns, ordering and symbolic factorization in %.3g s", b + 1,
            sys->solve_dofs.size(), now() - t_analysis);
+}
+
+void Model::factorize_body(int b, BodyWork &work) {
+  BodySystem *sys = system_[b].get();
+  if (!sys) return;
   const double t_factor = now();
   {
     Stopwatch watch(work.infos.t_factor);
@@ -299,10 +299,24 @@ void Model::build_structure(const std::function<void(int, BodyWork &)> &then) {
 
   // Each body's factorization and, with contact, its share of S = sum_b s_b. The sum is formed
   // the same way whatever the thread count, so that the results do not depend on it.
+  // The sparse path when it is forced; otherwise each body is analysed for the condensed path
+  // first, and the automatic choice reads those analyses (choose_interface_solver).
+  const bool forced_sparse = contact_ && options.interface_solver == MC_INTERFACE_SPARSE;
+  for_each_body([&](int b, BodyWork &work) {
+    system_[b] = assemble_body(b, work);
+    reduce_body(b, work);
+    if (!forced_sparse) analyze_body(b, work);
+  });
+  if (contact_) contact_->sparse = forced_sparse || choose_interface_solver();
+  if (contact_ && contact_->sparse) {
+    build_sparse_structure();
+    for_each_body(then);
+    built_version_ = structure_version_;
+    return;
+  }
   std::vector<double> s_b[2];
   double t_operator[2] = {0, 0};
   for_each_body([&](int b, BodyWork &work) {
-    system_[b] = assemble_body(b, work);
     factorize_body(b, work);
     if (contact_ && system_[b]) {
       const double start = now();
@@ -516,7 +530,9 @@ void Model::solve_loads(int b, BodyWork &work, LoadSolve &out) const {
   for (size_t k = 0; k < x.size(); ++k) x[k] = out.lifted[sys.solve_dofs[k]];
   {
     Stopwatch watch(work.infos.t_solve);
-    if (contact_) {
+    if (contact_ && contact_->sparse) {
+      // the sparse path solves the loads with the contact problem (solve_sparse)
+    } else if (contact_) {
       out.y.resize(x.size());
       sys.cholesky.forward(x.data(), out.y.data());
     } else {
@@ -527,7 +543,7 @@ void Model::solve_loads(int b, BodyWork &work, LoadSolve &out) const {
   if (!contact_)
     for (size_t k = 0; k < x.size(); ++k) out.v[sys.solve_dofs[k]] = x[k];
   work.infos.dofs += long(sys.solve_dofs.size() + sys.rigid.pinned_dofs.size());
-  work.infos.factor_nnz += sys.cholesky.factor_nnz();
+  if (!contact_ || !contact_->sparse) work.infos.factor_nnz += sys.cholesky.factor_nnz();  // (sparse: solve_sparse)
   out.seconds = now() - start;
 }
 
@@ -580,7 +596,14 @@ void Model::solve() {
   std::vector<double> lambda;
   std::vector<double> alpha;
   DualQp qp;  // kept for the refinement (its S and G)
-  if (contact_) {
+  // displacements_known: loads[b].v already holds K^+ (f_eff - B^T lambda) (the sparse path, or
+  // after a refinement).
+  bool displacements_known = false;
+  if (contact_) infos.interface_solver = contact_->sparse ? MC_INTERFACE_SPARSE : MC_INTERFACE_CONDENSED;
+  if (contact_ && contact_->sparse) {
+    solve_sparse(loads, lambda, alpha);
+    displacements_known = true;
+  } else if (contact_) {
     ContactSystem &cs = *contact_;
     const int q = cs.rows.size();
     qp.q = q;
@@ -681,8 +704,6 @@ void Model::solve() {
   // u = K^+ (f_eff - B^T lambda) + R alpha, then the prescribed values.
   const double t_recovery = now();
   double f_norm2[2] = {0, 0}, residual_norm2[2] = {0, 0}, energy[2] = {0, 0};
-  // displacements_known: loads[b].v already holds K^+ (f_eff - B^T lambda) (after a refinement).
-  bool displacements_known = false;
   auto recover = [&](int b, BodyWork &work) {
     if (!system_[b]) return;
     BodySystem &sys = *system_[b];
@@ -750,7 +771,7 @@ void Model::solve() {
   for_each_body(recover);
   if (contact_) {
     infos.gap_residual = recovered_gap_residual(lambda);
-    if (infos.gap_residual > kRefineAboveGapResidual && refine_solution(qp, loads, lambda, alpha)) {
+    if (!contact_->sparse && infos.gap_residual > kRefineAboveGapResidual && refine_solution(qp, loads, lambda, alpha)) {
       displacements_known = true;
       f_norm2[0] = f_norm2[1] = residual_norm2[0] = residual_norm2[1] = 0;
       for_each_body(recover);  // reactions, energy and stresses of the refined displacements

@@ -10,6 +10,7 @@
 #include "progress_log.hpp"
 #include "rigid_modes.hpp"
 #include "sparse_cholesky.hpp"
+#include "sparse_contact_solve.hpp"
 #include <functional>
 #include <memory>
 #include <string>
@@ -73,6 +74,15 @@ struct ContactSystem {
   std::vector<double> w[2];
   int w_rows[2] = {0, 0};
   std::vector<char> last_active;
+  // The sparse path (MC_INTERFACE_SPARSE; sparse_contact_path.cpp): its unknowns are body 1's
+  // free unknowns from column_offset[0], body 2's from column_offset[1], the mortar values w
+  // (2 per ConstraintRows::aux point) from aux_offset, the rigid-mode amplitudes from
+  // mode_offset; its rows the q contact rows, then two mortar equations per aux point.
+  bool sparse = false;
+  SparseContactStructure structure;
+  SparseContactSolver solver;
+  int column_offset[2] = {0, 0}, aux_offset = 0, mode_offset = 0, modes = 0;
+  std::vector<double> g;           // G = B R, q x modes, column-major (both paths' floating bodies)
 };
 
 struct Options {
@@ -85,6 +95,7 @@ struct Options {
   int contact_surface = MC_SURFACE_SMOOTH;
   double feature_angle = 40;  // degrees (docs/robustness.md: chosen by measurement)
   int threads = 0;  // MC_OPTION_THREADS: 0 automatic, 1 serial, n: at most n threads
+  int interface_solver = MC_INTERFACE_AUTO;  // MC_OPTION_INTERFACE_SOLVER
 };
 
 struct Infos {
@@ -93,6 +104,7 @@ struct Infos {
   double energy = 0, complementarity = 0, equilibrium = 0;
   double gap_residual = 0;  // MC_INFO_GAP_RESIDUAL: complementarity of the returned displacements' gaps
   int threads = 1;  // threads the last solve ran the bodies' work on (1 or 2)
+  int interface_solver = 0;  // MC_INFO_INTERFACE_SOLVER: MC_INTERFACE_CONDENSED or _SPARSE; 0 without contact
 };
 
 // The smaller body's unknowns (2 x its nodes) from which MC_OPTION_THREADS = 0 (automatic)
@@ -163,7 +175,16 @@ private:
   // std::thread joined before returning. Exceptions are rethrown here, body 1's first.
   template <class Task> void for_each_body(Task &&task);
   std::unique_ptr<BodySystem> assemble_body(int b, BodyWork &work) const;
+  void reduce_body(int b, BodyWork &work);
+  void analyze_body(int b, BodyWork &work);
   void factorize_body(int b, BodyWork &work);
+  // The automatic choice of interface solver (MC_OPTION_INTERFACE_SOLVER), after the bodies'
+  // analyses for the condensed path; also refuses a path too large for memory. True: sparse.
+  bool choose_interface_solver();
+  void build_sparse_structure();
+  void solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::vector<double> &alpha);
+  // Row r's share of the rigid modes, G = B R (q x modes, column-major), and e = R^T f_eff.
+  std::vector<double> rigid_mode_rows() const;
   void interface_block(int b, std::vector<double> &s_b, BodyWork &work);
   void build_structure(const std::function<void(int, BodyWork &)> &then);
   void solve_loads(int b, BodyWork &work, LoadSolve &out) const;

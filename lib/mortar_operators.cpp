@@ -42,6 +42,7 @@ void append_row(ConstraintRows &rows, const TracePoint &t, const int *nodes, con
   rows.normal.push_back(t.normal);
   rows.gap0.push_back(t.gap0);
   rows.own_position.push_back(t.is_position() ? t.a : -1);
+  rows.aux.push_back(-1);
 }
 
 // The pointwise row at a trace point (node-to-segment, and the ends of Gamma_c in (3.2)).
@@ -99,32 +100,81 @@ int solve_cyclic_tridiagonal(std::vector<double> lower, std::vector<double> diag
   return -1;
 }
 
+// A sparse row: (column, value), columns ascending and distinct once merged.
+using SparseRow = std::vector<std::pair<int, double>>;
+
+void merge(SparseRow &row) {
+  std::sort(row.begin(), row.end());
+  size_t kept = 0;
+  for (size_t i = 0; i < row.size(); ++i) {
+    if (kept > 0 && row[kept - 1].first == row[i].first) row[kept - 1].second += row[i].second;
+    else row[kept++] = row[i];
+  }
+  row.resize(kept);
+}
+
+// Row k of D^-1 (D tridiagonal: lower, diag, upper; cyclic on a closed run), restricted to the
+// points whose entries are not round-off: D is diagonally dominant (a mass matrix on the trace,
+// or the dual basis' diagonal one), so the row decays geometrically away from k (about 0.27 per
+// point) and a window of points around k gives it to full precision. The window grows until
+// its ends are below 1e-20 of the largest entry, or it covers the run. Interior points
+// first..last (open run) or all n (closed). Cost: O(window) per row, where solving D with one
+// right-hand side per column of M cost O(n) per column, O(n^2) for a long run.
+SparseRow inverse_row(const std::vector<double> &lower, const std::vector<double> &diag, const std::vector<double> &upper,
+                      int first, int last, bool closed, int k) {
+  const int n = last - first + 1;
+  for (int half = 24;; half *= 2) {
+    const bool whole = 2 * half + 1 >= n;
+    // Row k of D^-1 is the solution of D^T z = e_k. Window: positions k - half .. k + half
+    // (mod n on a loop), or the whole run.
+    std::vector<int> point;
+    if (whole) {
+      for (int i = first; i <= last; ++i) point.push_back(i);
+    } else if (closed) {
+      for (int j = -half; j <= half; ++j) point.push_back(((k + j) % n + n) % n);
+    } else {
+      for (int i = std::max(first, k - half); i <= std::min(last, k + half); ++i) point.push_back(i);
+    }
+    const int m = int(point.size());
+    // D^T restricted to the window: (D^T)_{i,i-1} = upper[i-1], (D^T)_{i,i+1} = lower[i+1].
+    std::vector<double> lo(m, 0.0), di(m), up(m, 0.0), z(m, 0.0);
+    for (int j = 0; j < m; ++j) {
+      const int i = point[j];
+      di[j] = diag[i];
+      const int before = closed ? (i + n - 1) % n : i - 1, after = closed ? (i + 1) % n : i + 1;
+      if (j > 0 || (whole && closed)) lo[j] = upper[before];
+      if (j < m - 1 || (whole && closed)) up[j] = lower[after];
+      if (i == k) z[j] = 1;
+    }
+    int bad;
+    if (whole && closed) bad = solve_cyclic_tridiagonal(lo, di, up, 1, z);
+    else bad = solve_tridiagonal(lo, di, up, 0, m - 1, 1, z);
+    if (bad >= 0) return {};  // the caller has checked D's pivots over the whole run
+    double largest = 0;
+    for (double v : z) largest = std::max(largest, std::fabs(v));
+    const bool converged = whole || ((closed || point.front() == first || std::fabs(z.front()) <= 1e-20 * largest) &&
+                                     (closed || point.back() == last || std::fabs(z.back()) <= 1e-20 * largest) &&
+                                     (!closed || std::max(std::fabs(z.front()), std::fabs(z.back())) <= 1e-20 * largest));
+    if (!converged) continue;
+    SparseRow row;
+    for (int j = 0; j < m; ++j)
+      if (z[j] != 0) row.emplace_back(point[j], z[j]);
+    return row;
+  }
+}
+
 // Rows of one run for the mortar methods: the paper's pi_h^1 (3.2).
 void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, const LineMeasure &measure,
                  ConstraintRows &rows) {
   const int n = int(run.trace.size());
   const bool closed = run.closed;
-  // Columns: the body-2 nodes this run touches.
-  std::map<int, int> column;
-  auto touch = [&](SurfacePoint p) {
-    const CurveSegment &s = g.mortar.segments()[p.segment];
-    column.emplace(s.a, 0), column.emplace(s.b, 0);
-  };
-  for (const auto &element : run.elements)
-    for (const QuadraturePoint &q : element) touch(q.mortar);
-  if (!closed) touch(run.trace.front().projection), touch(run.trace.back().projection);
-  std::vector<int> column_node;
-  for (auto &[node, index] : column) index = int(column_node.size()), column_node.push_back(node);
-  const int nc = int(column_node.size());
-
   // End rows: (pi phi)(c_i) = phi(c_i), i.e. interpolation at the projection of c_1, c_2.
-  std::vector<double> end_row[2];
+  SparseRow end_row[2];
   if (!closed)
     for (int e = 0; e < 2; ++e) {
-      end_row[e].assign(nc, 0.0);
       std::map<int, double> w;
       add_interpolation(g, run.trace[e == 0 ? 0 : n - 1].projection, w);
-      for (auto &[node, value] : w) end_row[e][column[node]] += value;
+      for (auto &[node, value] : w) end_row[e].emplace_back(node, value);
     }
   // The multipliers (rows of D and M) that trace point k's test function on element e feeds.
   // Closed loop: its own. Open run, the paper's M_h^1: psi_0 merges into psi_1 and psi_last
@@ -147,8 +197,10 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, co
     if (share && k == n - 2 && e == n - 3) return add(n - 2, theta_end * value), add(n - 3, (1 - theta_end) * value);
     add(k, value);
   };
-  // D (band: trace points i-1, i, i+1 of row i, cyclic on a loop) and M (dense over the columns).
-  std::vector<double> lower(n, 0.0), diag(n, 0.0), upper(n, 0.0), mm(size_t(n) * nc, 0.0);
+  // D (band: trace points i-1, i, i+1 of row i, cyclic on a loop) and M (sparse: row i over the
+  // body-2 nodes that its multiplier's support faces).
+  std::vector<double> lower(n, 0.0), diag(n, 0.0), upper(n, 0.0);
+  std::vector<SparseRow> mm(n);
   for (int e = 0; e < int(run.elements.size()); ++e) {
     double c[4] = {2, -1, -1, 2};
     if (method == MC_METHOD_DUAL_MORTAR) measure.dual_basis(run.trace[e].x, run.trace[(e + 1) % n].x, c);
@@ -165,34 +217,62 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, co
             const int trace = closed ? (e + j) % n : e + j;
             const int offset = closed ? ((trace - i) % n + n + 1) % n - 1 : trace - i;  // -1, 0 or +1
             (offset == 0 ? diag : offset > 0 ? upper : lower)[i] += w * phi[j];
-            mm[size_t(i) * nc + column[node2[j]]] += w * phi2[j];
+            mm[i].emplace_back(node2[j], w * phi2[j]);
           }
         });
     }
   }
-  // Interior values: D_II P_I = M_I - D_IE P_E (open), D P = M (closed).
-  std::vector<double> rhs(mm);
-  int singular;
-  if (closed) {
-    singular = solve_cyclic_tridiagonal(lower, diag, upper, nc, rhs);
-  } else {
-    for (int c = 0; c < nc; ++c) {
-      rhs[size_t(1) * nc + c] -= lower[1] * end_row[0][c];
-      rhs[size_t(n - 2) * nc + c] -= upper[n - 2] * end_row[1][c];
-    }
-    singular = solve_tridiagonal(lower, diag, upper, 1, n - 2, nc, rhs);
+  // R = M - D_E P_E on the interior points (open), M (closed): D_II P_I = R (3.2).
+  std::vector<SparseRow> r(std::move(mm));
+  if (!closed) {
+    for (auto &[node, value] : end_row[0]) r[1].emplace_back(node, -lower[1] * value);
+    for (auto &[node, value] : end_row[1]) r[n - 2].emplace_back(node, -upper[n - 2] * value);
   }
+  for (SparseRow &row : r) merge(row);
+  // D's pivots over the whole run (no right-hand side): a vanishing one is an error.
+  const int first = closed ? 0 : 1, last = closed ? n - 1 : n - 2;
+  std::vector<double> none;
+  const int singular = closed ? solve_cyclic_tridiagonal(lower, diag, upper, 0, none)
+                              : solve_tridiagonal(lower, diag, upper, first, last, 0, none);
   if (singular >= 0)
     fail(MC_ERROR_CONTACT,
          "the mortar matrix D is singular at body-1 contact node %d: body 2's surface covers too little "
          "of the body-1 edges around it",
          g.nodes[run.trace[singular].a]);
 
+  // The sparse form: interior point k is auxiliary point aux0 + k (open runs: k - 1, the ends
+  // have none). Its equation: D's band on the interior points, R on the body-2 nodes.
+  const int aux0 = rows.aux_count - first;
+  for (int k = first; k <= last; ++k) {
+    const int neighbour[3] = {closed ? (k + n - 1) % n : k - 1, k, closed ? (k + 1) % n : k + 1};
+    const double d[3] = {lower[k], diag[k], upper[k]};
+    for (int j = 0; j < 3; ++j) {
+      if (!closed && (neighbour[j] < first || neighbour[j] > last)) continue;  // an end: moved into R
+      if (d[j] != 0) rows.aux_d_point.push_back(aux0 + neighbour[j]), rows.aux_d.push_back(d[j]);
+    }
+    rows.aux_d_start.push_back(int(rows.aux_d_point.size()));
+    for (auto &[node, value] : r[k])
+      if (value != 0) rows.aux_r_node.push_back(node), rows.aux_r.push_back(value);
+    rows.aux_r_start.push_back(int(rows.aux_r_node.size()));
+  }
+  // The explicit rows pi_h = D^-1 R (row k: sum_j (D^-1)_kj R_j), for the condensed path.
   for (int k = 0; k < n; ++k) {
     const bool end = !closed && (k == 0 || k == n - 1);
-    const double *values = end ? end_row[k == 0 ? 0 : 1].data() : &rhs[size_t(k) * nc];
-    append_row(rows, run.trace[k], column_node.data(), values, nc);
+    SparseRow values;
+    if (end) {
+      values = end_row[k == 0 ? 0 : 1];
+    } else {
+      for (auto &[j, z] : inverse_row(lower, diag, upper, first, last, closed, k))
+        for (auto &[node, value] : r[j]) values.emplace_back(node, z * value);
+    }
+    merge(values);
+    std::vector<int> nodes;
+    std::vector<double> w;
+    for (auto &[node, value] : values) nodes.push_back(node), w.push_back(value);
+    append_row(rows, run.trace[k], nodes.data(), w.data(), int(nodes.size()));
+    if (!end) rows.aux.back() = aux0 + k;
   }
+  rows.aux_count += last - first + 1;
 }
 
 }  // namespace

@@ -28,6 +28,24 @@ struct ConstraintRows {
   // of Gamma_c inside a partly covered segment.
   std::vector<int> own_position;
   int size() const { return int(normal.size()); }
+
+  // The same rows in the form the sparse interface solver uses (sparse_contact_solve.hpp). A
+  // mortar row's body-2 weights are D^-1 (M - D_E P_E): D is tridiagonal, so they spread over
+  // the whole run (truncated above at 1e-17) and B^T B would be nearly dense along a long
+  // interface. Instead the values w_a = pi_h(u2)(x_a) of a run's interior trace points are
+  // kept as auxiliary unknowns (two components each), tied to u2 by the sparse equations
+  //     sum_b D_ab w_b - sum_l R_al u2_l = 0   (per component; R = M - D_E P_E, (3.2)),
+  // and the row reads  sum_k weight1 u1(position1) . n - w_a . n <= g0.
+  // aux[r]: row r's auxiliary point, or -1 where the row's weights2 are used as they are (the
+  // ends of Gamma_c, one-element runs, node-to-segment).
+  std::vector<int> aux;
+  int aux_count = 0;
+  // Per auxiliary point a: its D entries (aux_d_point, aux_d) and its R entries (aux_r_node,
+  // body-2 nodes, aux_r), CSR.
+  std::vector<int> aux_d_start{0}, aux_d_point;
+  std::vector<double> aux_d;
+  std::vector<int> aux_r_start{0}, aux_r_node;
+  std::vector<double> aux_r;
 };
 
 // measure: the weight of the mortar integrals (the dual basis is biorthogonal in it).

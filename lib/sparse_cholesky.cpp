@@ -276,6 +276,8 @@ std::vector<double> SparseCholesky::interface_factor(std::vector<int> &order) co
   return l;
 }
 
+double SparseCholesky::analysis_flops() const { return impl_->factor ? impl_->common.fl : 0; }
+
 long SparseCholesky::factor_nnz() const {
   const cholmod_factor *f = impl_->factor;
   if (!f) return 0;

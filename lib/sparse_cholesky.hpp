@@ -37,6 +37,8 @@ public:
   std::vector<double> interface_factor(std::vector<int> &order) const;
 
   long factor_nnz() const;
+  // CHOLMOD's count of the numeric factorization's floating-point operations, from the analysis.
+  double analysis_flops() const;
   int n() const { return n_; }
 
 private:

@@ -19,3 +19,7 @@ mc_add_check_test(test_model_threads test_model_threads.c)
 target_link_libraries(test_model_threads PRIVATE hertz_scene Threads::Threads PkgConfig::OPENBLAS)
 add_test(NAME test_model_threads_blas1 COMMAND test_model_threads)
 set_tests_properties(test_model_threads_blas1 PROPERTIES TIMEOUT 120 ENVIRONMENT OPENBLAS_NUM_THREADS=1)
+
+# Westergaard's wavy contact, many separate patches on one interface (the scene of
+# bench/westergaard.c at N = 4 wavelengths), against the closed form.
+mc_add_check_test(test_westergaard test_westergaard.c westergaard_scene.c)

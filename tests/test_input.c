@@ -18,6 +18,9 @@
  *   material          the bounds of E and nu, exactly and just inside; finite numbers whose
  *                     solution overflows (MC_ERROR_ARGUMENT from mc_solve, not inf/NaN results)
  *   options_infos     every option with values out of range, wrong type; infos of wrong type
+ *   interface_solver  MC_OPTION_INTERFACE_SOLVER out of range (the message names the value and
+ *                     the option) and through mc_set_option_real; MC_INFO_INTERFACE_SOLVER
+ *                     through mc_get_info_real (both "integer-valued")
  *   out_of_order      each call before its prerequisites, results after a change or a failed
  *                     solve; contact surfaces that do not face each other or do not overlap
  *   gap_offset        mc_set_gap_offset: state, ids, nodes not on the contact surface
@@ -703,7 +706,7 @@ START_TEST(test_options_infos) {
   FAILS(mc_get_info_real(m, MC_INFO_DOFS, &rv), MC_ERROR_ARGUMENT, "integer-valued");
   FAILS(mc_get_info_int(m, MC_INFO_GAP_RESIDUAL, &iv), MC_ERROR_ARGUMENT, "real-valued"); /* the last real one */
   for (k = -1; k <= 31; ++k) {
-    if ((k >= MC_INFO_DOFS && k <= MC_INFO_FACTORIZATIONS) || (k >= MC_INFO_TIME_ASSEMBLY && k <= MC_INFO_GAP_RESIDUAL))
+    if ((k >= MC_INFO_DOFS && k <= MC_INFO_INTERFACE_SOLVER) || (k >= MC_INFO_TIME_ASSEMBLY && k <= MC_INFO_GAP_RESIDUAL))
       continue;
     FAILS(mc_get_info_int(m, k, &iv), MC_ERROR_ARGUMENT, "info");
     FAILS(mc_get_info_real(m, k, &rv), MC_ERROR_ARGUMENT, "info");
@@ -712,6 +715,43 @@ START_TEST(test_options_infos) {
   ck_assert(rv == -7);
   /* options unchanged: the same answer */
   scene_usable(&s);
+  scene_free(&s);
+}
+END_TEST
+
+/* MC_OPTION_INTERFACE_SOLVER takes MC_INTERFACE_AUTO (0), _CONDENSED (1) or _SPARSE (2): any
+   other value fails with a message naming the value and the option (a 64-bit value is not
+   truncated to a valid one), the real call says the option is integer-valued, and
+   MC_INFO_INTERFACE_SOLVER is an integer info. The failed calls change nothing. */
+START_TEST(test_interface_solver_option) {
+  scene s;
+  mc_model *m;
+  static const int64_t bad[6] = {-1, MC_INTERFACE_SPARSE + 1, INT64_MIN, INT64_MAX,
+                                 ((int64_t)1 << 32) + MC_INTERFACE_SPARSE, -((int64_t)1 << 32)};
+  char value[64];
+  int k;
+  int64_t iv = -7;
+  double rv = -7;
+  scene_make(&s, 0);
+  m = s.m;
+  for (k = 0; k < 6; ++k) {
+    snprintf(value, sizeof value, "value = %lld", (long long)bad[k]);
+    FAILS(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, bad[k]), MC_ERROR_ARGUMENT, value);
+    ck_assert_msg(strstr(mc_errmsg(m), "MC_OPTION_INTERFACE_SOLVER") != NULL, "message \"%s\" names no option",
+                  mc_errmsg(m));
+  }
+  FAILS(mc_set_option_real(m, MC_OPTION_INTERFACE_SOLVER, MC_INTERFACE_SPARSE), MC_ERROR_ARGUMENT, "integer-valued");
+  FAILS(mc_set_option_real(m, MC_OPTION_INTERFACE_SOLVER, 3.0), MC_ERROR_ARGUMENT, "integer-valued");
+  FAILS(mc_get_info_real(m, MC_INFO_INTERFACE_SOLVER, &rv), MC_ERROR_ARGUMENT, "integer-valued");
+  ck_assert(rv == -7); /* untouched */
+  SUCCEEDS(mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &iv)); /* the contact solve of scene_make: one of the two */
+  ck_assert_msg(iv == MC_INTERFACE_CONDENSED || iv == MC_INTERFACE_SPARSE, "MC_INFO_INTERFACE_SOLVER = %lld",
+                (long long)iv);
+  /* the option unchanged, the results kept: the same answer */
+  scene_usable(&s);
+  /* the default, set explicitly: a rebuild, the same answer */
+  SUCCEEDS(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, MC_INTERFACE_AUTO));
+  scene_resolves(&s);
   scene_free(&s);
 }
 END_TEST
@@ -837,6 +877,7 @@ static Suite *input_suite(void) {
   tcase_add_loop_test(tc, test_non_finite, 0, 2);
   tcase_add_test(tc, test_material);
   tcase_add_test(tc, test_options_infos);
+  tcase_add_test(tc, test_interface_solver_option);
   suite_add_tcase(s, tc);
   tc = tcase_create("state");
   tcase_add_loop_test(tc, test_out_of_order, 0, 2);

@@ -121,15 +121,20 @@ START_TEST(test_options) {
   {
     static const int methods[3] = {MC_METHOD_MORTAR, MC_METHOD_DUAL_MORTAR, MC_METHOD_NODE_TO_SEGMENT};
     static const int orderings[3] = {MC_ORDERING_AUTO, MC_ORDERING_AMD, MC_ORDERING_METIS};
+    static const int interface_solvers[3] = {MC_INTERFACE_SPARSE, MC_INTERFACE_CONDENSED, MC_INTERFACE_AUTO};
     for (k = 0; k < 3; ++k) {
+      int64_t ran = -1;
       OK(mc_set_option_int(m, MC_OPTION_METHOD, methods[k]));
       OK(mc_set_option_int(m, MC_OPTION_ORDERING, orderings[k]));
+      OK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, interface_solvers[k]));
       OK(mc_set_option_int(m, MC_OPTION_MAX_ITERATIONS, k == 0 ? 1 : 1000000));
       OK(mc_set_option_real(m, MC_OPTION_TOLERANCE, k == 0 ? 1e-14 : 0.5));
       ck_assert_str_eq(mc_errmsg(m), "");
       OK(mc_solve(m));
       OK(mc_get_displacement(m, 1, u));
       ck_assert(max_diff(u, u0, n, 1) <= 1e-12 * max_abs(u0, n));
+      OK(mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &ran));
+      ck_assert_int_eq(ran, 0); /* no contact: neither interface solver ran */
     }
   }
   OK(mc_set_option_int(m, MC_OPTION_Q1_INTEGRATION, MC_Q1_BBAR));
@@ -149,6 +154,7 @@ START_TEST(test_options) {
   FAILS(mc_set_option_int(m, MC_OPTION_MAX_ITERATIONS, 0), MC_ERROR_ARGUMENT, "value");
   FAILS(mc_set_option_int(m, MC_OPTION_ORDERING, 3), MC_ERROR_ARGUMENT, "value");
   FAILS(mc_set_option_int(m, MC_OPTION_Q1_INTEGRATION, 2), MC_ERROR_ARGUMENT, "value");
+  FAILS(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, 3), MC_ERROR_ARGUMENT, "value");
   FAILS(mc_set_option_real(m, MC_OPTION_TOLERANCE, 0), MC_ERROR_ARGUMENT, "value");
   FAILS(mc_set_option_real(m, MC_OPTION_TOLERANCE, 1), MC_ERROR_ARGUMENT, "value");
   FAILS(mc_set_option_real(m, MC_OPTION_TOLERANCE, -1e-8), MC_ERROR_ARGUMENT, "value");
@@ -205,11 +211,14 @@ START_TEST(test_infos) {
   ck_assert(r >= 0 && r <= 1e-10);
   OK(mc_get_info_real(m, MC_INFO_GAP_RESIDUAL, &r));
   ck_assert(r == 0); /* no contact */
+  OK(mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &v));
+  ck_assert_int_eq(v, 0); /* no contact: no interface solver ran */
 
   /* wrong kinds and unknown infos */
   FAILS(mc_get_info_int(m, MC_INFO_STRAIN_ENERGY, &v), MC_ERROR_ARGUMENT, "info");
   FAILS(mc_get_info_int(m, 0, &v), MC_ERROR_ARGUMENT, "info");
-  FAILS(mc_get_info_int(m, 7, &v), MC_ERROR_ARGUMENT, "info");
+  FAILS(mc_get_info_int(m, 8, &v), MC_ERROR_ARGUMENT, "info");
+  FAILS(mc_get_info_real(m, MC_INFO_INTERFACE_SOLVER, &r), MC_ERROR_ARGUMENT, "info");
   FAILS(mc_get_info_int(m, 19, &v), MC_ERROR_ARGUMENT, "info");
   FAILS(mc_get_info_real(m, MC_INFO_DOFS, &r), MC_ERROR_ARGUMENT, "info");
   FAILS(mc_get_info_real(m, 30, &r), MC_ERROR_ARGUMENT, "info");

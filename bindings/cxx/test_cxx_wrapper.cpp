@@ -1,7 +1,8 @@
 // Tests of include/mortarcontact.hpp: ownership (move-only, destroyed once: run under ASan and
 // valgrind as a memcheck test), errors as exceptions with the status and the message, the
-// vector and pointer overloads, the getters' sizes, options, the log callback, and a contact
-// solve (the README's scene: uniform pressure 0.1 transmitted exactly).
+// vector and pointer overloads, the getters' sizes, options (the interface solver forced either
+// way, and which one ran), the log callback, and a contact solve (the README's scene: uniform
+// pressure 0.1 transmitted exactly).
 // Whether every C function and constant has its wrapper: check_cxx_wrapper.py (cxx_wrapper_coverage).
 #include <mortarcontact.hpp>
 
@@ -178,6 +179,28 @@ void test_readme_scene_pointer_overloads_one_based() {
   EXPECT_ERROR(mc::Status::error_argument, m.set_option_int(mc::Option::method, 99));
 }
 
+// Option::interface_solver forces either path of the contact solve; Info::interface_solver says
+// which one ran. Both give the README scene's exact answer; 3 is not a value.
+void test_interface_solver_forced() {
+  for (mc::InterfaceSolver path : {mc::InterfaceSolver::sparse, mc::InterfaceSolver::condensed}) {
+    mc::Model m;
+    set_readme_scene(m);
+    m.set_option_int(mc::Option::interface_solver, path);
+    m.solve();
+    expect_uniform_pressure(m, 0.1, __LINE__);
+    EXPECT(m.get_info_int(mc::Info::interface_solver) == static_cast<std::int64_t>(path));
+  }
+  mc::Model m;
+  set_readme_scene(m);
+  EXPECT(m.get_info_int(mc::Info::interface_solver) == 0);  // before a solve
+  EXPECT_ERROR(mc::Status::error_argument, m.set_option_int(mc::Option::interface_solver, 3));
+  EXPECT_ERROR(mc::Status::error_argument, m.set_option_real(mc::Option::interface_solver, 1.0));
+  m.set_option_int(mc::Option::interface_solver, mc::InterfaceSolver::automatic);
+  m.solve();
+  const std::int64_t ran = m.get_info_int(mc::Info::interface_solver);
+  EXPECT(ran == MC_INTERFACE_CONDENSED || ran == MC_INTERFACE_SPARSE);  // automatic: one of the two
+}
+
 void test_loads_and_material_variants() {
   // Body 1 alone, clamped at the bottom: every load kind moves the top; clear_loads undoes them.
   mc::Model m;
@@ -252,6 +275,7 @@ int main() {
   test_move_only_ownership();
   test_readme_scene_vector_overloads();
   test_readme_scene_pointer_overloads_one_based();
+  test_interface_solver_forced();
   test_loads_and_material_variants();
   test_log_callback();
   test_write_vtu();

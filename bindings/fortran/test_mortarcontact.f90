@@ -1,5 +1,6 @@
-! Tests of the Fortran binding that need no contact solve: version, strings, the wrapper's
-! size checks and messages, errors from the library, 1-based ids, and a single-body solve.
+! Tests of the Fortran binding: version, strings, the wrapper's size checks and messages, errors
+! from the library, 1-based ids, a single-body solve, and the README's two-square contact scene
+! with MC_OPTION_INTERFACE_SOLVER forced to each path (MC_INFO_INTERFACE_SOLVER says which ran).
 ! The contact patch test is examples/fortran/patch_test.f90 (also run by ctest).
 
 !> The log callback of the test: counts messages by level and keeps the phase messages.
@@ -41,6 +42,11 @@ program test_mortarcontact
   integer(mc_int) :: tri(3, 2) = reshape([1, 2, 3, 1, 3, 4], [3, 2])
   real(mc_real) :: u(2, 4), r(2, 4), sigma(4, 2), wrong(2, 3), d(3, 3, 2), big(3, 4)
   real(mc_real) :: strided(4, 4)
+  ! the README's scene: body 2, the unit square below body 1 (the square xy above)
+  real(mc_real) :: xy2(2, 4) = reshape([0d0, -1d0, 1d0, -1d0, 1d0, 0d0, 0d0, 0d0], [2, 4])
+  real(mc_real) :: pressure(2)
+  integer, parameter :: paths(2) = [MC_INTERFACE_SPARSE, MC_INTERFACE_CONDENSED]
+  integer :: k, ran
   type(log_record), target :: rec
   character(len=256) :: line
   integer :: unit, ios
@@ -142,6 +148,34 @@ program test_mortarcontact
   call expect(mc_set_index_base(m, 0), MC_OK, 'mc_set_index_base(0)')
   call mc_destroy(m)
   call mc_destroy(m)   ! twice is fine: the wrapper nulls the pointer
+
+  ! The README's scene (pressure 0.1 on body 1's top, transmitted exactly) with each interface
+  ! solver forced: MC_INFO_INTERFACE_SOLVER is the path that ran; 3 is not a value.
+  do k = 1, size(paths)
+     call expect(mc_create(m), MC_OK, 'mc_create (contact)')
+     call expect(mc_set_mesh(m, 1, xy, tri), MC_OK, 'mesh 1')
+     call expect(mc_set_mesh(m, 2, xy2, tri), MC_OK, 'mesh 2')
+     call expect(mc_set_material(m, 1, 1d0, 0.3d0), MC_OK, 'material 1')
+     call expect(mc_set_material(m, 2, 1d0, 0.3d0), MC_OK, 'material 2')
+     call expect(mc_fix(m, 1, [1, 4], MC_X), MC_OK, 'rollers 1')
+     call expect(mc_fix(m, 2, [1, 4], MC_X), MC_OK, 'rollers 2')
+     call expect(mc_fix(m, 2, [1, 2], MC_Y), MC_OK, 'base 2')
+     call expect(mc_add_pressure(m, 1, reshape([3, 4], [2, 1]), [0.1d0]), MC_OK, 'pressure on top')
+     call expect(mc_set_contact(m, 1, reshape([1, 2], [2, 1])), MC_OK, 'contact 1')
+     call expect(mc_set_contact(m, 2, reshape([3, 4], [2, 1])), MC_OK, 'contact 2')
+     call expect(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, 3), MC_ERROR_ARGUMENT, 'interface solver 3')
+     call check(index(mc_errmsg(m), 'MC_OPTION_INTERFACE_SOLVER') > 0, 'message: ' // mc_errmsg(m))
+     call expect(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, paths(k)), MC_OK, 'interface solver')
+     call expect(mc_solve(m), MC_OK, 'mc_solve (contact)')
+     ran = -1
+     call expect(mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, ran), MC_OK, 'MC_INFO_INTERFACE_SOLVER')
+     write (line, '(a, i0, a, i0)') 'MC_INFO_INTERFACE_SOLVER = ', ran, ', forced ', paths(k)
+     call check(ran == paths(k), trim(line))
+     pressure = 0
+     call expect(mc_get_contact_pressure(m, pressure), MC_OK, 'mc_get_contact_pressure')
+     call check(all(abs(pressure - 0.1d0) < 1d-12), 'uniform contact pressure 0.1')
+     call mc_destroy(m)
+  end do
 
   if (failures > 0) then
      print '(i0, a)', failures, ' check(s) failed'

@@ -205,6 +205,8 @@ void set_options(mc_model *m, const Scene &scene) {
   setup(m, mc_set_option_real(m, MC_OPTION_FEATURE_ANGLE, s.feature_angle), scene, "solver.feature_angle",
         "mc_set_option_real");
   setup(m, mc_set_option_int(m, MC_OPTION_THREADS, s.threads), scene, "solver.threads", "mc_set_option_int");
+  setup(m, mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, s.interface_solver), scene, "solver.interface_solver",
+        "mc_set_option_int");
 }
 
 // ---- results ------------------------------------------------------------------------------
@@ -237,12 +239,22 @@ ContactResults contact_results(const mc_model *m) {
   return r;
 }
 
-void print_solve_summary(const mc_model *m, const ContactResults &r) {
-  int64_t dofs = 0, iterations = 0, active = 0;
+// The path of the contact solve that ran (MC_INFO_INTERFACE_SOLVER; 0 without contact).
+const char *interface_solver_name(int64_t value) {
+  switch (value) {
+    case MC_INTERFACE_CONDENSED: return "condensed";
+    case MC_INTERFACE_SPARSE: return "sparse";
+    default: return "unknown";
+  }
+}
+
+void print_solve_summary(const mc_model *m, const Scene &scene, const ContactResults &r) {
+  int64_t dofs = 0, iterations = 0, active = 0, interface_solver = 0;
   double total = 0, equilibrium = 0, complementarity = 0;
   check(m, mc_get_info_int(m, MC_INFO_DOFS, &dofs), "mc_get_info_int");
   check(m, mc_get_info_int(m, MC_INFO_ITERATIONS, &iterations), "mc_get_info_int");
   check(m, mc_get_info_int(m, MC_INFO_ACTIVE_NODES, &active), "mc_get_info_int");
+  check(m, mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &interface_solver), "mc_get_info_int");
   check(m, mc_get_info_real(m, MC_INFO_TIME_TOTAL, &total), "mc_get_info_real");
   check(m, mc_get_info_real(m, MC_INFO_EQUILIBRIUM, &equilibrium), "mc_get_info_real");
   check(m, mc_get_info_real(m, MC_INFO_COMPLEMENTARITY, &complementarity), "mc_get_info_real");
@@ -251,6 +263,9 @@ void print_solve_summary(const mc_model *m, const ContactResults &r) {
     for (int c = 0; c < 2; ++c) resultant[c] -= r.force[j] * r.normal[2 * j + size_t(c)];
   std::printf("solved: %lld DOFs, %lld active-set iterations, %lld of %zu contact nodes active, %.3f s\n",
               (long long)dofs, (long long)iterations, (long long)active, r.nodes.size(), total);
+  if (interface_solver != 0)  // which path ran, and whether the scene forced it
+    std::printf("  interface solver: %s (%s)\n", interface_solver_name(interface_solver),
+                scene.solver.interface_solver == MC_INTERFACE_AUTO ? "chosen automatically" : "set by the scene");
   std::printf("  relative residuals: equilibrium %.2e, complementarity %.2e\n", equilibrium, complementarity);
   std::printf("  contact force on body 1: (%.10g, %.10g)\n", resultant[0], resultant[1]);
 }
@@ -426,7 +441,7 @@ int run(const Options &options) {
   progress(options, "solving");
   check(m, mc_solve(m), "mc_solve");
   const ContactResults results = contact_results(m);
-  print_solve_summary(m, results);
+  print_solve_summary(m, scene, results);
   if (scene.hertz.enabled) print_hertz(scene, measure_hertz(bodies[0], results, scene.thickness, scene.plane == MC_AXISYMMETRIC));
   write_outputs(m, scene, bodies[0], results);
   return 0;

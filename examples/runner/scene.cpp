@@ -277,11 +277,12 @@ Body parse_body(const Value &v, int index, const std::string &base_dir) {
 
 Solver parse_solver(const Value &v) {
   // Defaults: the library's (mortarcontact.h).
-  Solver s{MC_METHOD_MORTAR, 1e-10, 200, MC_NORMAL_NONMORTAR, MC_Q1_FULL, MC_ORDERING_AUTO, MC_SURFACE_SMOOTH, 40, 0};
+  Solver s{MC_METHOD_MORTAR, 1e-10, 200, MC_NORMAL_NONMORTAR, MC_Q1_FULL, MC_ORDERING_AUTO, MC_SURFACE_SMOOTH, 40, 0,
+           MC_INTERFACE_AUTO};
   if (!v.has("solver")) return s;
   Value o = v.child("solver");
   o.expect_object({"method", "tolerance", "max_iterations", "contact_normal", "q1_integration", "ordering",
-                   "contact_surface", "feature_angle", "threads"});
+                   "contact_surface", "feature_angle", "threads", "interface_solver"});
   if (o.has("method"))
     s.method = o.child("method").choice({{"mortar", MC_METHOD_MORTAR},
                                          {"dual_mortar", MC_METHOD_DUAL_MORTAR},
@@ -298,6 +299,10 @@ Solver parse_solver(const Value &v) {
     s.contact_surface = o.child("contact_surface").choice({{"smooth", MC_SURFACE_SMOOTH}, {"faceted", MC_SURFACE_FACETED}});
   if (o.has("feature_angle")) s.feature_angle = o.child("feature_angle").number();  // the library checks the range
   if (o.has("threads")) s.threads = o.child("threads").integer_in(0, 1024);
+  if (o.has("interface_solver"))
+    s.interface_solver = o.child("interface_solver").choice({{"auto", MC_INTERFACE_AUTO},
+                                                             {"condensed", MC_INTERFACE_CONDENSED},
+                                                             {"sparse", MC_INTERFACE_SPARSE}});
   return s;
 }
 

@@ -54,6 +54,7 @@ struct Solver {
   int contact_surface;   // MC_SURFACE_*
   double feature_angle;  // degrees
   int threads;         // MC_OPTION_THREADS: 0 automatic, 1 serial, n at most n
+  int interface_solver;  // MC_INTERFACE_*: MC_OPTION_INTERFACE_SOLVER
 };
 
 struct Output {

@@ -544,8 +544,9 @@ static void op_contact_raw(harness *h, stream *s) {
 
 static void op_option_int(harness *h, stream *s) {
   mc_model *m = h->m;
-  int option = read_u8(s) % 12; /* 0 .. 11: every option (MC_OPTION_THREADS = 10) and bad ones */
+  int option = read_u8(s) % 13; /* 0 .. 12: every option (MC_OPTION_INTERFACE_SOLVER = 11) and bad ones */
   uint8_t kind = read_u8(s);
+  /* -1 .. 4: every value of the enum options (MC_INTERFACE_AUTO .. _SPARSE = 0 .. 2) and bad ones */
   int64_t value = kind < 200 ? (int64_t)(kind % 6) - 1 : (int64_t)read_bytes(s, 8);
   CALL(mc_set_option_int(m, option, value));
 }
@@ -610,7 +611,7 @@ static void run(harness *h, stream *s) {
       case OP_CONTACT_RAW: op_contact_raw(h, s); break;
       case OP_OPTION_INT: op_option_int(h, s); break;
       case OP_OPTION_REAL: {
-        int option = read_u8(s) % 12; /* 0 .. 11: every option (MC_OPTION_THREADS = 10) and bad ones */
+        int option = read_u8(s) % 13; /* 0 .. 12: every option (MC_OPTION_INTERFACE_SOLVER = 11) and bad ones */
         CALL(mc_set_option_real(m, option, read_real(s)));
         break;
       }

@@ -163,6 +163,11 @@ SEEDS = {
     + op("CONTACT_RAW") + body(1) + count(4) + b"".join(ident(v) for v in (4, 0, 0, 1, 1, 2, 2, 0)) + solve()
     + op("CONTACT_RAW") + body(1) + count(2) + b"".join(ident(v) for v in (3, 4, 4, 0))
     + fix_raw(1, [0, 1, 3], 3) + op("BODY_FORCE") + body(1) + real(0) + real(-1) + solve(),
+    # MC_OPTION_INTERFACE_SOLVER (11): each path forced on a contact solve and a re-solve with new
+    # loads, automatic, the bad values 3 and -1, and the real-valued call
+    "interface_solver": stack() + option_int(11, 2) + solve() + traction_side(1, TOP, 0.5, -2) + solve()
+    + option_int(11, 1) + solve() + option_int(11, 3) + option_int(11, -1) + option_real(11, 1.0)
+    + option_int(11, 0) + solve() + op("QUERY"),
     "fully_supported_and_overflow": grid(2, 4, 1, 1, 0, -1, 2, 1) + material(2, 1.0, 0.3)
     + fix_side(2, BOTTOM, 3) + fix_side(2, TOP, 3) + solve()
     + grid(1, 4, 2, 2, 0, 0, 1, 1) + material(1, 1.0, 0.3) + fix_side(1, TOP, 3, (0.0, -0.125))

@@ -192,6 +192,15 @@ class TestModel(unittest.TestCase):
             with self.assertRaises(mc.MortarContactError) as cm:
                 m.set_option(mc.MC_OPTION_CONTACT_SURFACE, 2)
             self.assertIn("MC_OPTION_CONTACT_SURFACE", str(cm.exception))
+            # the interface solver: an integer option (set_option picks the integer call)
+            for path in (mc.MC_INTERFACE_AUTO, mc.MC_INTERFACE_CONDENSED, mc.MC_INTERFACE_SPARSE):
+                m.set_option(mc.MC_OPTION_INTERFACE_SOLVER, path)
+            for bad in (3, -1):
+                with self.assertRaises(mc.MortarContactError) as cm:
+                    m.set_option(mc.MC_OPTION_INTERFACE_SOLVER, bad)
+                self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
+                self.assertIn("MC_OPTION_INTERFACE_SOLVER", str(cm.exception))
+            self.assertEqual(m.get_info(mc.MC_INFO_INTERFACE_SOLVER), 0)  # an integer info; no solve yet
 
     def test_single_body_solve_one_based(self):
         """A unit square, bottom clamped, pulled up on top; ids 1-based. No contact."""

@@ -54,6 +54,23 @@ class TestPatch(unittest.TestCase):
             np.testing.assert_allclose(m.get_contact_pressure(), p_smooth, rtol=1e-12)
             np.testing.assert_allclose(p_smooth, patch_scene.PRESSURE, rtol=1e-8)
 
+    def test_interface_solver_forced(self):
+        """MC_OPTION_INTERFACE_SOLVER forces either path; MC_INFO_INTERFACE_SOLVER says which
+        one ran, and both pass the patch test. 3 is not a value."""
+        for path in (mc.MC_INTERFACE_SPARSE, mc.MC_INTERFACE_CONDENSED):
+            with mc.Model() as m:
+                xy1, xy2 = patch_scene.build(m)
+                m.set_option(mc.MC_OPTION_INTERFACE_SOLVER, path)
+                m.solve()
+                self.assertEqual(m.get_info(mc.MC_INFO_INTERFACE_SOLVER), path)
+                u1, u2 = patch_scene.exact(xy1, xy2)
+                scale = max(np.abs(u1).max(), np.abs(u2).max())
+                np.testing.assert_allclose(m.get_displacement(1), u1, rtol=0, atol=1e-9 * scale)
+                np.testing.assert_allclose(m.get_contact_pressure(), patch_scene.PRESSURE, rtol=1e-8)
+                with self.assertRaises(mc.MortarContactError) as cm:
+                    m.set_option_int(mc.MC_OPTION_INTERFACE_SOLVER, 3)
+                self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
+
     def test_dual_mortar_one_based(self):
         self.check(mc.MC_METHOD_DUAL_MORTAR, 1)
 

@@ -8,7 +8,8 @@
 //   message naming the key;
 // - the runner end to end on the tiny meshes: the contact patch test (a uniform pressure
 //   reaches the non-matching contact surface exactly) in both formats, identical results; an
-//   interference fit (prescribed displacement + gap offset) with its exact pressure.
+//   interference fit (prescribed displacement + gap offset) with its exact pressure; the patch
+//   test with solver.interface_solver forced to each path, which the runner reports.
 //
 // usage: test_runner_units DATA_DIR RUNNER   (DATA_DIR: a copy of examples/runner/tests/data)
 #include "body_mesh.hpp"
@@ -19,11 +20,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <functional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <check.h>  // last: it defines a macro fail() that clashes with std::ios::fail
@@ -260,6 +263,7 @@ START_TEST(valid_scene_parsed_with_defaults) {
   ck_assert_double_eq(s.solver.feature_angle, 40.0);
   ck_assert_double_eq(s.solver.tolerance, 1e-10);
   ck_assert_int_eq(s.solver.threads, 0);  // MC_OPTION_THREADS: automatic
+  ck_assert_int_eq(s.solver.interface_solver, MC_INTERFACE_AUTO);  // MC_OPTION_INTERFACE_SOLVER
   ck_assert_int_eq(parse_scene(scene_text("\"dual_mortar\"", "\"dual_mortar\", \"threads\": 1"), "s.json").solver.threads, 1);
   ck_assert_str_eq(s.bodies[0].mesh_path.c_str(), "dir/m.msh");  // relative to the scene file
   ck_assert_str_eq(s.output.pressure_csv.c_str(), "dir/out/p.csv");
@@ -283,6 +287,22 @@ START_TEST(contact_surface_options_parsed) {
   ck_assert_double_eq(s.solver.feature_angle, 30.0);
   std::string e = scene_error(scene_text("\"method\": \"dual_mortar\"", "\"contact_surface\": \"curvy\""));
   ASSERT_HAS(e, "contact_surface");
+}
+END_TEST
+
+START_TEST(interface_solver_parsed) {
+  const std::pair<const char *, int> values[3] = {
+      {"auto", MC_INTERFACE_AUTO}, {"condensed", MC_INTERFACE_CONDENSED}, {"sparse", MC_INTERFACE_SPARSE}};
+  for (const auto &v : values) {
+    const Scene s = parse_scene(scene_text("\"method\": \"dual_mortar\"", std::string("\"method\": \"dual_mortar\", "
+                                           "\"interface_solver\": \"") + v.first + "\""),
+                                "dir/s.json");
+    ck_assert_int_eq(s.solver.interface_solver, v.second);
+  }
+  ASSERT_HAS(scene_error(scene_text("\"method\": \"dual_mortar\"", "\"interface_solver\": \"dense\"")),
+             "solver.interface_solver: \"dense\" is not one of \"auto\", \"condensed\", \"sparse\"");
+  ASSERT_HAS(scene_error(scene_text("\"method\": \"dual_mortar\"", "\"interface_solver\": 2")),
+             "solver.interface_solver: must be a string");
 }
 END_TEST
 
@@ -413,6 +433,40 @@ START_TEST(runner_axisymmetric_patch_exact) {
 }
 END_TEST
 
+// The patch test of tiny_v41.json with "interface_solver" forced to each path: the same exact
+// pressure, and the runner says which path ran (MC_INFO_INTERFACE_SOLVER) and that the scene set it.
+START_TEST(runner_interface_solver_forced) {
+  std::ifstream in(data_dir + "/tiny_v41.json");
+  std::stringstream all;
+  all << in.rdbuf();
+  const std::string base = all.str(), output = "\"output\": { \"pressure_csv\": \"out_v41/pressure.csv\", "
+                                               "\"vtu\": \"out_v41/patch.vtu\" }";
+  ck_assert_msg(base.find(output) != std::string::npos, "test bug: tiny_v41.json's output changed");
+  for (const char *name : {"sparse", "condensed"}) {
+    std::string scene = base;
+    const std::string out = std::string("out_interface_") + name;
+    scene.replace(scene.find(output), output.size(),
+                  std::string("\"solver\": { \"interface_solver\": \"") + name + "\" },\n  \"output\": { "
+                  "\"pressure_csv\": \"" + out + "/pressure.csv\" }");
+    const std::string path = data_dir + "/tiny_v41_" + name + ".json";
+    std::ofstream(path) << scene;
+    const std::string command = "rm -rf '" + data_dir + "/" + out + "' && '" + runner + "' --quiet '" + path + "'";
+    FILE *pipe = popen(command.c_str(), "r");
+    ck_assert_ptr_nonnull(pipe);
+    std::string printed;
+    char buffer[512];
+    while (std::fgets(buffer, sizeof buffer, pipe)) printed += buffer;
+    ck_assert_msg(pclose(pipe) == 0, "%s failed:\n%s", command.c_str(), printed.c_str());
+    ASSERT_HAS(printed, std::string("interface solver: ") + name + " (set by the scene)");
+    std::string text;
+    const auto rows = read_csv(data_dir + "/" + out + "/pressure.csv", &text);
+    ck_assert_int_eq(rows.size(), 3);
+    for (const auto &r : rows)
+      ck_assert_msg(std::fabs(r[2] - 0.25) < 1e-12, "%s: pressure %.17g at x = %g", name, r[2], r[0]);
+  }
+}
+END_TEST
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -432,10 +486,12 @@ int main(int argc, char **argv) {
   tcase_add_test(tc, malformed_files_name_file_and_line);
   tcase_add_test(tc, valid_scene_parsed_with_defaults);
   tcase_add_test(tc, contact_surface_options_parsed);
+  tcase_add_test(tc, interface_solver_parsed);
   tcase_add_test(tc, scene_errors_name_the_key);
   tcase_add_test(tc, runner_patch_test_both_formats);
   tcase_add_test(tc, runner_interference_gap_offset_exact);
   tcase_add_test(tc, runner_axisymmetric_patch_exact);
+  tcase_add_test(tc, runner_interface_solver_forced);
   suite_add_tcase(suite, tc);
   SRunner *sr = srunner_create(suite);
   srunner_run_all(sr, CK_NORMAL);
