@@ -10,12 +10,25 @@ bottom corner. Every contact pressure is exactly p.
 Contact: GetFEM's integral Alart-Curnier formulation in its weak-form language, as the "gwfl"
 formulation of bench/getfem_hertz.py: a P1 multiplier lam on body 1's bottom, the gap through
 the interpolate transformation X -> (X_x, 0) onto body 2's flat top; Newton with MUMPS, body 1
-started with a rigid downward shift (it floats vertically). Prints, per nx: DOFs, Newton
-iterations, the wall time of the model setup and of the solve, and the largest |lam - p| / p.
+started with a rigid downward shift (it floats vertically). Prints, per nx (the nx list of
+build/bench/long_interface, so that the rows go beside its tables): DOFs, Newton iterations,
+the wall time of the model setup, of the solve and both, the largest |lam - p| / p, and the
+peak resident memory of that size alone: each size runs in a child process of its own (this
+script again, with --one nx), whose ru_maxrss the parent reads with wait4 (it includes the
+Python interpreter and GetFEM's modules, about 60 MiB).
 
-usage: /usr/bin/python3 bench/getfem_strips.py [--max-res r] [nx ...]
-       (default: Newton's residual tolerance 1e-12, nx = 250 500 1000 2000 4000)
+usage: /usr/bin/python3 bench/getfem_strips.py [--max-res r] [--timeout s] [--json file] [nx ...]
+       --max-res  Newton's residual tolerance (default 1e-12; the documented runs use 1e-9:
+                  from nx = 2000 on GetFEM's residual does not reach 1e-12, and Newton stops at
+                  its 30-iteration limit)
+       --timeout  wall-time limit per size in seconds (default 3600; the row then says so)
+       --json     also writes the rows to this file
+       nx ...     default 250 500 1000 2000 4000 8000 16000
 """
+import json
+import os
+import signal
+import subprocess
 import sys
 import time
 
@@ -77,19 +90,74 @@ def solve(nx):
     return mfu1.nbdof() + mfu2.nbdof(), len(lam), int(nit), bool(converged), t_setup, t_solve, err
 
 
+KEYS = ("dofs", "multipliers", "newton_iterations", "converged", "setup_s", "solve_s", "pressure_error")
+
+
+def run_one(nx, timeout):
+    """One size in a child process (this script with --one): its row, and its own peak RSS."""
+    proc = subprocess.Popen([sys.executable, os.path.abspath(__file__), "--one", str(nx), "--max-res", repr(MAX_RES),
+                             "--timeout", str(timeout)], stdout=subprocess.PIPE)
+    out = proc.stdout.read()
+    proc.stdout.close()
+    _, status, usage = os.wait4(proc.pid, 0)
+    proc.returncode = os.waitstatus_to_exitcode(status)  # already reaped: Popen must not wait again
+    row = {"nx": nx, "peak_mib": usage.ru_maxrss / 1024.0}
+    if proc.returncode == 0:
+        row.update(json.loads(out))
+    elif proc.returncode == -signal.SIGALRM:
+        row["failed"] = "timed out after %d s" % timeout
+    else:
+        row["failed"] = "exit status %d" % proc.returncode
+    return row
+
+
 def main():
-    gf.util_trace_level(0)
-    gf.util_warning_level(0)
     global MAX_RES
-    args = sys.argv[1:]
-    if len(args) >= 2 and args[0] == "--max-res":
-        MAX_RES, args = float(args[1]), args[2:]
-    sizes = [int(a) for a in args] or [250, 500, 1000, 2000, 4000]
-    print("| nx | DOFs | multipliers | Newton iterations | converged | setup s | solve s | pressure error / p |")
-    print("|---|---|---|---|---|---|---|---|")
+    args, sizes, timeout, json_path, one = sys.argv[1:], [], 3600, None, None
+    while args:
+        if args[0] == "--max-res" and len(args) >= 2:
+            MAX_RES, args = float(args[1]), args[2:]
+        elif args[0] == "--timeout" and len(args) >= 2:
+            timeout, args = int(args[1]), args[2:]
+        elif args[0] == "--json" and len(args) >= 2:
+            json_path, args = args[1], args[2:]
+        elif args[0] == "--one" and len(args) >= 2:
+            one, args = int(args[1]), args[2:]
+        else:
+            sizes.append(int(args[0]))
+            args = args[1:]
+    if one is not None:  # the child: one size, its row as JSON on stdout
+        gf.util_trace_level(0)
+        gf.util_warning_level(0)
+        if timeout > 0:
+            signal.alarm(timeout)
+        print(json.dumps(dict(zip(KEYS, solve(one)))))
+        return
+    sizes = sizes or [250, 500, 1000, 2000, 4000, 8000, 16000]
+    try:
+        version = subprocess.run(["dpkg-query", "-W", "-f", "${Version}", "python3-getfem"], capture_output=True,
+                                 text=True).stdout.strip() or "?"
+    except OSError:
+        version = "?"
+    print("GetFEM (python3-getfem %s), MUMPS, max_res %g, one child process per size (timeout %d s)"
+          % (version, MAX_RES, timeout))
+    print()
+    print("| nx | DOFs | multipliers | Newton iterations | converged | setup s | solve s | total s | peak MiB "
+          "| pressure error / p |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    rows = []
     for nx in sizes:
-        dofs, nlam, nit, conv, ts, tsol, err = solve(nx)
-        print("| %d | %d | %d | %d | %s | %.3f | %.3f | %.1e |" % (nx, dofs, nlam, nit, conv, ts, tsol, err), flush=True)
+        r = run_one(nx, timeout)
+        rows.append(r)
+        if "failed" in r:
+            print("| %d | FAILED: %s | | | | | | | %.0f | |" % (nx, r["failed"], r["peak_mib"]), flush=True)
+            continue
+        print("| %d | %d | %d | %d | %s | %.3f | %.3f | %.3f | %.0f | %.1e |" % (
+            nx, r["dofs"], r["multipliers"], r["newton_iterations"], r["converged"], r["setup_s"], r["solve_s"],
+            r["setup_s"] + r["solve_s"], r["peak_mib"], r["pressure_error"]), flush=True)
+    if json_path:
+        with open(json_path, "w") as fh:
+            json.dump(rows, fh, indent=1)
 
 
 if __name__ == "__main__":

@@ -10,7 +10,17 @@ p0, a, H1 norm, re-solve time) and bench/getfem_hertz.py (same meshes, bit for b
 
 usage: /usr/bin/python3 bench/hertz_benchmark.py [--build build] [--quick] [--update-docs]
        [--no-getfem] [--getfem-from-json] [--repeat 3] [--from-json]
+       [--solvers auto,condensed,sparse] [--cases plain,mortar,dual,nts] [--sizes h1 ...]
 (--quick: three small sizes, for a smoke run; the documented numbers come from the default.)
+--solvers: the interface solvers (MC_OPTION_INTERFACE_SOLVER) each contact case runs with:
+  auto (the option not set, the library's choice: the default, the only one before the option
+  existed), condensed, sparse (forced). Rows of a forced solver are named "mortar (sparse)"
+  etc.; every contact row says which solver ran (MC_INFO_INTERFACE_SOLVER), and with more than
+  one solver the report adds a table of the solvers side by side per case and size (time,
+  contact/plain, peak RSS/plain, re-solve, which one auto picked). The plot and the GetFEM
+  comparison use the auto rows (or the first solver given).
+--cases: the cases of hertz_sweep (default all four; e.g. plain,mortar for the solver tables).
+--sizes: h1 values instead of the default list (the finest is the reference of H1 and p0).
 Needs python3-matplotlib and, for the peer, python3-getfem (Debian).
 """
 import argparse
@@ -64,20 +74,34 @@ def main():
     ap.add_argument("--getfem-from-json", action="store_true",
                     help="reuse GetFEM's numbers from the last run's JSON (its code did not change), run ours")
     ap.add_argument("--update-docs", action="store_true")
+    ap.add_argument("--solvers", default="auto",
+                    help="comma list of auto, condensed, sparse: MC_OPTION_INTERFACE_SOLVER of the contact cases")
+    ap.add_argument("--cases", default="plain,mortar,dual,nts", help="comma list of plain, mortar, dual, nts")
+    ap.add_argument("--sizes", type=float, nargs="+", help="h1 values (default: the documented list)")
     ap.add_argument("--from-json", action="store_true",
                     help="rebuild the report and the plot from the JSON files of the last run (no solving)")
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
-    ours_sizes = QUICK_SIZES if args.quick else OUR_SIZES
+    ours_sizes = args.sizes or (QUICK_SIZES if args.quick else OUR_SIZES)
     peer_sizes = QUICK_SIZES if args.quick else GETFEM_SIZES
+    solvers = [x for x in ("auto", "condensed", "sparse") if x in args.solvers.split(",")]
+    if not solvers:
+        ap.error("--solvers: a comma list of auto, condensed, sparse")
 
     # 1. Our sweep (MC_NORMAL_MORTAR: the gap measured along body 2's normal, as both GetFEM
     #    formulations measure it, so that both codes discretise the same problem).
     ours_json = os.path.join(args.out, "hertz_ours.json")
     if not args.from_json:
         run([os.path.join(args.build, "bench", "hertz_sweep"), "--normal", "mortar", "--repeat", str(args.repeat),
-             "--json", ours_json] + [str(h) for h in ours_sizes])
+             "--cases", args.cases, "--solvers", ",".join(solvers), "--json", ours_json] + [str(h) for h in ours_sizes])
     ours = json.load(open(ours_json))
+    # Rows of a forced interface solver are cases of their own ("mortar (sparse)"); the auto rows
+    # (and the rows of a JSON from before the option, which have no "solver") keep the case name.
+    for r in ours:
+        r.setdefault("solver", "auto")
+        r["label"] = r["case"] if r["case"] == "plain" or r["solver"] == "auto" else "%s (%s)" % (r["case"], r["solver"])
+    main_solver = "auto" if any(r["solver"] == "auto" for r in ours if r["case"] != "plain") else solvers[0]
+    ran_names = {1: "condensed", 2: "sparse"}
 
     # 2. GetFEM on the same meshes (one measurement per size: the large ones take minutes).
     peer = []
@@ -89,43 +113,60 @@ def main():
         peer = json.load(open(peer_json))
 
     # 3. Derived numbers.
-    by_case = {}
+    by_case = {}  # by label
     for r in ours:
-        by_case.setdefault(r["case"], []).append(r)
-    finest = max(by_case["mortar"], key=lambda r: r["dofs"])
-    p0_ref, h1_ref = finest["p0"], {c: max(rs, key=lambda r: r["dofs"])["h1_norm"] for c, rs in by_case.items()}
+        by_case.setdefault(r["label"], []).append(r)
+    # the main rows of each case: auto, or the first solver given
+    main_label = {c: c if main_solver == "auto" else "%s (%s)" % (c, main_solver) for c in ("mortar", "dual", "nts")}
+    mortar_rows = by_case.get(main_label["mortar"]) or next(rs for l, rs in by_case.items() if l != "plain")
+    finest = max(mortar_rows, key=lambda r: r["dofs"])
+    p0_ref, h1_ref = finest["p0"], {l: max(rs, key=lambda r: r["dofs"])["h1_norm"] for l, rs in by_case.items()}
     for r in ours:
         r["err_p0"] = r["p0"] / r["p0_hertz"] - 1 if r["case"] != "plain" else float("nan")
         r["err_a"] = r["a"] / r["a_hertz"] - 1 if r["case"] != "plain" else float("nan")
         r["err_a_moment"] = r["a_moment"] / r["a_hertz"] - 1 if r["case"] != "plain" else float("nan")
         r["err_p0_ref"] = r["p0"] / p0_ref - 1 if r["case"] != "plain" else float("nan")
-        r["err_h1"] = r["h1_norm"] / h1_ref[r["case"]] - 1
+        r["err_h1"] = r["h1_norm"] / h1_ref[r["label"]] - 1
     for r in peer:
         r["err_p0_ref"] = r["p0"] / p0_ref - 1
-    plain = {r["h1"]: r for r in by_case["plain"]}
+    plain = {r["h1"]: r for r in by_case.get("plain", [])}
+    labels = ["plain"] + [c if s == "auto" else "%s (%s)" % (c, s) for c in ("mortar", "dual", "nts") for s in solvers]
 
     lines = []
     out = lines.append
     env_threads = os.environ.get("OPENBLAS_NUM_THREADS", "unset")
     out(BEGIN)
-    out("Generated by `/usr/bin/python3 bench/hertz_benchmark.py --update-docs` (%s; %d cores; "
+    flags = "".join([" --solvers " + ",".join(solvers) if solvers != ["auto"] else "",
+                     " --cases " + args.cases if args.cases != "plain,mortar,dual,nts" else "",
+                     " --sizes " + " ".join("%g" % h for h in args.sizes) if args.sizes else ""])
+    out("Generated by `/usr/bin/python3 bench/hertz_benchmark.py --update-docs%s` (%s; %d cores; "
         "OPENBLAS_NUM_THREADS=%s; our wall times are medians of %d runs, GetFEM's single runs)."
-        % ("quick run" if args.quick else "full run", os.cpu_count(), env_threads, args.repeat))
+        % (flags, "quick run" if args.quick else "full run", os.cpu_count(), env_threads, args.repeat))
     out("")
     out("Hertz scene, P1, graded meshes, h2 = 1.37 h1; our solves use `MC_NORMAL_MORTAR` (the gap along body 2's "
         "normal, as GetFEM measures it). Time = wall time from `mc_create` to the results read back; phase times "
         "are the library's infos. `err` columns are relative errors against Hertz; `H1` is the relative difference "
         "of the H1 norm from the finest solution of the same case (h1 = %g, %d DOFs)." % (finest["h1"], finest["dofs"]))
     out("")
-    out("| case | h1 | DOFs | contact nodes | active | it | assembly s | analysis s | factor s | contact s | time s "
-        "| contact/plain | re-solve s | first/re-solve | peak RSS MiB | RSS/plain | err p0 | err a | err a_moment | H1 |")
-    out("|" + "---|" * 20)
-    for case in ("plain", "mortar", "dual", "nts"):
-        for r in by_case.get(case, []):
+    out("| case | interface solver | h1 | DOFs | contact nodes | active | it | assembly s | analysis s | factor s "
+        "| contact s | time s | contact/plain | re-solve s | first/re-solve | peak RSS MiB | RSS/plain | err p0 | err a "
+        "| err a_moment | H1 |")
+    out("|" + "---|" * 21)
+
+    def solver_cell(r):
+        """The solver asked for, and the one that ran (MC_INFO_INTERFACE_SOLVER)."""
+        if r["case"] == "plain":
+            return "-"
+        ran = ran_names.get(r.get("solver_ran"), "?")
+        return "%s: %s" % (r["solver"], ran) if r["solver"] == "auto" else (
+            r["solver"] if ran == r["solver"] else "%s (ran: %s)" % (r["solver"], ran))
+
+    for label in labels:
+        for r in by_case.get(label, []):
             base = plain.get(r["h1"])
-            contact = case != "plain"
-            out("| %s | %g | %d | %s | %s | %s | %.3f | %.3f | %.3f | %s | %.3f | %s | %s | %s | %.0f | %s | %s | %s | %s | %+.1e |" % (
-                case, r["h1"], r["dofs"], r["contact_nodes"] if contact else "-", r["active_nodes"] if contact else "-",
+            contact = r["case"] != "plain"
+            out("| %s | %s | %g | %d | %s | %s | %s | %.3f | %.3f | %.3f | %s | %.3f | %s | %s | %s | %.0f | %s | %s | %s | %s | %+.1e |" % (
+                label, solver_cell(r), r["h1"], r["dofs"], r["contact_nodes"] if contact else "-", r["active_nodes"] if contact else "-",
                 r["iterations"] if contact else "-", r["time_assembly"], r["time_analysis"], r["time_factorization"],
                 "%.3f" % r["time_contact"] if contact else "-", r["time"],
                 "%.2f" % (r["time"] / base["time"]) if contact and base else "-",
@@ -135,22 +176,55 @@ def main():
                 "%+.2e" % r["err_p0"] if contact else "-", "%+.2e" % r["err_a"] if contact else "-",
                 "%+.2e" % r["err_a_moment"] if contact else "-", r["err_h1"]))
     out("")
+    # the interface solvers side by side, per case and size
+    if len(solvers) > 1:
+        out("Interface solvers side by side (`MC_OPTION_INTERFACE_SOLVER`; auto = the option not set; "
+            "\"auto ran\" = `MC_INFO_INTERFACE_SOLVER` of the auto solve):")
+        out("")
+        hdr = ["case", "h1", "DOFs", "contact nodes", "plain s"] + ["%s s" % x for x in solvers] \
+            + ["%s/plain" % x for x in solvers] + ["%s RSS/plain" % x for x in solvers] \
+            + ["%s re-solve s" % x for x in solvers] + (["auto ran"] if "auto" in solvers else [])
+        out("| " + " | ".join(hdr) + " |")
+        out("|" + "---|" * len(hdr))
+        for case in ("mortar", "dual", "nts"):
+            rows = {}
+            for r in ours:
+                if r["case"] == case:
+                    rows.setdefault(r["h1"], {})[r["solver"]] = r
+            for h1 in sorted(rows, reverse=True):
+                got, base = rows[h1], plain.get(h1)
+                any_row = next(iter(got.values()))
+                cells = [case, "%g" % h1, "%d" % any_row["dofs"], "%d" % any_row["contact_nodes"],
+                         "%.3f" % base["time"] if base else "-"]
+                cells += ["%.3f" % got[x]["time"] if x in got else "-" for x in solvers]
+                cells += ["%.2f" % (got[x]["time"] / base["time"]) if x in got and base else "-" for x in solvers]
+                cells += ["%.2f" % (got[x]["peak_rss_mib"] / base["peak_rss_mib"]) if x in got and base else "-"
+                          for x in solvers]
+                cells += ["%.4f" % got[x]["time_resolve"] if x in got else "-" for x in solvers]
+                if "auto" in solvers:
+                    cells.append(ran_names.get(got["auto"].get("solver_ran"), "?") if "auto" in got else "-")
+                out("| " + " | ".join(cells) + " |")
+        out("")
     # headline figures
-    big = [r for r in by_case["mortar"] if r["dofs"] > 1e5 and r["h1"] in plain]
-    if big:
+    for solver in solvers:
+        label = main_label["mortar"] if solver == main_solver else "mortar (%s)" % solver
+        big = [r for r in by_case.get(label, []) if r["dofs"] > 1e5 and r["h1"] in plain]
+        if not big:
+            continue
+        tag = "mortar" if label == "mortar" else label
         ratios = [r["time"] / plain[r["h1"]]["time"] for r in big]
         mem = [r["peak_rss_mib"] / plain[r["h1"]]["peak_rss_mib"] for r in big]
         resolve = [r["time"] / r["time_resolve"] for r in big]
-        out("- **Contact/plain time (mortar), above 10^5 DOFs:** %s (goal <= 1.5)." % ", ".join("%.2f" % x for x in ratios))
-        out("- **Peak memory contact/plain (mortar), above 10^5 DOFs:** %s (goal <= 1.3)." % ", ".join("%.2f" % x for x in mem))
-        out("- **First solve / re-solve after a load change (mortar), above 10^5 DOFs:** %s (goal >= 10); the "
-            "re-solve does %s factorizations." % (", ".join("%.0f" % x for x in resolve),
+        out("- **Contact/plain time (%s), above 10^5 DOFs:** %s (goal <= 1.5)." % (tag, ", ".join("%.2f" % x for x in ratios)))
+        out("- **Peak memory contact/plain (%s), above 10^5 DOFs:** %s (goal <= 1.3)." % (tag, ", ".join("%.2f" % x for x in mem)))
+        out("- **First solve / re-solve after a load change (%s), above 10^5 DOFs:** %s (goal >= 10); the "
+            "re-solve does %s factorizations." % (tag, ", ".join("%.0f" % x for x in resolve),
                                                    sorted({r["resolve_factorizations"] for r in big})))
-    for case in ("plain", "mortar", "dual", "nts"):
-        rs = [r for r in by_case.get(case, []) if r["dofs"] >= 1e4]
+    for label in labels:
+        rs = [r for r in by_case.get(label, []) if r["dofs"] >= 1e4]
         if len(rs) >= 3:
             out("- Time grows like DOFs^%.2f for %s (least squares over %d sizes from 10^4 DOFs)."
-                % (fit_exponent([r["dofs"] for r in rs], [r["time"] for r in rs]), case, len(rs)))
+                % (fit_exponent([r["dofs"] for r in rs], [r["time"] for r in rs]), label, len(rs)))
     out("")
     if peer:
         out("GetFEM 5.4 (Debian `python3-getfem`, MUMPS, Newton; time = model setup + solve) on the same meshes:")
@@ -176,7 +250,7 @@ def main():
         out("| GetFEM formulation | DOFs | its error | its time s | our time s | speed-up |")
         out("|---|---|---|---|---|---|")
         for r in peer:
-            mine = time_to_reach(by_case["mortar"], "err_p0_ref", abs(r["err_p0_ref"]))
+            mine = time_to_reach(mortar_rows, "err_p0_ref", abs(r["err_p0_ref"]))
             out("| %s | %d | %.2e | %.2f | %s | %s |" % (r["formulation"], r["dofs"], abs(r["err_p0_ref"]), r["time"],
                                                        "%.3f" % mine if mine else "not reached",
                                                        "%.0f" % (r["time"] / mine) if mine else "-"))
@@ -197,7 +271,9 @@ def main():
     styles = {"mortar": "o-", "dual": "s-", "nts": "^-", "nodal": "v--", "gwfl": "D--"}
     for ax, key, title in ((axes[0], "err_p0", "against Hertz"), (axes[1], "err_p0_ref", "against the converged p0")):
         for case in ("mortar", "dual", "nts"):
-            rs = sorted(by_case.get(case, []), key=lambda r: r["dofs"])
+            rs = sorted(by_case.get(main_label[case], []), key=lambda r: r["dofs"])
+            if not rs:
+                continue
             if case == "mortar" and key == "err_p0_ref":
                 rs = rs[:-1]  # the reference itself
             ax.loglog([r["time"] for r in rs], [max(abs(r[key]), 1e-7) for r in rs], styles[case],

@@ -21,9 +21,17 @@
  *   a_moment  2 sqrt(sum f_j x_j^2 / sum f_j) from the nodal contact forces (exact for the
  *             elliptical Hertz distribution).
  *
+ * Each contact case runs once per interface solver of --solvers (MC_OPTION_INTERFACE_SOLVER):
+ * auto (the option not set: the library's choice), condensed, sparse (each forced). Every row
+ * says which ran (MC_INFO_INTERFACE_SOLVER: 1 condensed, 2 sparse; 0 from a library that does
+ * not set it); the driver (bench/hertz_benchmark.py --solvers) puts them side by side.
+ *
  * usage: hertz_sweep [--ratio r] [--repeat n] [--normal nonmortar|mortar] [--threads n]
- *                    [--cases plain,mortar,dual,nts] [--json file] h1 [h1 ...]
- * (--threads: MC_OPTION_THREADS for every solve; default: the library's, automatic)
+ *                    [--cases plain,mortar,dual,nts] [--solvers auto,condensed,sparse]
+ *                    [--json file] h1 [h1 ...]
+ * (--threads: MC_OPTION_THREADS for every solve; default: the library's, automatic;
+ *  --solvers: default auto, as before the option existed; the plain case runs once whatever
+ *  the list, it has no interface)
  */
 #define _POSIX_C_SOURCE 200809L
 #include "bench_timing.h"
@@ -46,6 +54,7 @@ typedef struct result {
   double t_assembly, t_analysis, t_factor, t_solve, t_contact, t_library, t_wall;
   double t_resolve;
   long resolve_factorizations;
+  int solver_ran; /* MC_INFO_INTERFACE_SOLVER of the first solve */
   double peak_rss_mib;
   double p0, a, a_moment, force_sum, h1_norm, energy;
   char message[256];
@@ -139,7 +148,7 @@ static mc_status apply_load(mc_model *m, const hertz_scene *s, double scale) {
 /* One solve of the scene (setup included in t_wall); fills r on the last repeat. */
 static int threads_option = -1; /* --threads: MC_OPTION_THREADS, or -1 for the library's default */
 
-static void run_once(const hertz_scene *s, int method, int normal, int last, result *r, double *t_wall) {
+static void run_once(const hertz_scene *s, int method, int normal, int solver, int last, result *r, double *t_wall) {
   mc_model *m = NULL;
   double start = bench_wall();
   TRY(mc_create(&m));
@@ -169,6 +178,8 @@ static void run_once(const hertz_scene *s, int method, int normal, int last, res
     TRY(mc_set_contact(m, 2, s->n_contact_edges[1], s->contact_edges[1]));
     TRY(mc_set_option_int(m, MC_OPTION_METHOD, method));
     TRY(mc_set_option_int(m, MC_OPTION_CONTACT_NORMAL, normal));
+    /* auto: the option left at the library's default, as a host that does not set it */
+    if (solver != MC_INTERFACE_AUTO) TRY(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, solver));
   }
   TRY(mc_solve(m));
   /* results read back, as a host would */
@@ -197,6 +208,8 @@ static void run_once(const hertz_scene *s, int method, int normal, int last, res
     mc_get_info_int(m, MC_INFO_ITERATIONS, &v), r->iterations = v;
     mc_get_info_int(m, MC_INFO_ACTIVE_NODES, &v), r->active = v;
     mc_get_info_int(m, MC_INFO_CONTACT_NODES, &v), r->contact_nodes = v;
+    v = 0;
+    mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &v), r->solver_ran = (int)v;
     mc_get_info_real(m, MC_INFO_TIME_ASSEMBLY, &r->t_assembly);
     mc_get_info_real(m, MC_INFO_TIME_ANALYSIS, &r->t_analysis);
     mc_get_info_real(m, MC_INFO_TIME_FACTORIZATION, &r->t_factor);
@@ -229,7 +242,7 @@ static void run_once(const hertz_scene *s, int method, int normal, int last, res
 }
 
 /* A case in a child process: repeat runs, median wall time, peak RSS of the child. */
-static result run_case(const hertz_scene *s, int method, int normal, int repeat) {
+static result run_case(const hertz_scene *s, int method, int normal, int solver, int repeat) {
   result r;
   memset(&r, 0, sizeof r);
   int fd[2];
@@ -239,7 +252,7 @@ static result run_case(const hertz_scene *s, int method, int normal, int repeat)
     close(fd[0]);
     double times[MAX_REPEAT];
     for (int k = 0; k < repeat; ++k) {
-      run_once(s, method, normal, k == repeat - 1, &r, &times[k]);
+      run_once(s, method, normal, solver, k == repeat - 1, &r, &times[k]);
       if (r.message[0]) break;
     }
     if (r.ok) r.t_wall = bench_median(times, repeat);
@@ -255,6 +268,15 @@ static result run_case(const hertz_scene *s, int method, int normal, int repeat)
   return r;
 }
 
+static const char *solver_name(int solver) {
+  return solver == MC_INTERFACE_CONDENSED ? "condensed" : solver == MC_INTERFACE_SPARSE ? "sparse" : "auto";
+}
+
+/* MC_INFO_INTERFACE_SOLVER as read (0: no contact, or a library that does not set it). */
+static const char *ran_name(int ran) {
+  return ran == MC_INTERFACE_CONDENSED ? "condensed" : ran == MC_INTERFACE_SPARSE ? "sparse" : "-";
+}
+
 static const char *case_name(int method) {
   return method == CASE_PLAIN ? "plain" : method == MC_METHOD_MORTAR ? "mortar" : method == MC_METHOD_DUAL_MORTAR ? "dual" : "nts";
 }
@@ -262,7 +284,7 @@ static const char *case_name(int method) {
 int main(int argc, char **argv) {
   double ratio = 1.37;
   int repeat = 3, normal = MC_NORMAL_NONMORTAR;
-  const char *json_path = NULL, *cases = "plain,mortar,dual,nts";
+  const char *json_path = NULL, *cases = "plain,mortar,dual,nts", *solvers_list = "auto";
   double h1s[64];
   int n_sizes = 0;
   for (int i = 1; i < argc; ++i) {
@@ -270,12 +292,15 @@ int main(int argc, char **argv) {
     else if (!strcmp(argv[i], "--repeat") && i + 1 < argc) repeat = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--json") && i + 1 < argc) json_path = argv[++i];
     else if (!strcmp(argv[i], "--cases") && i + 1 < argc) cases = argv[++i];
+    else if (!strcmp(argv[i], "--solvers") && i + 1 < argc) solvers_list = argv[++i];
     else if (!strcmp(argv[i], "--threads") && i + 1 < argc) threads_option = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--normal") && i + 1 < argc)
       normal = !strcmp(argv[++i], "mortar") ? MC_NORMAL_MORTAR : MC_NORMAL_NONMORTAR;
     else if (n_sizes < 64 && atof(argv[i]) > 0) h1s[n_sizes++] = atof(argv[i]);
     else {
-      fprintf(stderr, "usage: %s [--ratio r] [--repeat n] [--normal nonmortar|mortar] [--threads n] [--cases list] [--json file] h1...\n",
+      fprintf(stderr,
+              "usage: %s [--ratio r] [--repeat n] [--normal nonmortar|mortar] [--threads n] [--cases list] "
+              "[--solvers auto,condensed,sparse] [--json file] h1...\n",
               argv[0]);
       return 2;
     }
@@ -288,6 +313,14 @@ int main(int argc, char **argv) {
   const int all[4] = {CASE_PLAIN, MC_METHOD_MORTAR, MC_METHOD_DUAL_MORTAR, MC_METHOD_NODE_TO_SEGMENT};
   for (int k = 0; k < 4; ++k)
     if (strstr(cases, case_name(all[k]))) methods[n_methods++] = all[k];
+  int solvers[3], n_solvers = 0;
+  const int all_solvers[3] = {MC_INTERFACE_AUTO, MC_INTERFACE_CONDENSED, MC_INTERFACE_SPARSE};
+  for (int k = 0; k < 3; ++k)
+    if (strstr(solvers_list, solver_name(all_solvers[k]))) solvers[n_solvers++] = all_solvers[k];
+  if (n_solvers == 0) {
+    fprintf(stderr, "--solvers: a list of auto, condensed, sparse\n");
+    return 2;
+  }
   double a_hertz, p0_hertz;
   hertz_analytic(&a_hertz, &p0_hertz);
   FILE *json = json_path ? fopen(json_path, "w") : NULL;
@@ -295,9 +328,9 @@ int main(int argc, char **argv) {
   printf("Hertz scene, P1, h2 = %g h1, %s normals, OPENBLAS_NUM_THREADS=%s, %ld cores, wall time median of %d\n", ratio,
          normal == MC_NORMAL_MORTAR ? "mortar" : "non-mortar", getenv("OPENBLAS_NUM_THREADS") ? getenv("OPENBLAS_NUM_THREADS") : "unset",
          sysconf(_SC_NPROCESSORS_ONLN), repeat);
-  printf("%-6s %8s %9s %6s %6s %4s %7s %7s %7s %7s %7s %8s %8s %8s %9s %9s %9s\n", "case", "h1", "DOFs", "cnodes",
-         "active", "it", "asm_s", "anal_s", "fact_s", "cont_s", "lib_s", "wall_s", "resolve", "RSS_MiB", "err_p0",
-         "err_a", "err_amom");
+  printf("%-6s %8s %9s %6s %6s %4s %7s %7s %7s %7s %7s %8s %8s %8s %9s %9s %9s %-9s %-9s\n", "case", "h1", "DOFs",
+         "cnodes", "active", "it", "asm_s", "anal_s", "fact_s", "cont_s", "lib_s", "wall_s", "resolve", "RSS_MiB", "err_p0",
+         "err_a", "err_amom", "solver", "ran");
   int first = 1, failed = 0;
   for (int i = 0; i < n_sizes; ++i) {
     hertz_scene s;
@@ -305,35 +338,39 @@ int main(int argc, char **argv) {
       fprintf(stderr, "cannot build h1 = %g\n", h1s[i]);
       return 1;
     }
-    for (int k = 0; k < n_methods; ++k) {
-      result r = run_case(&s, methods[k], normal, repeat);
-      if (!r.ok) {
-        printf("%-6s %8.5f FAILED: %s\n", case_name(methods[k]), h1s[i], r.message);
-        failed = 1;
-        continue;
+    for (int k = 0; k < n_methods; ++k)
+      for (int v = 0; v < (methods[k] == CASE_PLAIN ? 1 : n_solvers); ++v) {
+        const int solver = methods[k] == CASE_PLAIN ? MC_INTERFACE_AUTO : solvers[v];
+        result r = run_case(&s, methods[k], normal, solver, repeat);
+        if (!r.ok) {
+          printf("%-6s %8.5f FAILED (%s): %s\n", case_name(methods[k]), h1s[i], solver_name(solver), r.message);
+          failed = 1;
+          continue;
+        }
+        int contact = methods[k] != CASE_PLAIN;
+        printf("%-6s %8.5f %9ld %6ld %6ld %4ld %7.3f %7.3f %7.3f %7.3f %7.3f %8.3f %8.4f %8.0f %+9.2e %+9.2e %+9.2e %-9s %-9s\n",
+               case_name(methods[k]), h1s[i], r.dofs, r.contact_nodes, r.active, r.iterations, r.t_assembly, r.t_analysis,
+               r.t_factor, r.t_contact, r.t_library, r.t_wall, r.t_resolve, r.peak_rss_mib,
+               contact ? r.p0 / p0_hertz - 1 : 0, contact ? r.a / a_hertz - 1 : 0, contact ? r.a_moment / a_hertz - 1 : 0,
+               contact ? solver_name(solver) : "-", contact ? ran_name(r.solver_ran) : "-");
+        fflush(stdout);
+        if (json) {
+          fprintf(json,
+                  "%s {\"case\": \"%s\", \"solver\": \"%s\", \"solver_ran\": %d, \"h1\": %.17g, \"h2\": %.17g, "
+                  "\"dofs\": %ld, \"factor_nnz\": %ld, "
+                  "\"contact_nodes\": %ld, \"active_nodes\": %ld, \"iterations\": %ld, \"time_assembly\": %.6g, "
+                  "\"time_analysis\": %.6g, \"time_factorization\": %.6g, \"time_solve\": %.6g, \"time_contact\": %.6g, "
+                  "\"time_library\": %.6g, \"time\": %.6g, \"time_resolve\": %.6g, \"resolve_factorizations\": %ld, "
+                  "\"peak_rss_mib\": %.1f, \"p0\": %.17g, \"a\": %.17g, \"a_moment\": %.17g, \"force_sum\": %.17g, "
+                  "\"h1_norm\": %.17g, \"energy\": %.17g, \"p0_hertz\": %.17g, \"a_hertz\": %.17g, \"repeat\": %d}",
+                  first ? "" : ",\n", case_name(methods[k]), solver_name(solver), r.solver_ran, h1s[i], ratio * h1s[i],
+                  r.dofs, r.factor_nnz, r.contact_nodes, r.active, r.iterations, r.t_assembly, r.t_analysis, r.t_factor,
+                  r.t_solve, r.t_contact, r.t_library, r.t_wall, r.t_resolve, r.resolve_factorizations, r.peak_rss_mib,
+                  r.p0, r.a, r.a_moment, r.force_sum, r.h1_norm, r.energy, p0_hertz, a_hertz, repeat);
+          fflush(json);
+          first = 0;
+        }
       }
-      int contact = methods[k] != CASE_PLAIN;
-      printf("%-6s %8.5f %9ld %6ld %6ld %4ld %7.3f %7.3f %7.3f %7.3f %7.3f %8.3f %8.4f %8.0f %+9.2e %+9.2e %+9.2e\n",
-             case_name(methods[k]), h1s[i], r.dofs, r.contact_nodes, r.active, r.iterations, r.t_assembly, r.t_analysis,
-             r.t_factor, r.t_contact, r.t_library, r.t_wall, r.t_resolve, r.peak_rss_mib,
-             contact ? r.p0 / p0_hertz - 1 : 0, contact ? r.a / a_hertz - 1 : 0, contact ? r.a_moment / a_hertz - 1 : 0);
-      fflush(stdout);
-      if (json) {
-        fprintf(json,
-                "%s {\"case\": \"%s\", \"h1\": %.17g, \"h2\": %.17g, \"dofs\": %ld, \"factor_nnz\": %ld, "
-                "\"contact_nodes\": %ld, \"active_nodes\": %ld, \"iterations\": %ld, \"time_assembly\": %.6g, "
-                "\"time_analysis\": %.6g, \"time_factorization\": %.6g, \"time_solve\": %.6g, \"time_contact\": %.6g, "
-                "\"time_library\": %.6g, \"time\": %.6g, \"time_resolve\": %.6g, \"resolve_factorizations\": %ld, "
-                "\"peak_rss_mib\": %.1f, \"p0\": %.17g, \"a\": %.17g, \"a_moment\": %.17g, \"force_sum\": %.17g, "
-                "\"h1_norm\": %.17g, \"energy\": %.17g, \"p0_hertz\": %.17g, \"a_hertz\": %.17g, \"repeat\": %d}",
-                first ? "" : ",\n", case_name(methods[k]), h1s[i], ratio * h1s[i], r.dofs, r.factor_nnz,
-                r.contact_nodes, r.active, r.iterations, r.t_assembly, r.t_analysis, r.t_factor, r.t_solve, r.t_contact,
-                r.t_library, r.t_wall, r.t_resolve, r.resolve_factorizations, r.peak_rss_mib, r.p0, r.a, r.a_moment,
-                r.force_sum, r.h1_norm, r.energy, p0_hertz, a_hertz, repeat);
-        fflush(json);
-        first = 0;
-      }
-    }
     hertz_scene_free(&s);
   }
   if (json) fprintf(json, "\n]\n"), fclose(json);

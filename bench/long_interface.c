@@ -21,9 +21,9 @@
  *
  * Table 1, one row per nx and solver: the solver asked for and the one that ran
  * (MC_INFO_INTERFACE_SOLVER), the factors' nonzeros, active-set iterations and numeric
- * factorizations, the contact solve's time and its parts (MC_INFO_TIME_FACTORIZATION, and from
- * the log: contact geometry, interface operator, active-set solve, refinement; "-" where the
- * log had no such message), the plain solve's time, peak memory of both and the ratios, and the
+ * factorizations, the sparse path's conjugate-gradient steps, the contact solve's time and its
+ * parts (MC_INFO_TIME_ANALYSIS, MC_INFO_TIME_FACTORIZATION, and from the log: contact geometry,
+ * interface operator, active-set solve, refinement; "-" where the log had no such message), the plain solve's time, peak memory of both and the ratios, and the
  * accuracy: pressure error / p, MC_INFO_COMPLEMENTARITY (of the problem the solver solved) and
  * MC_INFO_GAP_RESIDUAL (of the returned displacements). Times are wall seconds of mc_solve
  * (median of --repeat solves in the same child; the first solve of a process also maps its
@@ -49,7 +49,8 @@
  *   --repeat         solves per child, timed, median printed (default 1, max 15)
  *   --threads        MC_OPTION_THREADS of every solve (default: not set, automatic)
  *   --mem-limit      address-space limit of each child in GiB (RLIMIT_AS; default 85 % of
- *                    MemAvailable at the start; 0: none)
+ *                    MemAvailable at the start; 0: none; at least 1: below that OpenBLAS's
+ *                    start in the child can fail and spin)
  *   --timeout        wall-time limit of each child in seconds (default 1800; 0: none)
  *   --log            every contact solve's log messages on stderr
  *   nx ...           default 250 500 1000 2000 4000 8000 16000
@@ -78,6 +79,7 @@ enum { KIND_PLAIN = -1 }; /* otherwise a value of MC_OPTION_INTERFACE_SOLVER */
    message in this solve's log. */
 typedef struct parts {
   double geometry, interface, active_set, refinement;
+  long cg_steps; /* the sparse path's conjugate-gradient steps ("..., 9 conjugate-gradient steps, ..."); -1: none */
 } parts;
 
 static int echo_log; /* --log */
@@ -93,7 +95,14 @@ static void note_parts(void *user, mc_log_level level, const char *message) {
   if (echo_log) fprintf(stderr, "    %s\n", message);
   if (strncmp(message, "contact geometry", 16) == 0) p->geometry = trailing_seconds(message);
   if (strncmp(message, "interface operator", 18) == 0) p->interface = trailing_seconds(message);
-  if (strncmp(message, "active-set solve", 16) == 0) p->active_set = trailing_seconds(message);
+  if (strncmp(message, "active-set solve", 16) == 0) {
+    p->active_set = trailing_seconds(message);
+    const char *cg = strstr(message, " conjugate-gradient steps");
+    if (cg) {
+      while (cg > message && cg[-1] >= '0' && cg[-1] <= '9') --cg;
+      p->cg_steps = atol(cg);
+    }
+  }
   if (strncmp(message, "refinement", 10) == 0) p->refinement = trailing_seconds(message);
 }
 
@@ -103,7 +112,7 @@ static const double kPressure = 0.01;
 typedef struct outcome {
   int ok, solver_ran;
   long dofs, nnz, contact_nodes, iterations, factorizations;
-  double t_solve, t_factor, complementarity, gap_residual, pressure_error, peak_mib;
+  double t_solve, t_analysis, t_factor, complementarity, gap_residual, pressure_error, peak_mib;
   parts log;
   char message[240];
 } outcome;
@@ -165,7 +174,7 @@ static void solve_here(int nx, int kind, int repeat, int threads, outcome *r) {
   }
   double times[MAX_REPEAT];
   for (int k = 0; k < repeat; ++k) {
-    parts log = {-1, -1, -1, -1};
+    parts log = {-1, -1, -1, -1, -1};
     mc_model *m = strips(mesh, kind, threads, kind == KIND_PLAIN ? NULL : &log, r->message, sizeof r->message);
     if (!m) return;
     if (echo_log && kind != KIND_PLAIN) fprintf(stderr, "  nx %d, solve %d of %d:\n", nx, k + 1, repeat);
@@ -184,6 +193,7 @@ static void solve_here(int nx, int kind, int repeat, int threads, outcome *r) {
       mc_get_info_int(m, MC_INFO_FACTORIZATIONS, &v), r->factorizations = (long)v;
       v = 0;
       mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &v), r->solver_ran = (int)v;
+      mc_get_info_real(m, MC_INFO_TIME_ANALYSIS, &r->t_analysis);
       mc_get_info_real(m, MC_INFO_TIME_FACTORIZATION, &r->t_factor);
       mc_get_info_real(m, MC_INFO_COMPLEMENTARITY, &r->complementarity);
       mc_get_info_real(m, MC_INFO_GAP_RESIDUAL, &r->gap_residual);
@@ -280,10 +290,10 @@ static void part(char *cell, double seconds) {
 }
 
 /* Table 1's columns. */
-#define NCOL 23
+#define NCOL 25
 static const char *const kColumns[NCOL] = {
     "nx", "contact nodes", "DOFs", "solver", "ran", "nnz(L) contact", "nnz(L) plain", "it", "factorizations",
-    "contact solve s", "factor s", "geometry s", "interface operator s", "active-set s", "refinement s", "plain solve s",
+    "CG steps", "contact solve s", "analysis s", "factor s", "geometry s", "interface operator s", "active-set s", "refinement s", "plain solve s",
     "contact/plain", "peak MiB contact", "peak MiB plain", "memory contact/plain", "pressure error / p",
     "MC_INFO_COMPLEMENTARITY", "MC_INFO_GAP_RESIDUAL"};
 
@@ -347,6 +357,10 @@ int main(int argc, char **argv) {
     fprintf(stderr, "bad --solver %s\n", solver);
     return usage(argv[0]);
   }
+  if (mem_limit > 0 && mem_limit < 1) {
+    fprintf(stderr, "--mem-limit: 0 (none) or at least 1 GiB\n");
+    return usage(argv[0]);
+  }
   if (repeat < 1 || repeat > MAX_REPEAT) {
     fprintf(stderr, "need 1 <= --repeat <= %d\n", MAX_REPEAT);
     return usage(argv[0]);
@@ -386,10 +400,10 @@ int main(int argc, char **argv) {
       snprintf(cell[3], 96, "%s", solver_name(kind));
       if (plain.ok) {
         snprintf(cell[6], 96, "%ld", plain.nnz);
-        snprintf(cell[15], 96, "%.4f", plain.t_solve);
-        snprintf(cell[18], 96, "%.0f", plain.peak_mib);
+        snprintf(cell[17], 96, "%.4f", plain.t_solve);
+        snprintf(cell[20], 96, "%.0f", plain.peak_mib);
       } else {
-        strcpy(cell[15], "failed"), strcpy(cell[18], "failed");
+        strcpy(cell[17], "failed"), strcpy(cell[20], "failed");
       }
       if (kind == MC_INTERFACE_CONDENSED && nx > condensed_max) {
         snprintf(cell[1], 96, "%d", nx + 1); /* body 1's bottom nodes */
@@ -413,19 +427,22 @@ int main(int argc, char **argv) {
       snprintf(cell[5], 96, "%ld", r.nnz);
       snprintf(cell[7], 96, "%ld", r.iterations);
       snprintf(cell[8], 96, "%ld", r.factorizations);
-      snprintf(cell[9], 96, "%.3f", r.t_solve);
-      snprintf(cell[10], 96, "%.3f", r.t_factor);
-      part(cell[11], r.log.geometry), part(cell[12], r.log.interface);
-      part(cell[13], r.log.active_set), part(cell[14], r.log.refinement);
+      if (r.log.cg_steps >= 0) snprintf(cell[9], 96, "%ld", r.log.cg_steps);
+      else strcpy(cell[9], "-");
+      snprintf(cell[10], 96, "%.3f", r.t_solve);
+      snprintf(cell[11], 96, "%.3f", r.t_analysis);
+      snprintf(cell[12], 96, "%.3f", r.t_factor);
+      part(cell[13], r.log.geometry), part(cell[14], r.log.interface);
+      part(cell[15], r.log.active_set), part(cell[16], r.log.refinement);
       if (plain.ok) {
         const double x = r.t_solve / plain.t_solve;
-        snprintf(cell[16], 96, x < 10 ? "%.2f" : "%.0f", x);
-        snprintf(cell[19], 96, "%.2f", r.peak_mib / plain.peak_mib);
+        snprintf(cell[18], 96, x < 10 ? "%.2f" : "%.0f", x);
+        snprintf(cell[21], 96, "%.2f", r.peak_mib / plain.peak_mib);
       }
-      snprintf(cell[17], 96, "%.0f", r.peak_mib);
-      snprintf(cell[20], 96, "%.1e", r.pressure_error);
-      snprintf(cell[21], 96, "%.1e", r.complementarity);
-      snprintf(cell[22], 96, "%.1e", r.gap_residual);
+      snprintf(cell[19], 96, "%.0f", r.peak_mib);
+      snprintf(cell[22], 96, "%.1e", r.pressure_error);
+      snprintf(cell[23], 96, "%.1e", r.complementarity);
+      snprintf(cell[24], 96, "%.1e", r.gap_residual);
       print_row(cell);
     }
   }

@@ -17,9 +17,15 @@
  * --same-process 1 measures as runs 1 to 4 of docs/benchmarks.md did: one process per size, one
  * untimed serial solve, then the two modes alternating in that process.
  *
- * usage: threads_bench [--repeat n] [--threads n] [--phases 1] [--same-process 1] equal:N | hertz:h1 ...
+ * The last column is the interface solver that ran (MC_INFO_INTERFACE_SOLVER of the automatic
+ * solve: condensed or sparse; "-" from a library that does not set it).
+ *
+ * usage: threads_bench [--repeat n] [--threads n] [--solver auto|condensed|sparse] [--phases 1]
+ *                      [--same-process 1] equal:N | hertz:h1 ...
  *        (default: the sizes of docs/benchmarks.md, 10^4 to 2*10^6 DOFs, 5 repeats;
  *         --threads: the value compared with serial, default 0 = automatic;
+ *         --solver: MC_OPTION_INTERFACE_SOLVER of every solve, default auto = the option not
+ *         set (the library's choice); condensed or sparse forces that path in both modes;
  *         --phases 1: every solve's phase messages on stderr, timed from mc_create;
  *         --only t: no comparison, `repeat` solves with MC_OPTION_THREADS = t in one process,
  *         each time on stderr: for profiling with perf)
@@ -40,6 +46,7 @@
 #define MAX_REPEAT 15
 
 static int show_phases; /* --phases: print each solve's log with the wall time since mc_create */
+static int solver_option = MC_INTERFACE_AUTO; /* --solver: MC_OPTION_INTERFACE_SOLVER, AUTO = not set */
 static double phase_origin;
 
 static void print_phase(void *user, mc_log_level level, const char *message) {
@@ -99,7 +106,7 @@ static int hertz(scene *sc, double h1) {
 typedef struct timing {
   double first, resolve;
   long dofs;
-  int ok, threads_seen;
+  int ok, threads_seen, solver_ran;
   double *u; /* both bodies' displacements, for the bit-for-bit comparison */
 } timing;
 
@@ -133,7 +140,11 @@ static void solve(const scene *sc, int threads, timing *out) {
   if (!st) st = mc_set_contact(m, 1, s->n_contact_edges[0], s->contact_edges[0]);
   if (!st) st = mc_set_contact(m, 2, s->n_contact_edges[1], s->contact_edges[1]);
   if (!st) st = mc_set_option_int(m, MC_OPTION_THREADS, threads);
+  if (!st && solver_option != MC_INTERFACE_AUTO) st = mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, solver_option);
   if (!st) st = mc_solve(m);
+  int64_t ran = 0;
+  if (!st) mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &ran);
+  out->solver_ran = (int)ran;
   size_t n0 = 2 * (size_t)s->body[0].n_nodes, n1 = 2 * (size_t)s->body[1].n_nodes;
   free(out->u);
   out->u = malloc(sizeof(double) * (n0 + n1));
@@ -183,7 +194,7 @@ static int chosen_threads(const scene *sc, int threads) {
 typedef struct shared_result {
   double first, resolve;
   long dofs;
-  int ok;
+  int ok, solver_ran;
 } shared_result;
 
 static int solve_in_child(const scene *sc, int threads, shared_result *out, double *u, size_t n_u) {
@@ -194,7 +205,7 @@ static int solve_in_child(const scene *sc, int threads, shared_result *out, doub
     timing t = {0};
     solve(sc, threads, &t); /* not timed */
     if (t.ok) solve(sc, threads, &t);
-    out->first = t.first, out->resolve = t.resolve, out->dofs = t.dofs, out->ok = t.ok;
+    out->first = t.first, out->resolve = t.resolve, out->dofs = t.dofs, out->ok = t.ok, out->solver_ran = t.solver_ran;
     if (t.ok) memcpy(u, t.u, sizeof(double) * n_u);
     _exit(t.ok ? 0 : 1);
   }
@@ -256,7 +267,7 @@ static int run(const char *spec, int repeat, int threads) {
         const int mode = (turn + k) % 2;
         if (!solve_in_child(&sc, mode == 0 ? 1 : threads, &shared[mode], u_shared + mode * n_u, n_u)) return 1;
         first[mode][k] = shared[mode].first, resolve[mode][k] = shared[mode].resolve;
-        t[mode].dofs = shared[mode].dofs;
+        t[mode].dofs = shared[mode].dofs, t[mode].solver_ran = shared[mode].solver_ran;
       }
       identical = identical && memcmp(u_shared, u_shared + n_u, sizeof(double) * n_u) == 0;
     }
@@ -270,9 +281,11 @@ static int run(const char *spec, int repeat, int threads) {
   fprintf(stderr, "\n");
   double f1 = bench_median(first[0], repeat), fa = bench_median(first[1], repeat);
   double r1 = bench_median(resolve[0], repeat), ra = bench_median(resolve[1], repeat);
-  printf("| %s | %ld | %d + %d | %d | %.3f | %.3f | %.2f | %.4f | %.4f | %.2f | %s |\n", strncmp(spec, "equal", 5) ? "hertz" : "equal",
+  const int ran = t[1].solver_ran;
+  printf("| %s | %ld | %d + %d | %d | %.3f | %.3f | %.2f | %.4f | %.4f | %.2f | %s | %s |\n", strncmp(spec, "equal", 5) ? "hertz" : "equal",
          t[0].dofs, 2 * sc.s.body[0].n_nodes, 2 * sc.s.body[1].n_nodes, chosen_threads(&sc, threads), f1, fa, fa / f1, r1, ra,
-         ra / r1, identical ? "yes" : "NO");
+         ra / r1, identical ? "yes" : "NO",
+         ran == MC_INTERFACE_CONDENSED ? "condensed" : ran == MC_INTERFACE_SPARSE ? "sparse" : "-");
   fflush(stdout);
   free(t[0].u), free(t[1].u);
   hertz_scene_free(&sc.s); /* frees the equal scene's arrays too (same layout) */
@@ -290,13 +303,21 @@ int main(int argc, char **argv) {
     else if (strcmp(argv[first], "--phases") == 0) show_phases = atoi(argv[first + 1]);
     else if (strcmp(argv[first], "--same-process") == 0) same_process = atoi(argv[first + 1]);
     else if (strcmp(argv[first], "--only") == 0) only = atoi(argv[first + 1]);
+    else if (strcmp(argv[first], "--solver") == 0) {
+      const char *v = argv[first + 1];
+      solver_option = !strcmp(v, "condensed") ? MC_INTERFACE_CONDENSED : !strcmp(v, "sparse") ? MC_INTERFACE_SPARSE : MC_INTERFACE_AUTO;
+      if (strcmp(v, "auto") && solver_option == MC_INTERFACE_AUTO) {
+        fprintf(stderr, "--solver: auto, condensed or sparse\n");
+        return 2;
+      }
+    }
     else break;
     first += 2;
   }
   if (repeat < 1 || repeat > MAX_REPEAT) repeat = 5;
   int count = argc > first ? argc - first : (int)(sizeof defaults / sizeof *defaults);
-  printf("| scene | DOFs | unknowns per body | threads (auto) | serial s | auto s | auto/serial | re-solve serial s | re-solve auto s | auto/serial | same u bit for bit |\n");
-  printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+  printf("| scene | DOFs | unknowns per body | threads (auto) | serial s | auto s | auto/serial | re-solve serial s | re-solve auto s | auto/serial | same u bit for bit | interface solver |\n");
+  printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   fflush(stdout);
   int failed = 0;
   for (int k = 0; k < count; ++k) {
