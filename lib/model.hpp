@@ -173,7 +173,7 @@ private:
   int body_threads() const;
   // Runs task(b, work) for both bodies: one after the other, or with two threads body 2's on a
   // std::thread joined before returning. Exceptions are rethrown here, body 1's first.
-  template <class Task> void for_each_body(Task &&task);
+  void for_each_body(const std::function<void(int, BodyWork &)> &task);
   std::unique_ptr<BodySystem> assemble_body(int b, BodyWork &work) const;
   void reduce_body(int b, BodyWork &work);
   void analyze_body(int b, BodyWork &work);
@@ -181,8 +181,16 @@ private:
   // The automatic choice of interface solver (MC_OPTION_INTERFACE_SOLVER), after the bodies'
   // analyses for the condensed path; also refuses a path too large for memory. True: sparse.
   bool choose_interface_solver();
+  // MC_ERROR_MEMORY if the condensed path's dense blocks (S, W_b, L_GG) would not fit.
+  void check_condensed_fits() const;
+  // The sparse path (sparse_contact_path.cpp). solve_sparse returns false if its active-set
+  // iteration cycled (then fall_back_to_condensed).
   void build_sparse_structure();
-  void solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::vector<double> &alpha);
+  bool solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::vector<double> &alpha);
+  // The condensed path (condensed_contact_path.cpp).
+  void build_condensed(const std::function<void(int, BodyWork &)> &then);
+  void fall_back_to_condensed(LoadSolve loads[2]);
+  void solve_condensed(LoadSolve loads[2], DualQp &qp, std::vector<double> &lambda, std::vector<double> &alpha);
   // Row r's share of the rigid modes, G = B R (q x modes, column-major), and e = R^T f_eff.
   std::vector<double> rigid_mode_rows() const;
   void interface_block(int b, std::vector<double> &s_b, BodyWork &work);

@@ -117,6 +117,7 @@ void SparseCholesky::analyze(const SymmetricCsc &a, const std::vector<int> &inte
   CholmodWithoutOpenMpTeam serial_openmp;
   if (d.factor) cholmod_free_factor(&d.factor, &d.common);
   n_ = a.n;
+  analyzed_ = true;
   d.interface = interface;
   if (n_ == 0) return;  // every unknown prescribed (a fully supported body): nothing to factor
   cholmod_sparse s = d.view(a);
@@ -156,6 +157,16 @@ void SparseCholesky::analyze(const SymmetricCsc &a, const std::vector<int> &inte
   for (int k = a.n - int(interface.size()); k < a.n; ++k)
     if (!is_interface[final_perm[k]])
       fail(MC_ERROR_INTERNAL, "the ordering did not keep the %zu interface unknowns last", interface.size());
+}
+
+bool SparseCholesky::analyzed() const { return analyzed_; }
+
+void SparseCholesky::release() {
+  Impl &d = *impl_;
+  if (d.factor) cholmod_free_factor(&d.factor, &d.common);
+  d.interface.clear();
+  n_ = 0;
+  analyzed_ = false;
 }
 
 void SparseCholesky::factorize(const SymmetricCsc &a) {

@@ -21,6 +21,9 @@ public:
 
   // Ordering and symbolic factorization. ordering: MC_ORDERING_*.
   void analyze(const SymmetricCsc &a, const std::vector<int> &interface, int ordering);
+  // Frees the analysis and the factor (analyze starts afresh).
+  void release();
+  bool analyzed() const;
   // Numeric factorization; throws MC_ERROR_SINGULAR if a is not positive definite.
   void factorize(const SymmetricCsc &a);
   // x <- A^-1 x, for nrhs right-hand sides stored one after the other (n each).
@@ -45,6 +48,7 @@ private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
   int n_ = 0;
+  bool analyzed_ = false;
 };
 
 }  // namespace mc

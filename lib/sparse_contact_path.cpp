@@ -42,6 +42,23 @@ constexpr double kSparseFactorizationsExpected = 6;
 // operating system would otherwise kill the host process, which a library must not cause.
 constexpr double kCondensedMemoryShare = 0.5;
 
+void Model::check_condensed_fits() const {
+  const ContactSystem &cs = *contact_;
+  const double q = cs.rows.size();
+  double bytes = 8 * q * q;
+  for (int b = 0; b < 2; ++b)
+    if (system_[b]) {
+      const double ng = double(system_[b]->interface.size());
+      bytes += 8 * (ng * q + ng * ng);
+    }
+  const double memory = available_memory();
+  if (memory > 0 && bytes > memory)
+    fail(MC_ERROR_MEMORY,
+         "the condensed interface solver (MC_INTERFACE_CONDENSED) would need about %.3g GiB for %d contact rows "
+         "(a dense operator of order q), and %.3g GiB are available: use MC_INTERFACE_SPARSE or MC_INTERFACE_AUTO",
+         gib(bytes), int(q), gib(memory));
+}
+
 bool Model::choose_interface_solver() {
   const double start = now();
   ContactSystem &cs = *contact_;
@@ -199,7 +216,7 @@ void Model::build_sparse_structure() {
            st.n_unknowns, 2 * rows.aux_count, cs.modes, st.rows(), cs.solver.factor_nnz(), now() - start);
 }
 
-void Model::solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::vector<double> &alpha) {
+bool Model::solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::vector<double> &alpha) {
   ContactSystem &cs = *contact_;
   const ConstraintRows &rows = cs.rows;
   const SparseContactStructure &st = cs.structure;
@@ -307,13 +324,12 @@ void Model::solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::v
     fail(MC_ERROR_SINGULAR,
          "contact cannot hold the free rigid motion (%s): the contact normals do not restrain it; add supports",
          describe_modes().c_str());
+  if (result.outcome == SparseContactOutcome::not_converged && result.cycled) return false;
   if (result.outcome == SparseContactOutcome::not_converged)
     fail(MC_ERROR_NOT_CONVERGED,
-         "the active-set iteration of the sparse interface solver stopped after %d iterations (limit %d%s) with a "
-         "relative complementarity violation of %.3g (tolerance %.3g)%s",
-         result.iterations, options.max_iterations, result.cycled ? ", it cycled" : "", result.violation,
-         options.tolerance,
-         result.cycled ? "; the condensed solver (MC_INTERFACE_CONDENSED) has a fallback for such problems" : "");
+         "the active-set iteration of the sparse interface solver stopped after %d iterations (limit %d) with a "
+         "relative complementarity violation of %.3g (tolerance %.3g)",
+         result.iterations, options.max_iterations, result.violation, options.tolerance);
   // 4. The answer in the model's terms.
   lambda.assign(result.lambda.begin(), result.lambda.begin() + q);
   alpha.assign(result.x.begin() + cs.mode_offset, result.x.begin() + cs.mode_offset + k);
@@ -324,9 +340,12 @@ void Model::solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::v
     for (size_t i = 0; i < sys.solve_dofs.size(); ++i) loads[b].v[sys.solve_dofs[i]] = result.x[cs.column_offset[b] + i];
   }
   infos.complementarity = result.violation;
-  cs.last_active.assign(q, 0);
-  for (int r = 0; r < q; ++r) cs.last_active[r] = lambda[r] > 0, infos.active += lambda[r] > 0;
+  // The next solve starts from the set this one ended on, which is the factorized one: a
+  // re-solve whose active set does not change factorizes nothing.
+  cs.last_active.assign(result.active.begin(), result.active.begin() + q);
+  for (int r = 0; r < q; ++r) infos.active += lambda[r] > 0;
   infos.contact_rows = q;
+  return true;
 }
 
 }  // namespace mc

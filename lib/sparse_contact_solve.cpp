@@ -31,70 +31,64 @@ void SparseContactSolver::analyze(const SparseContactStructure &s, int ordering)
   structure_ = &s;
   factorized_.clear();
   const int n = s.n_unknowns, nrows = s.rows();
-  // 1. The pattern of H + C^T C (upper triangle by columns): count, fill, sort, unique.
-  std::vector<long> count(n + 1, 0);
-  for (size_t b = 0; b < s.blocks.size(); ++b) {
-    const SymmetricCsc &k = *s.blocks[b];
-    for (int c = 0; c < k.n; ++c) count[s.block_offset[b] + c + 1] += k.colptr[c + 1] - k.colptr[c];
-  }
+  // 1. The pattern of H + C^T C (upper triangle by columns), column by column: H's column j and,
+  //    for each row r that names j, r's columns up to j; a marker keeps each row index once.
+  //    Two passes (count, then fill), so that no list with duplicates is ever held.
+  std::vector<int> ct_start(n + 1, 0), ct_row;  // C^T: the rows naming each column
   for (int r = 0; r < nrows; ++r)
-    for (int p = s.row_start[r]; p < s.row_start[r + 1]; ++p)
-      for (int q = s.row_start[r]; q < s.row_start[r + 1]; ++q)
-        if (s.column[q] >= s.column[p]) count[s.column[q] + 1]++;
-  for (int j = 0; j < n; ++j) count[j + 1] += count[j];
-  std::vector<int> rows(size_t(count[n]));
-  std::vector<long> fill(count.begin(), count.end() - 1);
-  for (size_t b = 0; b < s.blocks.size(); ++b) {
-    const SymmetricCsc &k = *s.blocks[b];
-    const int o = s.block_offset[b];
-    for (int c = 0; c < k.n; ++c)
-      for (int p = k.colptr[c]; p < k.colptr[c + 1]; ++p) rows[size_t(fill[o + c]++)] = o + k.rows[p];
+    for (int p = s.row_start[r]; p < s.row_start[r + 1]; ++p) ct_start[s.column[p] + 1]++;
+  for (int j = 0; j < n; ++j) ct_start[j + 1] += ct_start[j];
+  ct_row.resize(size_t(ct_start[n]));
+  {
+    std::vector<int> next(ct_start.begin(), ct_start.end() - 1);
+    for (int r = 0; r < nrows; ++r)
+      for (int p = s.row_start[r]; p < s.row_start[r + 1]; ++p) ct_row[size_t(next[s.column[p]]++)] = r;
   }
-  for (int r = 0; r < nrows; ++r)
-    for (int p = s.row_start[r]; p < s.row_start[r + 1]; ++p)
-      for (int q = s.row_start[r]; q < s.row_start[r + 1]; ++q)
-        if (s.column[q] >= s.column[p]) rows[size_t(fill[s.column[q]]++)] = s.column[p];
+  std::vector<int> block_of(n, -1);
+  for (size_t b = 0; b < s.blocks.size(); ++b)
+    for (int c = 0; c < s.blocks[b]->n; ++c) block_of[s.block_offset[b] + c] = int(b);
+  std::vector<int> mark(n, -1);
   matrix_ = SymmetricCsc{};
   matrix_.n = n;
   matrix_.colptr.assign(n + 1, 0);
-  size_t kept = 0;
-  for (int j = 0; j < n; ++j) {
-    auto first = rows.begin() + count[j], last = rows.begin() + count[j + 1];
-    std::sort(first, last);
-    last = std::unique(first, last);
-    for (auto it = first; it != last; ++it) rows[kept++] = *it;
-    matrix_.colptr[j + 1] = int(kept);
+  for (int pass = 0; pass < 2; ++pass) {
+    std::fill(mark.begin(), mark.end(), -1);
+    for (int j = 0; j < n; ++j) {
+      int top = matrix_.colptr[j];
+      auto keep = [&](int i) {
+        if (mark[i] == j) return;
+        mark[i] = j;
+        if (pass == 1) matrix_.rows[size_t(top)] = i;
+        ++top;
+      };
+      if (block_of[j] >= 0) {
+        const SymmetricCsc &k = *s.blocks[size_t(block_of[j])];
+        const int o = s.block_offset[size_t(block_of[j])], c = j - o;
+        for (int p = k.colptr[c]; p < k.colptr[c + 1]; ++p) keep(o + k.rows[p]);
+      }
+      keep(j);  // the diagonal, also for w and alpha
+      for (int q = ct_start[j]; q < ct_start[j + 1]; ++q) {
+        const int r = ct_row[size_t(q)];
+        for (int p = s.row_start[r]; p < s.row_start[r + 1]; ++p)
+          if (s.column[p] <= j) keep(s.column[p]);
+      }
+      if (pass == 0) matrix_.colptr[j + 1] = top - matrix_.colptr[j];
+      else std::sort(matrix_.rows.begin() + matrix_.colptr[j], matrix_.rows.begin() + top);
+    }
+    if (pass == 0) {
+      for (int j = 0; j < n; ++j) matrix_.colptr[j + 1] += matrix_.colptr[j];
+      matrix_.rows.resize(size_t(matrix_.colptr[n]));
+    }
   }
-  rows.resize(kept);
-  rows.shrink_to_fit();
-  matrix_.rows = std::move(rows);
-  matrix_.values.assign(kept, 0.0);
-  auto position = [&](int i, int j) {  // of entry (min, max) in the pattern
-    if (i > j) std::swap(i, j);
-    auto first = matrix_.rows.begin() + matrix_.colptr[j], last = matrix_.rows.begin() + matrix_.colptr[j + 1];
-    return int(std::lower_bound(first, last, i) - matrix_.rows.begin());
-  };
-  // 2. H's values in that pattern, and each row's terms c_i c_j.
-  h_values_.assign(kept, 0.0);
+  std::vector<int>().swap(ct_row), std::vector<int>().swap(mark), std::vector<int>().swap(block_of);
+  matrix_.values.assign(matrix_.rows.size(), 0.0);
+  // 2. H's diagonal, for P's weights.
   std::vector<double> diagonal(n, 0.0);
   for (size_t b = 0; b < s.blocks.size(); ++b) {
     const SymmetricCsc &k = *s.blocks[b];
-    const int o = s.block_offset[b];
     for (int c = 0; c < k.n; ++c)
-      for (int p = k.colptr[c]; p < k.colptr[c + 1]; ++p) {
-        h_values_[position(o + k.rows[p], o + c)] += k.values[p];
-        if (k.rows[p] == c) diagonal[o + c] = k.values[p];
-      }
-  }
-  term_start_.assign(1, 0), term_index_.clear(), term_value_.clear();
-  for (int r = 0; r < nrows; ++r) {
-    for (int p = s.row_start[r]; p < s.row_start[r + 1]; ++p)
-      for (int q = s.row_start[r]; q < s.row_start[r + 1]; ++q) {
-        if (s.column[q] < s.column[p]) continue;  // a row names each column once (the model merges them)
-        term_index_.push_back(position(s.column[p], s.column[q]));
-        term_value_.push_back(s.value[p] * s.value[q]);
-      }
-    term_start_.push_back(int(term_index_.size()));
+      for (int p = k.colptr[c]; p < k.colptr[c + 1]; ++p)
+        if (k.rows[p] == c) diagonal[s.block_offset[b] + c] = k.values[p];
   }
   // 3. P's weights.
   double mean_diagonal = 0;
@@ -120,13 +114,38 @@ void SparseContactSolver::analyze(const SparseContactStructure &s, int ordering)
   t_analysis_ = now() - start;
 }
 
+// Entry (i, j) of the pattern (i <= j).
+int SparseContactSolver::position(int i, int j) const {
+  if (i > j) std::swap(i, j);
+  auto first = matrix_.rows.begin() + matrix_.colptr[j], last = matrix_.rows.begin() + matrix_.colptr[j + 1];
+  return int(std::lower_bound(first, last, i) - matrix_.rows.begin());
+}
+
+// H_P's values for an active set: H's blocks (each block column merged into the pattern's
+// column, both sorted), then each active row's c_r^T P_r c_r. Nothing of H is kept beside the
+// pattern: its values are read from the bodies' matrices each time (memory: docs/benchmarks.md).
 void SparseContactSolver::factorize(const std::vector<char> &active, SparseContactResult &result) {
   const double start = now();
   const SparseContactStructure &s = *structure_;
-  matrix_.values = h_values_;
-  for (int r = 0; r < s.rows(); ++r)
-    if (!s.row_is_inequality[r] || active[r])
-      for (int t = term_start_[r]; t < term_start_[r + 1]; ++t) matrix_.values[term_index_[t]] += weight_[r] * term_value_[t];
+  std::fill(matrix_.values.begin(), matrix_.values.end(), 0.0);
+  for (size_t b = 0; b < s.blocks.size(); ++b) {
+    const SymmetricCsc &k = *s.blocks[b];
+    const int o = s.block_offset[b];
+    for (int c = 0; c < k.n; ++c) {
+      int at = matrix_.colptr[o + c];
+      for (int p = k.colptr[c]; p < k.colptr[c + 1]; ++p) {
+        while (matrix_.rows[size_t(at)] != o + k.rows[p]) ++at;
+        matrix_.values[size_t(at)] += k.values[p];
+      }
+    }
+  }
+  for (int r = 0; r < s.rows(); ++r) {
+    if (s.row_is_inequality[r] && !active[r]) continue;
+    for (int p = s.row_start[r]; p < s.row_start[r + 1]; ++p)
+      for (int q = s.row_start[r]; q < s.row_start[r + 1]; ++q)
+        if (s.column[q] >= s.column[p])
+          matrix_.values[size_t(position(s.column[p], s.column[q]))] += weight_[r] * s.value[p] * s.value[q];
+  }
   factorized_.clear();
   cholesky_.factorize(matrix_);
   factorized_ = active;
@@ -345,7 +364,7 @@ SparseContactResult SparseContactSolver::solve(const std::vector<double> &load, 
     result.violation = violation;
     if (observe) observe({it, n_active, int(violating.size()), violation, true});
     if (violating.empty()) {
-      result.x = std::move(x), result.lambda = std::move(lambda);
+      result.x = std::move(x), result.lambda = std::move(lambda), result.active = active;
       result.outcome = violation <= tolerance ? SparseContactOutcome::solved : SparseContactOutcome::not_converged;
       return result;
     }

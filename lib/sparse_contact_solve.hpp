@@ -48,6 +48,7 @@ struct SparseContactResult {
   SparseContactOutcome outcome = SparseContactOutcome::solved;
   std::vector<double> x;       // n_unknowns
   std::vector<double> lambda;  // one per row (the equations' too)
+  std::vector<char> active;    // the final active set (contact rows; a re-solve starts from it)
   int iterations = 0;          // active-set iterations
   int factorizations = 0;      // numeric factorizations of H_P in this solve
   int cg_steps = 0;            // conjugate-gradient steps (each: one forward and one backward solve)
@@ -61,6 +62,8 @@ public:
   // The pattern of H + C^T C, its ordering and symbolic factorization (ordering: MC_ORDERING_*).
   // `structure` must outlive the solver (its blocks are read at each factorization).
   void analyze(const SparseContactStructure &structure, int ordering);
+  // Frees the pattern and the factor.
+  void release() { cholesky_.release(), matrix_ = SymmetricCsc{}, factorized_.clear(); }
   // CHOLMOD's estimates from the analysis, for the automatic choice of path.
   double factor_flops() const { return flops_; }
   long factor_nnz() const { return cholesky_.factor_nnz(); }
@@ -87,11 +90,8 @@ private:
   double row_times(int r, const std::vector<double> &x) const;                // C_r x
 
   const SparseContactStructure *structure_ = nullptr;
+  int position(int i, int j) const;  // of entry (min(i, j), max(i, j)) in matrix_
   SymmetricCsc matrix_;              // H_P's pattern (H + C^T C), values of the factorized set
-  std::vector<double> h_values_;     // H alone in that pattern
-  // Row r's terms c_i c_j: (index in matrix_.values, c_i c_j), CSR over rows.
-  std::vector<int> term_start_, term_index_;
-  std::vector<double> term_value_;
   std::vector<double> weight_;       // P, one per row
   SparseCholesky cholesky_;
   std::vector<char> factorized_;     // the active set of the current factor (empty: none)

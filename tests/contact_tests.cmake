@@ -23,3 +23,9 @@ set_tests_properties(test_model_threads_blas1 PROPERTIES TIMEOUT 120 ENVIRONMENT
 # Westergaard's wavy contact, many separate patches on one interface (the scene of
 # bench/westergaard.c at N = 4 wavelengths), against the closed form.
 mc_add_check_test(test_westergaard test_westergaard.c westergaard_scene.c)
+
+# The two interface solvers (MC_OPTION_INTERFACE_SOLVER) forced on every contact scene of the
+# suite: the same answer to round-off (tests/test_interface_solvers.c).
+mc_add_check_test(test_interface_solvers test_interface_solvers.c westergaard_scene.c)
+target_link_libraries(test_interface_solvers PRIVATE mc_contact_checks)
+set_tests_properties(test_interface_solvers PROPERTIES TIMEOUT 600)

@@ -69,7 +69,7 @@ case "$mode" in
     # study and the two long scene suites. test_contact keeps the contact paths under valgrind.
     t0=$SECONDS
     CK_FORK=no OPENBLAS_NUM_THREADS=1 python3 tools/memcheck_tests.py run "$build" \
-      --exclude test_contact_convergence,test_contact_scenes,test_contact_hard -- \
+      --exclude test_contact_convergence,test_contact_scenes,test_contact_hard,test_interface_solvers -- \
       valgrind -q --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect --num-callers=30
     t_valgrind=$((SECONDS - t0))
     # (c) the libFuzzer target (clang), a bounded run from the checked-in seed corpus; new inputs

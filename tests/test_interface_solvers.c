@@ -1,0 +1,1154 @@
+/*
+ * test_interface_solvers.c - the two interface solvers (MC_OPTION_INTERFACE_SOLVER) on the contact
+ * scenes of the test suite: each scene is built twice, solved once with MC_INTERFACE_CONDENSED
+ * and once with MC_INTERFACE_SPARSE forced, and the answers compared:
+ * - the status (a scene the suite expects to fail, e.g. MC_ERROR_SINGULAR, fails alike);
+ * - MC_INFO_INTERFACE_SOLVER reports the forced path;
+ * - the contact positions, MC_INFO_ACTIVE_NODES and the active flags (force > 0) are equal;
+ * - contact pressures relative to the largest pressure, displacements of both bodies relative
+ *   to the largest displacement, within TOL (round-off: the condensed path's own accuracy is
+ *   ~1e-10 on long interfaces);
+ * and, for scenes with load steps (a load, a gap offset or a support value changed, then
+ * solved again on the same model), the same after every step; a sparse re-solve whose active
+ * set did not change must do no new factorization (MC_INFO_FACTORIZATIONS == 0).
+ *
+ * The scenes (source test in brackets) are rebuilt here from the shared scene helpers
+ * (scenes.h: sc_mesh_rect and friends; contact_checks.h: hertz_build; westergaard_scene.h;
+ * hertz_scene.h) with the parameters of the tests they come from. Each prints its largest
+ * differences. Where the sparse path's active-set iteration cycles it hands over to the
+ * condensed path (MC_INFO_INTERFACE_SOLVER then says so); such scenes are marked falls_back,
+ * and their answers are compared all the same.
+ */
+#include "check_helpers.h"
+#include "contact_checks.h"
+#include "hertz_scene.h"
+#include "mortarcontact.h"
+#include "scenes.h"
+#include "westergaard_scene.h"
+#include <check.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+#define TOL 1e-9
+/* OK() of check_helpers.h for functions that hold the model as r->m */
+#define ROK(call) ck_assert_msg((call) == MC_OK, "%s failed: %s", #call, mc_errmsg(r->m))
+
+/* ---- a built scene ------------------------------------------------------------------------ */
+
+typedef struct polar_ring {
+  int nt, nr;
+  mc_int n_nodes, n_cells;
+  double *xy;
+  mc_int *cells;
+} polar_ring;
+
+typedef struct run {
+  mc_model *m;
+  mc_int n_nodes[2];
+  sc_mesh mesh[2];
+  int n_mesh;
+  hertz_run hr;
+  int has_hr;
+  hertz_scene hs;
+  int has_hs;
+  wg_scene wg;
+  int has_wg;
+  double *xy[2]; /* other owned coordinate / cell arrays */
+  mc_int *cells[2];
+  char label[160];
+  /* set by a builder for its variant (0: the default) */
+  double tol;   /* relative tolerance of pressures and displacements (0: TOL) */
+  int skip_u;   /* the displacement is not unique (a free rigid motion of zero energy) */
+  int skip_active; /* degenerate contact (zero gap and zero force): flags and pressures are round-off */
+  int falls_back; /* the sparse path's active-set iteration cycles here: it hands over to the condensed one */
+} run;
+
+static void run_free(run *r) {
+  if (r->has_hr) hertz_free(&r->hr); /* destroys the model */
+  else mc_destroy(r->m);
+  for (int b = 0; b < r->n_mesh; ++b) sc_mesh_free(&r->mesh[b]);
+  if (r->has_hs) hertz_scene_free(&r->hs);
+  if (r->has_wg) wg_scene_free(&r->wg);
+  for (int b = 0; b < 2; ++b) free(r->xy[b]), free(r->cells[b]);
+}
+
+static mc_model *new_model(run *r) {
+  ck_assert_int_eq(mc_create(&r->m), MC_OK);
+  return r->m;
+}
+
+/* Two rectangles (sc_mesh_rect, seeds 1 and 2) as bodies 1 and 2, E and nu per body. */
+static void two_rects(run *r, int npc1, int nx1, int ny1, double x1, double y1, double lx1, double ly1, int npc2, int nx2,
+                      int ny2, double x2, double y2, double lx2, double ly2, double e1, double e2, double nu) {
+  mc_model *m = r->m ? r->m : new_model(r);
+  ck_assert_int_eq(sc_mesh_rect(&r->mesh[0], npc1, nx1, ny1, x1, y1, lx1, ly1, 0, 1), 0);
+  ck_assert_int_eq(sc_mesh_rect(&r->mesh[1], npc2, nx2, ny2, x2, y2, lx2, ly2, 0, 2), 0);
+  r->n_mesh = 2;
+  for (int b = 0; b < 2; ++b) {
+    OK(sc_set_mesh(m, b + 1, &r->mesh[b], 0));
+    OK(mc_set_material(m, b + 1, b == 0 ? e1 : e2, nu));
+    r->n_nodes[b] = r->mesh[b].n_nodes;
+  }
+}
+
+static void contact_bottom_top(run *r, int method) {
+  mc_model *m = r->m;
+  OK(mc_set_contact(m, 1, r->mesh[0].n_side_edges[SC_BOTTOM], r->mesh[0].side_edges[SC_BOTTOM]));
+  OK(mc_set_contact(m, 2, r->mesh[1].n_side_edges[SC_TOP], r->mesh[1].side_edges[SC_TOP]));
+  OK(mc_set_option_int(m, MC_OPTION_METHOD, method));
+}
+
+/* The stack of test_contact (blocks_build) and test_contact_scenes (stack_build_scaled):
+   body 1 = [x0, x0 + w1] x [y1, y1 + 0.5] (nx1 x 4f), body 2 = [0,1] x [-0.5, 0] (nx2 x 3f),
+   u_x = 0 on both left sides, u_y = 0 at body 2's bottom; lengths times L (and thickness L). */
+static void scale_point(double *x, double *y, void *ctx) { *x *= *(const double *)ctx, *y *= *(const double *)ctx; }
+static void stack(run *r, int npc, int nx1, int nx2, int f, double x0, double w1, double y1, double e1, double e2,
+                  int method, double L) {
+  mc_model *m = new_model(r);
+  ck_assert_int_eq(sc_mesh_rect(&r->mesh[0], npc, nx1, 4 * f, x0, y1, w1, 0.5, 0, 1), 0);
+  ck_assert_int_eq(sc_mesh_rect(&r->mesh[1], npc, nx2, 3 * f, 0, -0.5, 1, 0.5, 0, 2), 0);
+  r->n_mesh = 2;
+  if (L != 1) {
+    sc_mesh_map(&r->mesh[0], scale_point, &L), sc_mesh_map(&r->mesh[1], scale_point, &L);
+    OK(mc_set_plane(m, MC_PLANE_STRAIN, L));
+  }
+  for (int b = 0; b < 2; ++b) OK(sc_set_mesh(m, b + 1, &r->mesh[b], 0)), r->n_nodes[b] = r->mesh[b].n_nodes;
+  OK(mc_set_material(m, 1, e1, 0.3));
+  OK(mc_set_material(m, 2, e2, 0.3));
+  OK(sc_fix_side(m, 1, &r->mesh[0], SC_LEFT, MC_X, 0));
+  OK(sc_fix_side(m, 2, &r->mesh[1], SC_LEFT, MC_X, 0));
+  OK(sc_fix_side(m, 2, &r->mesh[1], SC_BOTTOM, MC_Y, 0));
+  contact_bottom_top(r, method);
+}
+
+/* The bare stack of test_contact_hard (no supports): body 1 = [0,w1] x [gap, gap+0.5] (nx1 x 4),
+   body 2 = [0,1] x [-0.5,0] (nx2 x 3). */
+static void bare_stack(run *r, int npc, int nx1, int nx2, double w1, double gap, double e1, double e2, int method) {
+  two_rects(r, npc, nx1, 4, 0, gap, w1, 0.5, npc, nx2, 3, 0, -0.5, 1, 0.5, e1, e2, 0.3);
+  contact_bottom_top(r, method);
+}
+
+static void press(mc_model *m, int body, const sc_mesh *mesh, int side, double p) {
+  const mc_int ne = mesh->n_side_edges[side];
+  double *pr = malloc(sizeof(double) * (size_t)ne);
+  for (mc_int e = 0; e < ne; ++e) pr[e] = p;
+  OK(mc_add_pressure(m, body, ne, mesh->side_edges[side], pr));
+  free(pr);
+}
+
+static void fix_node(mc_model *m, int body, mc_int node, int components, double ux, double uy) {
+  double v[2] = {ux, uy};
+  OK(mc_fix(m, body, 1, &node, components, v));
+}
+
+/* Prescribed u (components comp) on every node of a side. */
+static void move_side(mc_model *m, int body, const sc_mesh *mesh, int side, int comp, double ux, double uy) {
+  const mc_int n = mesh->n_side_nodes[side];
+  double *v = malloc(sizeof(double) * 2 * (size_t)n);
+  for (mc_int k = 0; k < n; ++k) v[2 * k] = ux, v[2 * k + 1] = uy;
+  OK(mc_fix(m, body, n, mesh->side_nodes[side], comp, v));
+  free(v);
+}
+
+static void offsets_all(mc_model *m, const sc_mesh *mesh, int side, double offset) {
+  const mc_int n = mesh->n_side_nodes[side];
+  double *o = malloc(sizeof(double) * (size_t)n);
+  for (mc_int k = 0; k < n; ++k) o[k] = offset;
+  OK(mc_set_gap_offset(m, n, mesh->side_nodes[side], o));
+  free(o);
+}
+
+static const char *mname(int method) { return method == 0 ? "mortar" : method == 1 ? "dual" : "NTS"; }
+
+/* ---- scenes ------------------------------------------------------------------------------- */
+
+/* [test_contact patch_test, kkt_and_equilibrium_non_matching, matching_meshes_methods_agree]
+   uniform p on body 1's top; v: npc x method x meshes (7/5, 5/5). Step: p doubled. */
+static void b_patch(run *r, int v) {
+  const int npc = 3 + v % 2, method = v / 2 % 3, matching = v / 6;
+  stack(r, npc, matching ? 5 : 7, 5, 1, 0, 1, 0, 2, 5, method, 1);
+  press(r->m, 1, &r->mesh[0], SC_TOP, 0.3);
+  snprintf(r->label, sizeof r->label, "P%d %s %s", npc == 3 ? 1 : 2, mname(method), matching ? "5/5" : "7/5");
+  if (npc == 4) r->label[1] = 'Q', r->label[2] = '1';
+}
+static void s_double_top(run *r, int v, int step) {
+  (void)v, (void)step;
+  ROK(mc_clear_loads(r->m, 1));
+  press(r->m, 1, &r->mesh[0], SC_TOP, 0.6);
+}
+
+/* [test_contact load_partial] pushes on the left half, pulls on the right. Step: reversed. */
+static void partial_load(run *r, double scale) {
+  const sc_mesh *top = &r->mesh[0];
+  const int ne = top->n_side_edges[SC_TOP];
+  double *pr = malloc(sizeof(double) * (size_t)ne);
+  for (int e = 0; e < ne; ++e) {
+    const mc_int *ed = top->side_edges[SC_TOP] + 2 * e;
+    pr[e] = scale * (0.5 * (top->xy[2 * ed[0]] + top->xy[2 * ed[1]]) < 0.5 ? 2.0 : -0.5);
+  }
+  ROK(mc_add_pressure(r->m, 1, ne, top->side_edges[SC_TOP], pr));
+  free(pr);
+}
+static void b_partial_load(run *r, int v) {
+  const int npc = 3 + v % 2, method = v / 2 % 3;
+  stack(r, npc, 7, 5, 1, 0, 1, 0, 1, 1, method, 1);
+  if (v >= 6) ROK(sc_fix_side(r->m, 1, &r->mesh[0], SC_TOP, MC_Y, 0)); /* the contact stays open */
+  partial_load(r, 1);
+  snprintf(r->label, sizeof r->label, "npc %d %s%s", npc, mname(method % 3), v >= 6 ? ", top held: open" : "");
+}
+static void s_partial_load(run *r, int v, int step) {
+  (void)v, (void)step;
+  ROK(mc_clear_loads(r->m, 1));
+  partial_load(r, 1.5);
+}
+
+/* [test_contact gap_offset_is_a_clearance_or_an_interference] top pressed by u_y = -1e-2;
+   steps: offsets +4e-3, then -4e-3. */
+static void b_gap_offset(run *r, int v) {
+  stack(r, 3, 7, 5, 1, 0, 1, 0, 1, 3, v, 1);
+  move_side(r->m, 1, &r->mesh[0], SC_TOP, MC_Y, 0, -1e-2);
+  snprintf(r->label, sizeof r->label, "%s", mname(v));
+}
+static void s_gap_offset(run *r, int v, int step) {
+  (void)v;
+  offsets_all(r->m, &r->mesh[0], SC_BOTTOM, step == 0 ? 4e-3 : -4e-3);
+}
+
+/* [test_contact gap_offsets_tilting_a_floating_body] (the fuzz case: the condensed path needs its
+   primal active-set fallback); step: one gap opened, its neighbour closed by offsets. */
+static const double tilt_offsets[4] = {0.01, 0.05, 0.125, 0.3};
+static void b_tilting(run *r, int v) {
+  const int method = v % 3;
+  mc_model *m = new_model(r);
+  two_rects(r, 3, 6, 3, 0, 0, 1, 0.5, 4, 8, 4, 0, -0.5, 1, 0.5, 100, 200, 0.3);
+  OK(sc_fix_side(m, 2, &r->mesh[1], SC_BOTTOM, MC_XY, 0));
+  fix_node(m, 1, sc_node(&r->mesh[0], 3, 3), MC_X, 0, 0);
+  const sc_mesh *b1 = &r->mesh[0];
+  double *t = malloc(sizeof(double) * 2 * (size_t)b1->n_side_edges[SC_TOP]);
+  for (int e = 0; e < b1->n_side_edges[SC_TOP]; ++e) t[2 * e] = 0, t[2 * e + 1] = -1;
+  OK(mc_add_traction(m, 1, b1->n_side_edges[SC_TOP], b1->side_edges[SC_TOP], t));
+  free(t);
+  contact_bottom_top(r, method);
+  snprintf(r->label, sizeof r->label, "%s offset %g", mname(method), tilt_offsets[v / 3]);
+  /* At offsets 0.125 and 0.3 the re-solve's primal-dual active-set iteration cycles on this
+     tilting floating body; the sparse path then hands over to the condensed one, whose QP falls
+     back to its primal active-set method (docs/robustness.md). */
+  if (v >= 6) r->falls_back = 1;
+}
+static void s_tilting(run *r, int v, int step) {
+  (void)step;
+  mc_int nodes[2] = {sc_node(&r->mesh[0], 1, 0), sc_node(&r->mesh[0], 2, 0)};
+  double offset[2] = {tilt_offsets[v / 3], -tilt_offsets[v / 3]};
+  ROK(mc_set_gap_offset(r->m, 2, nodes, offset));
+}
+
+/* [test_contact floating_body_pulled_away_is_singular] v 0: pulled (MC_ERROR_SINGULAR), 1: pushed. */
+static void b_floating(run *r, int v) {
+  stack(r, 3, 7, 5, 1, 0, 1, 0, 1, 1, MC_METHOD_MORTAR, 1);
+  ROK(mc_set_body_force(r->m, 1, 0, v ? -0.5 : 0.5));
+  snprintf(r->label, sizeof r->label, "%s", v ? "pushed" : "pulled away");
+}
+
+/* [test_contact partial_overlap_drops_unseen_nodes] */
+static void b_partial_overlap(run *r, int v) {
+  mc_model *m = new_model(r);
+  two_rects(r, 3, 12, 4, -0.25, 0, 1.5, 0.5, 3, 7, 3, 0, -0.5, 1, 0.5, 1, 1, 0.3);
+  OK(sc_fix_side(m, 1, &r->mesh[0], SC_LEFT, MC_X, 0));
+  OK(sc_fix_side(m, 2, &r->mesh[1], SC_LEFT, MC_X, 0));
+  OK(sc_fix_side(m, 2, &r->mesh[1], SC_BOTTOM, MC_Y, 0));
+  contact_bottom_top(r, v);
+  OK(mc_set_body_force(m, 1, 0, -1.0));
+  snprintf(r->label, sizeof r->label, "%s", mname(v));
+}
+
+/* [test_contact, test_contact_scenes, test_contact_geometry: hertz_build] the Hertz disc on the
+   block: v: disc body x normal x method x surface at h = 0.02 / 0.0274. Step: load doubled
+   (the zone widens). */
+static void hertz_setup_run(run *r, hertz_setup hs) {
+  hertz_build(&r->hr, &hs);
+  r->has_hr = 1;
+  r->m = r->hr.m;
+  r->n_nodes[0] = r->hr.n_nodes[0], r->n_nodes[1] = r->hr.n_nodes[1];
+}
+static void b_hertz(run *r, int v) {
+  const int disc = 1 + v % 2, normal = v / 2 % 2, method = v / 4 % 3, surface = v / 12;
+  hertz_setup hs = {0.02, 0.0274, disc, normal, method, 1, 1, surface};
+  hertz_setup_run(r, hs);
+  snprintf(r->label, sizeof r->label, "disc body %d, %s normals, %s, %s", disc, normal ? "mortar" : "non-mortar",
+           mname(method), surface ? "faceted" : "smooth");
+}
+static void s_hertz(run *r, int v, int step) {
+  (void)v, (void)step;
+  const int disc = r->hr.mesh[0] == &r->hr.scene.body[0] ? 1 : 2;
+  const double traction = -0.02 / 2;
+  double *t = malloc(sizeof(double) * 2 * (size_t)r->hr.scene.n_top_edges);
+  for (int e = 0; e < r->hr.scene.n_top_edges; ++e) t[2 * e] = 0, t[2 * e + 1] = traction;
+  ROK(mc_clear_loads(r->m, disc));
+  ROK(mc_add_traction(r->m, disc, r->hr.scene.n_top_edges, r->hr.scene.top_edges, t));
+  free(t);
+}
+/* [test_contact_scenes units, contact_zone_ends, grazing; test_contact hertz] other Hertz runs:
+   unit systems, a finer mesh, the grazing disc without load. */
+static void b_hertz_more(run *r, int v) {
+  static const double L[4] = {1e-6, 1e3, 1, 1}, E[4] = {1e11, 1, 1, 1}, h[4] = {0.02, 0.02, 0.005, 0.02};
+  hertz_setup hs = {h[v], 1.37 * h[v], 1, v == 2 ? MC_NORMAL_MORTAR : MC_NORMAL_NONMORTAR, MC_METHOD_MORTAR, L[v], E[v],
+                    MC_SURFACE_SMOOTH};
+  hertz_setup_run(r, hs);
+  /* no load: any upward rigid lift of the disc is a solution, and the touching node has zero gap
+     and zero force (its force is round-off of either sign) */
+  if (v == 3) ROK(mc_clear_loads(r->m, 1)), r->skip_u = 1, r->skip_active = 1;
+  snprintf(r->label, sizeof r->label, "%s", v == 0 ? "L 1e-6 E 1e11" : v == 1 ? "L 1e3" : v == 2 ? "h 0.005" : "grazing, no load");
+}
+
+/* [test_contact_scenes grazing_contact_zero_gap_zero_load] v: method x npc x clamp */
+static void b_grazing(run *r, int v) {
+  const int method = v % 3, npc = 3 + v / 3 % 2, clamp = v / 6;
+  stack(r, npc, 7, 5, 1, 0, 1, 0, 1, 3, method, 1);
+  if (clamp) ROK(sc_fix_side(r->m, 1, &r->mesh[0], SC_TOP, MC_XY, 0));
+  snprintf(r->label, sizeof r->label, "%s npc %d %s", mname(method), npc, clamp ? "clamped" : "floating");
+}
+
+/* [test_contact_scenes weakly_active_nodes_zero_force] v: method x npc x eps */
+static void b_weakly(run *r, int v) {
+  const int method = v % 2, npc = 3 + v / 2 % 2, k = v / 4 - 1;
+  const double g = 1e-3, eps = 1e-6 * k;
+  stack(r, npc, 7, 5, 1, 0, 1, g, 1, 3, method, 1);
+  move_side(r->m, 1, &r->mesh[0], SC_TOP, MC_Y, 0, -g * (1 + eps));
+  r->skip_active = k == 0; /* every node touches with zero force: forces ~1e-16 E g, either sign of round-off */
+  /* eps = +1e-6: the pressure is 1e-6 of what the motion g would give, so the round-off of the
+     displacements (1e-15 g) is 1e-9 of it (1.8e-9 measured between the paths) */
+  if (k > 0) r->tol = 1e-7;
+  snprintf(r->label, sizeof r->label, "%s npc %d eps %+g", mname(method), npc, eps);
+}
+
+/* [test_contact_scenes partly_covered_nonmortar_edges, units_corner_tolerance] the overhang:
+   body 1 = [-0.3, 1.3] shifted by `shift` of its cells; v: method x shift, then 13/7 cells and
+   a unit system. */
+static const double overhang_shifts[6] = {-0.5, -1e-9, -1e-13, 0, 1e-9, 0.5};
+static void b_overhang(run *r, int v) {
+  int method = v % 3, nx1 = 16, nx2 = 7;
+  double shift = 0, L = 1, E = 1;
+  if (v < 18) shift = overhang_shifts[v / 3];
+  else if (v == 18) nx1 = 13, method = 0;
+  else L = 1e-6, E = 1e11, method = 0;
+  stack(r, 4, nx1, nx2, nx2 / 7, -0.3 + shift * 1.6 / nx1, 1.6, 0, E, E, method, L);
+  press(r->m, 1, &r->mesh[0], SC_TOP, E);
+  snprintf(r->label, sizeof r->label, "%s %d/%d shift %g L %g E %g", mname(method), nx1, nx2, shift, L, E);
+}
+
+/* [test_contact_scenes units_equilibrium_of_displacement_driven_body] the contact stays open. */
+static void b_open(run *r, int v) {
+  static const double Ls[3] = {1, 1e-6, 1e3}, Es[3] = {1, 1, 1e11};
+  const double g = 1e-3, L = Ls[v], E = Es[v];
+  stack(r, 3, 7, 5, 1, 0, 1, g, E, 2 * E, MC_METHOD_MORTAR, L);
+  move_side(r->m, 1, &r->mesh[0], SC_TOP, MC_Y, 0, -0.5 * g * L);
+  snprintf(r->label, sizeof r->label, "L %g E %g", L, E);
+}
+
+/* [test_contact_scenes interference_fit_compressed_layer_exact] v: method x npc, then the
+   interference as an offset on touching meshes. */
+static void b_layer(run *r, int v) {
+  const double d = 2e-3;
+  if (v < 4) {
+    stack(r, 3 + v / 2, 7, 5, 1, 0, 1, -d, 2, 5, v % 2, 1);
+  } else {
+    stack(r, 3, 7, 5, 1, 0, 1, 0, 2, 5, MC_METHOD_MORTAR, 1);
+    offsets_all(r->m, &r->mesh[0], SC_BOTTOM, -d);
+  }
+  ROK(sc_fix_side(r->m, 1, &r->mesh[0], SC_TOP, MC_Y, 0));
+  snprintf(r->label, sizeof r->label, v < 4 ? "%s npc %d overlap" : "offset", mname(v % 2), 3 + v / 2);
+}
+
+/* [test_contact_scenes interference_fit_shrink_ring_lame] quarter rings (Q1), nt 24f / 40f. */
+static void quarter_ring(run *r, int b, int nt, int nr, double r0, double r1) {
+  const mc_int nn = (nt + 1) * (nr + 1), nc = nt * nr;
+  double *xy = r->xy[b] = malloc(sizeof(double) * 2 * (size_t)nn);
+  mc_int *cells = r->cells[b] = malloc(sizeof(mc_int) * 4 * (size_t)nc);
+  ck_assert_msg(xy != NULL && cells != NULL, "out of memory");
+  for (int j = 0; j <= nr; ++j)
+    for (int i = 0; i <= nt; ++i) {
+      const double t = i == nt ? PI / 2 : i * (PI / 2) / nt, rr = j == nr ? r1 : r0 + j * (r1 - r0) / nr;
+      xy[2 * (j * (nt + 1) + i)] = i == nt ? 0 : rr * cos(t);
+      xy[2 * (j * (nt + 1) + i) + 1] = i == 0 ? 0 : rr * sin(t);
+    }
+  for (int j = 0; j < nr; ++j)
+    for (int i = 0; i < nt; ++i) {
+      mc_int *q = cells + 4 * (size_t)(j * nt + i), a = j * (nt + 1) + i;
+      q[0] = a, q[1] = a + nt + 1, q[2] = a + nt + 2, q[3] = a + 1;
+    }
+  mc_model *m = r->m;
+  OK(mc_set_mesh(m, b + 1, nn, xy, nc, 4, cells));
+  r->n_nodes[b] = nn;
+  mc_int *ids = malloc(sizeof(mc_int) * (size_t)(nr + 1));
+  for (int j = 0; j <= nr; ++j) ids[j] = j * (nt + 1);
+  OK(mc_fix(m, b + 1, nr + 1, ids, MC_Y, NULL));
+  for (int j = 0; j <= nr; ++j) ids[j] = j * (nt + 1) + nt;
+  OK(mc_fix(m, b + 1, nr + 1, ids, MC_X, NULL));
+  free(ids);
+  const int j = b == 0 ? nr : 0;
+  mc_int *e = malloc(sizeof(mc_int) * 2 * (size_t)nt);
+  for (int i = 0; i < nt; ++i) e[2 * i] = j * (nt + 1) + i, e[2 * i + 1] = j * (nt + 1) + i + 1;
+  OK(mc_set_contact(m, b + 1, nt, e));
+  free(e);
+}
+static void b_quarter_rings(run *r, int v) {
+  const int f = 1 << v;
+  new_model(r);
+  quarter_ring(r, 0, 24 * f, 4 * f, 0.5, 1);
+  quarter_ring(r, 1, 40 * f, 6 * f, 0.99, 2);
+  ROK(mc_set_material(r->m, 1, 1, 0.3));
+  ROK(mc_set_material(r->m, 2, 2, 0.3));
+  snprintf(r->label, sizeof r->label, "%d/%d arc cells", 24 * f, 40 * f);
+}
+
+/* [test_contact_scenes load_reversal_opens_contact] steps: reversed (the contact opens), pushed again. */
+static void b_reversal(run *r, int v) {
+  stack(r, 3, 9, 7, 1, 0, 1, 0, 1, 2, v, 1);
+  ROK(sc_fix_side(r->m, 1, &r->mesh[0], SC_TOP, MC_XY, 0));
+  ROK(mc_set_body_force(r->m, 1, 0, -0.4));
+  snprintf(r->label, sizeof r->label, "%s", mname(v));
+}
+static void s_reversal(run *r, int v, int step) {
+  (void)v;
+  ROK(mc_clear_loads(r->m, 1));
+  ROK(mc_set_body_force(r->m, 1, 0, step == 0 ? 0.4 : -0.4));
+}
+
+/* [test_contact_scenes wavy_surface_active_set_changes] Westergaard on a meshed wavy body 2,
+   load steps pm/p* = 0.05 .. 0.95 and back. */
+typedef struct wavy_map {
+  double depth, amplitude;
+  int wavy;
+} wavy_map;
+static void wavy_place(double *x, double *y, void *ctx) {
+  const wavy_map *w = ctx;
+  if (!w->wavy) {
+    *y = w->depth * pow(*y / w->depth, 1.7);
+  } else {
+    *y = -w->depth * pow(-*y / w->depth, 1.7);
+    *y -= w->amplitude * (1 - cos(2 * PI * *x)) * (1 + *y / w->depth);
+  }
+}
+static const double wavy_ratios[8] = {0.05, 0.2, 0.4, 0.6, 0.8, 0.95, 0.6, 0.2};
+static void wavy_load(run *r, double ratio) {
+  const double p_star = PI * 1 / (2 * (1 - 0.3 * 0.3)) * 1e-3;
+  ROK(mc_clear_loads(r->m, 1));
+  press(r->m, 1, &r->mesh[0], SC_TOP, ratio * p_star);
+}
+static void b_wavy(run *r, int v) {
+  const double depth = 1.5;
+  mc_model *m = new_model(r);
+  ck_assert_int_eq(sc_mesh_rect(&r->mesh[0], 4, 96, 20, 0, 0, 2, depth, 0, 1), 0);
+  ck_assert_int_eq(sc_mesh_rect(&r->mesh[1], 4, 70, 20, 0, -depth, 2, depth, 0, 2), 0);
+  r->n_mesh = 2;
+  for (int b = 0; b < 2; ++b) {
+    wavy_map map = {depth, 1e-3, b};
+    sc_mesh_map(&r->mesh[b], wavy_place, &map);
+    OK(sc_set_mesh(m, b + 1, &r->mesh[b], 0));
+    OK(mc_set_material(m, b + 1, 1, 0.3));
+    OK(sc_fix_side(m, b + 1, &r->mesh[b], SC_LEFT, MC_X, 0));
+    OK(sc_fix_side(m, b + 1, &r->mesh[b], SC_RIGHT, MC_X, 0));
+    r->n_nodes[b] = r->mesh[b].n_nodes;
+  }
+  OK(sc_fix_side(m, 2, &r->mesh[1], SC_BOTTOM, MC_Y, 0));
+  contact_bottom_top(r, v);
+  wavy_load(r, wavy_ratios[0]);
+  snprintf(r->label, sizeof r->label, "%s", mname(v));
+}
+static void s_wavy(run *r, int v, int step) {
+  (void)v;
+  wavy_load(r, wavy_ratios[step + 1]);
+}
+
+/* [test_westergaard] N = 4 wavelengths, gap offsets (v 0) or a wavy body-2 mesh (v 1). */
+static void b_westergaard(run *r, int v) {
+  wg_params prm = wg_default_params();
+  prm.wavelengths = 4;
+  prm.wavy_mesh = v;
+  ck_assert_int_eq(wg_scene_build(&r->wg, &prm), 0);
+  r->has_wg = 1;
+  r->m = wg_model(&r->wg, 1, MC_INTERFACE_AUTO);
+  ck_assert_ptr_nonnull(r->m);
+  r->n_nodes[0] = r->wg.mesh[0].n_nodes, r->n_nodes[1] = r->wg.mesh[1].n_nodes;
+  snprintf(r->label, sizeof r->label, "%s", v ? "wavy mesh" : "gap offsets");
+}
+
+/* [test_contact_geometry shrink_fit_closed_loops_lame] full rings as closed loops: shaft Q1
+   64 around, hub P1 80 around; v: method x surface x interference (0.1, 1 cell), then a small
+   feature angle (the circle split into faces: corners). */
+static mc_int ring_node(int nt, int i, int j) { return (mc_int)(j * nt + (i % nt)); }
+static void polar(run *r, int b, int nt, int nr, int npc, double r0, double r1) {
+  const mc_int nn = nt * (nr + 1), nc = npc == 4 ? nt * nr : 2 * nt * nr;
+  double *xy = r->xy[b] = malloc(sizeof(double) * 2 * (size_t)nn);
+  mc_int *c = r->cells[b] = malloc(sizeof(mc_int) * (size_t)npc * (size_t)nc), *cc = c;
+  static const double ac[4] = {1, 0, -1, 0}, as[4] = {0, 1, 0, -1};
+  for (int j = 0; j <= nr; ++j)
+    for (int i = 0; i < nt; ++i) {
+      const double rr = j == nr ? r1 : r0 + j * (r1 - r0) / nr, t = 2 * PI * i / nt;
+      const int on_axis = i % (nt / 4) == 0;
+      xy[2 * ring_node(nt, i, j)] = rr * (on_axis ? ac[i / (nt / 4)] : cos(t));
+      xy[2 * ring_node(nt, i, j) + 1] = rr * (on_axis ? as[i / (nt / 4)] : sin(t));
+    }
+  for (int j = 0; j < nr; ++j)
+    for (int i = 0; i < nt; ++i) {
+      const mc_int a = ring_node(nt, i, j), bb = ring_node(nt, i, j + 1), d = ring_node(nt, i + 1, j + 1),
+                   e = ring_node(nt, i + 1, j);
+      if (npc == 4) cc[0] = a, cc[1] = bb, cc[2] = d, cc[3] = e, cc += 4;
+      else cc[0] = a, cc[1] = bb, cc[2] = d, cc[3] = a, cc[4] = d, cc[5] = e, cc += 6;
+    }
+  mc_model *m = r->m;
+  OK(mc_set_mesh(m, b + 1, nn, xy, nc, npc, c));
+  r->n_nodes[b] = nn;
+  mc_int *ids = malloc(sizeof(mc_int) * 2 * (size_t)(nr + 1));
+  for (int j = 0; j <= nr; ++j) ids[2 * j] = ring_node(nt, 0, j), ids[2 * j + 1] = ring_node(nt, nt / 2, j);
+  OK(mc_fix(m, b + 1, 2 * (nr + 1), ids, MC_Y, NULL));
+  for (int j = 0; j <= nr; ++j) ids[2 * j] = ring_node(nt, nt / 4, j), ids[2 * j + 1] = ring_node(nt, 3 * nt / 4, j);
+  OK(mc_fix(m, b + 1, 2 * (nr + 1), ids, MC_X, NULL));
+  free(ids);
+  const int j = b == 0 ? nr : 0;
+  mc_int *e = malloc(sizeof(mc_int) * 2 * (size_t)nt);
+  for (int i = 0; i < nt; ++i) {
+    const mc_int a = ring_node(nt, i, j), bb = ring_node(nt, i + 1, j);
+    e[2 * i] = j == 0 ? bb : a, e[2 * i + 1] = j == 0 ? a : bb;
+  }
+  OK(mc_set_contact(m, b + 1, nt, e));
+  free(e);
+}
+static void b_closed_loops(run *r, int v) {
+  const int method = v % 3, surface = v / 3 % 2, feature = v >= 12;
+  const double delta = (v / 6 % 2 ? 1.0 : 0.1) * 2 * PI / 64;
+  mc_model *m = new_model(r);
+  if (feature) OK(mc_set_option_real(m, MC_OPTION_FEATURE_ANGLE, 3));
+  polar(r, 0, 64, 8, 4, 0.5, 1 + delta);
+  polar(r, 1, 80, 16, 3, 1, 2);
+  OK(mc_set_material(m, 1, 1, 0.3));
+  OK(mc_set_material(m, 2, 2, 0.3));
+  OK(mc_set_option_int(m, MC_OPTION_METHOD, method));
+  OK(mc_set_option_int(m, MC_OPTION_CONTACT_SURFACE, surface));
+  snprintf(r->label, sizeof r->label, "%s %s delta %.1f h%s", mname(method), surface ? "faceted" : "smooth",
+           v / 6 % 2 ? 1.0 : 0.1, feature ? ", feature angle 3" : "");
+}
+
+/* [test_contact_geometry zigzag_hydrostatic_patch_test_exact] corners: zigzag faces, hydrostatic
+   pressure on all other sides; v: npc x method x surface. */
+static double zigzag(double x, double slope) {
+  const double t = fmod(x, 1.0);
+  return slope * (t <= 0.5 ? t : 1 - t);
+}
+static void zig_above(double *x, double *y, void *s) {
+  const double z = zigzag(*x, *(const double *)s);
+  *y = z + *y * (1 - z);
+}
+static void zig_below(double *x, double *y, void *s) {
+  const double z = zigzag(*x, *(const double *)s);
+  *y = z + *y * (1 + z);
+}
+static void b_zigzag(run *r, int v) {
+  const int npc = 3 + v % 2, method = v / 2 % 3, surface = v / 6;
+  double slope = 1;
+  mc_model *m = new_model(r);
+  ck_assert_int_eq(sc_mesh_rect(&r->mesh[0], npc, 12, 4, 0, 0, 2, 1, 0, 1), 0);
+  ck_assert_int_eq(sc_mesh_rect(&r->mesh[1], npc, 16, 4, 0, -1, 2, 1, 0, 2), 0);
+  r->n_mesh = 2;
+  sc_mesh_map(&r->mesh[0], zig_above, &slope);
+  sc_mesh_map(&r->mesh[1], zig_below, &slope);
+  for (int b = 0; b < 2; ++b)
+    OK(sc_set_mesh(m, b + 1, &r->mesh[b], 0)), OK(mc_set_material(m, b + 1, 2, 0.3)), r->n_nodes[b] = r->mesh[b].n_nodes;
+  const int s1[3] = {SC_TOP, SC_LEFT, SC_RIGHT}, s2[3] = {SC_BOTTOM, SC_LEFT, SC_RIGHT};
+  for (int k = 0; k < 3; ++k) press(m, 1, &r->mesh[0], s1[k], 0.3), press(m, 2, &r->mesh[1], s2[k], 0.3);
+  fix_node(m, 2, sc_node(&r->mesh[1], 0, 0), MC_XY, 0, 0);
+  fix_node(m, 2, sc_node(&r->mesh[1], r->mesh[1].nx, 0), MC_Y, 0, 0);
+  contact_bottom_top(r, method);
+  OK(mc_set_option_int(m, MC_OPTION_CONTACT_SURFACE, surface));
+  snprintf(r->label, sizeof r->label, "npc %d %s %s", npc, mname(method), surface ? "faceted" : "smooth");
+}
+
+/* [test_contact_geometry sweep_node_across_surface_end_smooth_force] body 2's end inside body 1's
+   surface, top moved down; v: method x s (-h/2, -h/40, 0, h/40, h/2). */
+static void b_sweep(run *r, int v) {
+  static const double frac[5] = {-0.5, -0.025, 0, 0.025, 0.5};
+  const int method = v % 3;
+  const double s = frac[v / 3] / 16;
+  two_rects(r, 4, 16, 8, 1 + s, 0, 1, 0.5, 4, 21, 7, 0, -0.5, 1.5, 0.5, 1, 1, 0.3);
+  move_side(r->m, 1, &r->mesh[0], SC_TOP, MC_XY, 0, -0.01);
+  ROK(sc_fix_side(r->m, 2, &r->mesh[1], SC_BOTTOM, MC_XY, 0));
+  contact_bottom_top(r, method);
+  snprintf(r->label, sizeof r->label, "%s s %+g h", mname(method), frac[v / 3]);
+}
+
+/* [test_contact_geometry two_cylinders_pressure_smooth_and_hertz] the Hertz disc on a cap R = 3. */
+static void cap_map(double *x, double *y, void *ctx) {
+  const double *s = ctx; /* radius, half width, depth, beta, gamma */
+  const double xi = *x, eta = *y, X = s[1] * (s[3] * xi + (1 - s[3]) * xi * xi * xi);
+  const double top = -s[0] + sqrt(s[0] * s[0] - X * X), psi = 1 - (1 - eta) * (s[4] + (1 - s[4]) * (1 - eta));
+  *x = xi == 0 ? 0 : X;
+  *y = eta == 1 ? top : -s[2] + (s[2] + top) * psi;
+}
+static void b_cylinders(run *r, int v) {
+  mc_model *m = new_model(r);
+  ck_assert_int_eq(hertz_scene_build(&r->hs, 0.01, 0.05, 0), 0);
+  r->has_hs = 1;
+  double s[5] = {3, 2.5, 3, 0.012 * 80 / 2.5, 0.012 * 40 / 3};
+  ck_assert_int_eq(sc_mesh_rect(&r->mesh[1], 3, 160, 40, -1, 0, 2, 1, 0, 1), 0);
+  sc_mesh_map(&r->mesh[1], cap_map, s);
+  r->n_mesh = 2; /* mesh[0] stays zeroed: sc_mesh_free of it is harmless */
+  const hertz_mesh *disc = &r->hs.body[0];
+  OK(mc_set_mesh(m, 1, disc->n_nodes, disc->xy, disc->n_cells, 3, disc->cells));
+  OK(sc_set_mesh(m, 2, &r->mesh[1], 0));
+  OK(mc_set_material(m, 1, 1, 0.3));
+  OK(mc_set_material(m, 2, 1, 0.3));
+  OK(mc_fix(m, 1, r->hs.n_axis_nodes, r->hs.axis_nodes, MC_X, NULL));
+  OK(sc_fix_side(m, 2, &r->mesh[1], SC_BOTTOM, MC_XY, 0));
+  double *t = malloc(sizeof(double) * 2 * (size_t)r->hs.n_top_edges);
+  for (int e = 0; e < r->hs.n_top_edges; ++e) t[2 * e] = 0, t[2 * e + 1] = -0.01 / 2;
+  OK(mc_add_traction(m, 1, r->hs.n_top_edges, r->hs.top_edges, t));
+  free(t);
+  OK(mc_set_contact(m, 1, r->hs.n_contact_edges[0], r->hs.contact_edges[0]));
+  OK(mc_set_contact(m, 2, r->mesh[1].n_side_edges[SC_TOP], r->mesh[1].side_edges[SC_TOP]));
+  OK(mc_set_option_int(m, MC_OPTION_CONTACT_SURFACE, v));
+  r->n_nodes[0] = disc->n_nodes, r->n_nodes[1] = r->mesh[1].n_nodes;
+  snprintf(r->label, sizeof r->label, "%s", v ? "faceted" : "smooth");
+}
+
+/* [test_contact_hard no_supports_self_equilibrated_loads] v 0..3: pinned isostatically (method
+   x npc); v 4: no supports at all (MC_ERROR_SINGULAR). */
+static void b_no_supports(run *r, int v) {
+  const int method = v % 2, npc = 3 + v / 2 % 2;
+  bare_stack(r, npc, 7, 5, 1, 0, 2, 5, method);
+  press(r->m, 1, &r->mesh[0], SC_TOP, 0.3);
+  press(r->m, 2, &r->mesh[1], SC_BOTTOM, 0.3);
+  if (v < 4) {
+    fix_node(r->m, 2, sc_node(&r->mesh[1], 0, 0), MC_XY, 0, 0);
+    fix_node(r->m, 2, sc_node(&r->mesh[1], 5, 0), MC_Y, 0, 0);
+    fix_node(r->m, 1, sc_node(&r->mesh[0], 0, 0), MC_X, 0, 0);
+  }
+  snprintf(r->label, sizeof r->label, "%s npc %d%s", mname(method), npc, v < 4 ? " pinned" : " unsupported");
+}
+
+/* [test_contact_hard rotation_held_only_by_contact] */
+static void b_rotation(run *r, int v) {
+  const int method = v % 2, npc = 3 + v / 2;
+  bare_stack(r, npc, 8, 5, 1, 0, 2, 5, method);
+  fix_node(r->m, 1, sc_node(&r->mesh[0], 4, 4), MC_X, 0, 0);
+  ROK(sc_fix_side(r->m, 2, &r->mesh[1], SC_BOTTOM, MC_Y, 0));
+  fix_node(r->m, 2, sc_node(&r->mesh[1], 0, 0), MC_X, 0, 0);
+  press(r->m, 1, &r->mesh[0], SC_TOP, 0.3);
+  snprintf(r->label, sizeof r->label, "%s npc %d", mname(method), npc);
+}
+
+/* [test_contact_hard tipping_load_nearly_balanced] v: method x eps x side (+: MC_ERROR_SINGULAR) */
+static void b_tipping(run *r, int v) {
+  const int method = v % 2, k = v / 2 % 2, side = v / 4 ? 1 : -1;
+  const double eps[2] = {1e-3, 1e-6}, x_f = 1 + side * eps[k], F = 1;
+  bare_stack(r, 3, 10, 7, 1.25, 0, 1, 1, method);
+  const sc_mesh *b1 = &r->mesh[0];
+  fix_node(r->m, 1, sc_node(b1, 0, 4), MC_X, 0, 0);
+  ROK(sc_fix_side(r->m, 2, &r->mesh[1], SC_BOTTOM, MC_XY, 0));
+  mc_int nodes[2] = {sc_node(b1, 7, 4), sc_node(b1, 9, 4)};
+  const double fb = F * (x_f - 0.875) / 0.25;
+  double force[4] = {0, -(F - fb), 0, -fb};
+  ROK(mc_add_nodal_force(r->m, 1, 2, nodes, force));
+  snprintf(r->label, sizeof r->label, "%s x_F = 1 %c %g", mname(method), side > 0 ? '+' : '-', eps[k]);
+}
+
+/* [test_contact_hard groove_*] V-groove: body 1 free in all modes. */
+#define GROOVE_SLOPE 0.5
+#define GROOVE_FLAT 0.4
+static void groove_map1(double *x, double *y, void *ctx) {
+  (void)ctx;
+  *y += GROOVE_SLOPE * fmax(fabs(*x) - GROOVE_FLAT, 0) * (1 - *y);
+}
+static void groove_map2(double *x, double *y, void *ctx) {
+  (void)ctx;
+  const double inner = 3.0 / 7.0;
+  double ax = fabs(*x);
+  ax = ax <= inner ? ax * GROOVE_FLAT / inner : GROOVE_FLAT + (ax - inner) * (1 - GROOVE_FLAT) / (1 - inner);
+  *x = *x < 0 ? -ax : ax;
+  *y += GROOVE_SLOPE * (fabs(*x) - GROOVE_FLAT) * (1 + *y);
+}
+static mc_int side_edges_where(const sc_mesh *mesh, int side, int faces, mc_int *out) {
+  mc_int n = 0;
+  for (mc_int e = 0; e < mesh->n_side_edges[side]; ++e) {
+    const mc_int *ed = mesh->side_edges[side] + 2 * e;
+    const double xm = 0.5 * (mesh->xy[2 * ed[0]] + mesh->xy[2 * ed[1]]);
+    if ((fabs(xm) >= GROOVE_FLAT) == (faces != 0)) out[2 * n] = ed[0], out[2 * n + 1] = ed[1], ++n;
+  }
+  return n;
+}
+static void groove(run *r, int npc, double e1, double e2, int method) {
+  mc_model *m = new_model(r);
+  ck_assert_int_eq(sc_mesh_rect(&r->mesh[0], npc, 10, 4, -1, 0, 2, 1, 0, 1), 0);
+  ck_assert_int_eq(sc_mesh_rect(&r->mesh[1], npc, 14, 4, -1, -1, 2, 1, 0, 2), 0);
+  r->n_mesh = 2;
+  sc_mesh_map(&r->mesh[0], groove_map1, NULL);
+  sc_mesh_map(&r->mesh[1], groove_map2, NULL);
+  for (int b = 0; b < 2; ++b)
+    OK(sc_set_mesh(m, b + 1, &r->mesh[b], 0)), OK(mc_set_material(m, b + 1, b ? e2 : e1, 0.3)),
+        r->n_nodes[b] = r->mesh[b].n_nodes;
+  mc_int faces[64];
+  const mc_int n = side_edges_where(&r->mesh[0], SC_BOTTOM, 1, faces);
+  OK(mc_set_contact(m, 1, n, faces));
+  OK(mc_set_contact(m, 2, r->mesh[1].n_side_edges[SC_TOP], r->mesh[1].side_edges[SC_TOP]));
+  OK(mc_set_option_int(m, MC_OPTION_METHOD, method));
+}
+static void press_edges(mc_model *m, int body, mc_int n, const mc_int *edges, double p) {
+  double pr[64];
+  for (mc_int e = 0; e < n; ++e) pr[e] = p;
+  OK(mc_add_pressure(m, body, n, edges, pr));
+}
+static void b_groove_hydrostatic(run *r, int v) {
+  const int method = v % 2, npc = 3 + v / 2;
+  const double p = 0.2;
+  groove(r, npc, 2, 7, method);
+  mc_model *m = r->m;
+  const int s1[3] = {SC_TOP, SC_LEFT, SC_RIGHT}, s2[3] = {SC_BOTTOM, SC_LEFT, SC_RIGHT};
+  for (int k = 0; k < 3; ++k) press(m, 1, &r->mesh[0], s1[k], p), press(m, 2, &r->mesh[1], s2[k], p);
+  mc_int edges[128], n;
+  n = side_edges_where(&r->mesh[0], SC_BOTTOM, 0, edges);
+  press_edges(m, 1, n, edges, p);
+  n = side_edges_where(&r->mesh[1], SC_TOP, 0, edges);
+  press_edges(m, 2, n, edges, p);
+  fix_node(m, 2, sc_node(&r->mesh[1], 0, 0), MC_XY, 0, 0);
+  fix_node(m, 2, sc_node(&r->mesh[1], r->mesh[1].nx, 0), MC_Y, 0, 0);
+  snprintf(r->label, sizeof r->label, "%s npc %d", mname(method), npc);
+}
+static void b_groove_sliding(run *r, int v) {
+  const int method = v % 2, k = v / 2 % 2, side = v / 4 ? 1 : -1;
+  const double eps[2] = {1e-3, 1e-6}, hx = tan(atan(GROOVE_SLOPE)) * (1 + side * eps[k]);
+  groove(r, 3, 1, 1, method);
+  ROK(sc_fix_side(r->m, 2, &r->mesh[1], SC_BOTTOM, MC_XY, 0));
+  mc_int node = sc_node(&r->mesh[0], 7, 4);
+  double force[2] = {hx, -1};
+  ROK(mc_add_nodal_force(r->m, 1, 1, &node, force));
+  snprintf(r->label, sizeof r->label, "%s H = W tan(beta) (1 %c %g)", mname(method), side > 0 ? '+' : '-', eps[k]);
+}
+
+/* [test_contact_hard flat_punch_gap_from_1e_3_to_1e3_cells] v: method x normal x control x G */
+static void b_punch(run *r, int v) {
+  const int method = v % 2, normal = v / 2 % 2, control = v / 4 % 2, k = 3 * (v / 8) - 3; /* -3, 0, 3 */
+  const double h = 1.0 / 7, p = 0.3, e1 = 2, e2 = 5, nu = 0.3, gap = h * pow(10.0, k);
+  const double delta = p * (1 - nu * nu) * (0.5 / e1 + 0.5 / e2);
+  bare_stack(r, 3, 7, 5, 1, gap, e1, e2, method);
+  mc_model *m = r->m;
+  OK(mc_set_option_int(m, MC_OPTION_CONTACT_NORMAL, normal));
+  OK(sc_fix_side(m, 2, &r->mesh[1], SC_BOTTOM, MC_Y, 0));
+  fix_node(m, 2, sc_node(&r->mesh[1], 0, 0), MC_X, 0, 0);
+  fix_node(m, 1, sc_node(&r->mesh[0], 0, 4), MC_X, 0, 0);
+  if (control == 0) press(m, 1, &r->mesh[0], SC_TOP, p);
+  else
+    for (int i = 0; i <= r->mesh[0].nx; ++i) {
+      const mc_int node = sc_node(&r->mesh[0], i, 4);
+      fix_node(m, 1, node, MC_XY, nu * (1 + nu) * p / e1 * r->mesh[0].xy[2 * node], -(gap + delta));
+    }
+  snprintf(r->label, sizeof r->label, "%s normal %d %s control G = 1e%d h", mname(method), normal,
+           control ? "displacement" : "load", k);
+}
+
+/* [test_contact_hard hertz_case scenes] the Hertz scene with gaps, mesh ratios 20, stiffness
+   contrast 1e6 (rigid foundation / indenter), Q1. */
+typedef struct hcase {
+  double h1, h2, e1, e2, gap, approach;
+  int quads, normal, rigid2, rigid1;
+} hcase;
+static const hcase hcases[] = {
+    {0.02, 0.0274, 1, 1, 0, 0, 0, 0, 0, 0},          {0.02, 0.0274, 1, 1, 0.02e-3, 0, 0, 1, 0, 0},
+    {0.02, 0.0274, 1, 1, 20, 0, 0, 1, 0, 0},         {0.02, 0.0274, 1, 1, 0.02, 0, 0, 0, 0, 0},
+    {0.0025, 0.05, 1, 1, 0, 0, 0, 0, 0, 0},          {0.05, 0.0025, 1, 1, 0, 0, 0, 1, 0, 0},
+    {0.02, 0.0274, 1e-6, 1, 0, 0, 0, 0, 1, 0},       {0.02, 0.0274, 1e-6, 1, 0, 0, 0, 0, 0, 0},
+    {0.02, 0.0274, 1e6, 1, 0, 1e-3, 0, 0, 0, 1},     {0.02, 0.0274, 1e6, 1, 0, 1e-3, 0, 0, 0, 0},
+    {0.02, 0.0274, 1, 1, 0, 0, 1, 0, 0, 0},
+};
+static void b_hertz_case(run *r, int v) {
+  const hcase *hc = &hcases[v];
+  hertz_scene *s = &r->hs;
+  ck_assert_int_eq(hertz_scene_build(s, hc->h1, hc->h2, hc->quads), 0);
+  r->has_hs = 1;
+  mc_model *m = new_model(r);
+  for (int i = 0; i < s->body[1].n_nodes; ++i) s->body[1].xy[2 * i + 1] -= hc->gap;
+  for (int b = 0; b < 2; ++b) {
+    OK(mc_set_mesh(m, b + 1, s->body[b].n_nodes, s->body[b].xy, s->body[b].n_cells, hc->quads ? 4 : 3, s->body[b].cells));
+    r->n_nodes[b] = s->body[b].n_nodes;
+  }
+  OK(mc_set_material(m, 1, hc->e1, 0.3));
+  OK(mc_set_material(m, 2, hc->e2, 0.3));
+  OK(mc_fix(m, 1, s->n_axis_nodes, s->axis_nodes, MC_X, NULL));
+  if (hc->rigid2) {
+    mc_int *all = malloc(sizeof(mc_int) * (size_t)s->body[1].n_nodes);
+    for (int i = 0; i < s->body[1].n_nodes; ++i) all[i] = i;
+    OK(mc_fix(m, 2, s->body[1].n_nodes, all, MC_XY, NULL));
+    free(all);
+  } else {
+    OK(mc_fix(m, 2, s->n_bottom_nodes, s->bottom_nodes, MC_XY, NULL));
+  }
+  if (hc->approach > 0 && hc->rigid1) {
+    const mc_int nn = s->body[0].n_nodes;
+    mc_int *all = malloc(sizeof(mc_int) * (size_t)nn);
+    double *val = malloc(sizeof(double) * 2 * (size_t)nn);
+    for (mc_int i = 0; i < nn; ++i) all[i] = i, val[2 * i] = 0, val[2 * i + 1] = -hc->approach;
+    OK(mc_fix(m, 1, nn, all, MC_XY, val));
+    free(all), free(val);
+  } else if (hc->approach > 0) {
+    double *val = malloc(sizeof(double) * 4 * (size_t)s->n_top_edges);
+    for (int e = 0; e < 2 * s->n_top_edges; ++e) val[2 * e] = 0, val[2 * e + 1] = -hc->approach;
+    OK(mc_fix(m, 1, 2 * s->n_top_edges, s->top_edges, MC_Y, val));
+    free(val);
+  } else {
+    double *t = malloc(sizeof(double) * 2 * (size_t)s->n_top_edges);
+    for (int e = 0; e < s->n_top_edges; ++e) t[2 * e] = 0, t[2 * e + 1] = -0.01 / 2;
+    OK(mc_add_traction(m, 1, s->n_top_edges, s->top_edges, t));
+    free(t);
+  }
+  OK(mc_set_contact(m, 1, s->n_contact_edges[0], s->contact_edges[0]));
+  OK(mc_set_contact(m, 2, s->n_contact_edges[1], s->contact_edges[1]));
+  OK(mc_set_option_int(m, MC_OPTION_CONTACT_NORMAL, hc->normal));
+  snprintf(r->label, sizeof r->label, "h %g/%g E %g/%g gap %g approach %g%s%s%s normal %d", hc->h1, hc->h2, hc->e1, hc->e2,
+           hc->gap, hc->approach, hc->quads ? " Q1" : "", hc->rigid2 ? " rigid foundation" : "",
+           hc->rigid1 ? " rigid indenter" : "", hc->normal);
+}
+
+/* [test_contact_hard patch_test_mesh_ratio_20_both_ways, patch_test_stiffness_contrast_1e6]
+   v 0..11: ratio 20 (method x npc x way); v 12..27: contrast (method x npc x finer x way). */
+static void b_hard_patch(run *r, int v) {
+  int method, npc, nx1, nx2;
+  double e1 = 2, e2 = 5;
+  if (v < 12) {
+    method = v % 3, npc = 3 + v / 3 % 2;
+    const int way = v / 6;
+    nx1 = way ? 80 : 4, nx2 = way ? 4 : 80;
+  } else {
+    const int w = v - 12, finer = w / 4 % 2, way = w / 8;
+    method = w % 2, npc = 3 + w / 2 % 2;
+    nx1 = finer ? 7 : 5, nx2 = finer ? 5 : 7;
+    e1 = way ? 1e6 : 1, e2 = way ? 1 : 1e6;
+  }
+  bare_stack(r, npc, nx1, nx2, 1, 0, e1, e2, method);
+  ROK(sc_fix_side(r->m, 1, &r->mesh[0], SC_LEFT, MC_X, 0));
+  ROK(sc_fix_side(r->m, 2, &r->mesh[1], SC_LEFT, MC_X, 0));
+  ROK(sc_fix_side(r->m, 2, &r->mesh[1], SC_BOTTOM, MC_Y, 0));
+  press(r->m, 1, &r->mesh[0], SC_TOP, 0.3);
+  snprintf(r->label, sizeof r->label, "%s npc %d %d/%d cells E %g/%g", mname(method), npc, nx1, nx2, e1, e2);
+}
+
+/* [test_contact_hard cantilever_through_contact_nearly_incompressible] 40 x 4; v: element x nu */
+static void b_cantilever(run *r, int v) {
+  static const double nus[3] = {0.3, 0.49, 0.4999};
+  const int kind = v % 3, npc = kind ? 4 : 3;
+  const double nu = nus[v / 3], L = 4, H = 0.4, w = 0.4;
+  two_rects(r, npc, 3, 2, L - w, H, w, 0.2, npc, 40, 4, 0, 0, L, H, 1, 1, nu);
+  mc_model *m = r->m;
+  OK(mc_set_option_int(m, MC_OPTION_Q1_INTEGRATION, kind == 2 ? MC_Q1_BBAR : MC_Q1_FULL));
+  OK(sc_fix_side(m, 2, &r->mesh[1], SC_LEFT, MC_XY, 0));
+  fix_node(m, 1, sc_node(&r->mesh[0], 1, 2), MC_X, 0, 0);
+  press(m, 1, &r->mesh[0], SC_TOP, 1e-4);
+  contact_bottom_top(r, MC_METHOD_MORTAR);
+  /* nu = 0.4999: K's condition grows like 1 / (1 - 2 nu) = 5000, and so does the round-off of
+     the displacements on either path (1.9e-9 measured between the paths) */
+  if (v / 3 == 2) r->tol = 1e-8;
+  snprintf(r->label, sizeof r->label, "%s nu %g", kind == 0 ? "P1" : kind == 1 ? "Q1" : "Q1 B-bar", nu);
+}
+
+/* [test_contact_hard long_interface_refined_exact_and_gap_residual_reported] strips of 25, 250,
+   500 cells. Step: pressure doubled (same active set: the sparse re-solve reuses its factor). */
+static void b_long(run *r, int v) {
+  static const int sizes[3] = {25, 250, 500};
+  const int nx = sizes[v], nx2 = (int)lround(1.37 * nx);
+  two_rects(r, 3, nx, 4, 0, 0, 0.1 * nx, 0.4, 3, nx2, 4, 0, -0.4, 0.1 * nx, 0.4, 1, 1, 0.3);
+  mc_model *m = r->m;
+  OK(sc_fix_side(m, 2, &r->mesh[1], SC_BOTTOM, MC_Y, 0));
+  OK(mc_fix(m, 2, 1, &r->mesh[1].side_nodes[SC_LEFT][0], MC_X, NULL));
+  OK(mc_fix(m, 1, 1, &r->mesh[0].side_nodes[SC_LEFT][0], MC_X, NULL));
+  press(m, 1, &r->mesh[0], SC_TOP, 0.01);
+  contact_bottom_top(r, MC_METHOD_MORTAR);
+  snprintf(r->label, sizeof r->label, "%d cells", nx);
+}
+static void s_long(run *r, int v, int step) {
+  (void)v, (void)step;
+  ROK(mc_clear_loads(r->m, 1));
+  press(r->m, 1, &r->mesh[0], SC_TOP, 0.02);
+}
+
+/* [contact_study / test_contact_convergence] p(x) = 0.5 + 1.5 cos(pi x): the zone ends at a free
+   point; v: method x matching x level (0, 1). */
+static void b_study(run *r, int v) {
+  const int method = v % 3, matching = v / 3 % 2, level = v / 6;
+  const int n1 = 11 << level, n2 = (matching ? 11 : 8) << level;
+  two_rects(r, 3, n1, n1 / 2, 0, 0, 1, 0.5, 3, n2, n2 / 2, 0, -0.5, 1, 0.5, 1, 1, 0.3);
+  /* contact_study meshes both bodies with seed 1 and no distortion: the same meshes */
+  mc_model *m = r->m;
+  OK(sc_fix_side(m, 1, &r->mesh[0], SC_LEFT, MC_X, 0));
+  OK(sc_fix_side(m, 2, &r->mesh[1], SC_BOTTOM, MC_XY, 0));
+  const sc_mesh *top = &r->mesh[0];
+  const int ne = top->n_side_edges[SC_TOP];
+  double *pr = malloc(sizeof(double) * (size_t)ne);
+  for (int e = 0; e < ne; ++e) {
+    const mc_int *ed = top->side_edges[SC_TOP] + 2 * e;
+    pr[e] = 0.5 + 1.5 * cos(PI * 0.5 * (top->xy[2 * ed[0]] + top->xy[2 * ed[1]]));
+  }
+  OK(mc_add_pressure(m, 1, ne, top->side_edges[SC_TOP], pr));
+  free(pr);
+  contact_bottom_top(r, method);
+  snprintf(r->label, sizeof r->label, "%s %s level %d", mname(method), matching ? "matching" : "non-matching", level);
+}
+
+/* [test_axisymmetric test_contact_patch, test_node_to_segment_matching] the axisymmetric stack
+   (distorted meshes); v: kind (P1, Q1, Q1 B-bar) x method (NTS on matching meshes). */
+static void b_axi_stack(run *r, int v) {
+  const int kind = v % 3, method = v / 3, npc = kind ? 4 : 3;
+  mc_model *m = new_model(r);
+  OK(mc_set_plane(m, MC_AXISYMMETRIC, 1));
+  if (kind == 2) OK(mc_set_option_int(m, MC_OPTION_Q1_INTEGRATION, MC_Q1_BBAR));
+  ck_assert_int_eq(sc_mesh_rect(&r->mesh[0], npc, 5, 3, 0, 0, 1, 0.5, 0.15, 11), 0);
+  ck_assert_int_eq(sc_mesh_rect(&r->mesh[1], npc, method == 2 ? 5 : 7, 3, 0, -0.5, 1, 0.5, 0.15, 12), 0);
+  r->n_mesh = 2;
+  for (int b = 0; b < 2; ++b) OK(sc_set_mesh(m, b + 1, &r->mesh[b], 0)), r->n_nodes[b] = r->mesh[b].n_nodes;
+  OK(mc_set_material(m, 1, 1.0, 0.3));
+  OK(mc_set_material(m, 2, 2.0, 0.2));
+  OK(sc_fix_side(m, 2, &r->mesh[1], SC_BOTTOM, MC_Y, 0));
+  press(m, 1, &r->mesh[0], SC_TOP, 0.1);
+  contact_bottom_top(r, method);
+  snprintf(r->label, sizeof r->label, "kind %d %s", kind, mname(method));
+}
+
+/* [test_axisymmetric test_shrink_fit] shaft in a hub, interference as offsets; v: kind x method. */
+static void b_axi_shrink(run *r, int v) {
+  const int kind = v % 3, method = v / 3, npc = kind ? 4 : 3;
+  mc_model *m = new_model(r);
+  OK(mc_set_plane(m, MC_AXISYMMETRIC, 1));
+  if (kind == 2) OK(mc_set_option_int(m, MC_OPTION_Q1_INTEGRATION, MC_Q1_BBAR));
+  ck_assert_int_eq(sc_mesh_rect(&r->mesh[0], npc, 32, 48, 0, 0, 1, 1, 0, 1), 0);
+  ck_assert_int_eq(sc_mesh_rect(&r->mesh[1], npc, 32, 68, 1, 0, 1, 1, 0, 1), 0);
+  r->n_mesh = 2;
+  for (int b = 0; b < 2; ++b)
+    OK(sc_set_mesh(m, b + 1, &r->mesh[b], 0)), OK(mc_set_material(m, b + 1, 1, 0.3)), r->n_nodes[b] = r->mesh[b].n_nodes;
+  OK(sc_fix_side(m, 1, &r->mesh[0], SC_BOTTOM, MC_Y, 0));
+  OK(sc_fix_side(m, 2, &r->mesh[1], SC_BOTTOM, MC_Y, 0));
+  OK(mc_set_contact(m, 1, r->mesh[0].n_side_edges[SC_RIGHT], r->mesh[0].side_edges[SC_RIGHT]));
+  OK(mc_set_contact(m, 2, r->mesh[1].n_side_edges[SC_LEFT], r->mesh[1].side_edges[SC_LEFT]));
+  offsets_all(m, &r->mesh[0], SC_RIGHT, -1e-3);
+  OK(mc_set_option_int(m, MC_OPTION_METHOD, method));
+  snprintf(r->label, sizeof r->label, "kind %d %s", kind, mname(method));
+}
+
+/* [test_axisymmetric test_sphere_hertz] the sphere on a flat (sphere_on_flat.c's scene), P1 / Q1. */
+static void b_sphere(run *r, int v) {
+  hertz_scene *s = &r->hs;
+  ck_assert_int_eq(hertz_scene_axisymmetric(s, 0.01, 1.37 * 0.01, v), 0);
+  r->has_hs = 1;
+  mc_model *m = new_model(r);
+  OK(mc_set_plane(m, MC_AXISYMMETRIC, 1.0));
+  for (int b = 0; b < 2; ++b) {
+    OK(mc_set_mesh(m, b + 1, s->body[b].n_nodes, s->body[b].xy, s->body[b].n_cells, s->body[b].nodes_per_cell,
+                   s->body[b].cells));
+    OK(mc_set_material(m, b + 1, 1.0, 0.3));
+    OK(mc_set_contact(m, b + 1, s->n_contact_edges[b], s->contact_edges[b]));
+    r->n_nodes[b] = s->body[b].n_nodes;
+  }
+  OK(mc_fix(m, 2, s->n_bottom_nodes, s->bottom_nodes, MC_XY, NULL));
+  double *top = malloc(sizeof(double) * (size_t)s->n_top_edges);
+  for (int j = 0; j < s->n_top_edges; ++j) top[j] = 0.0025 / PI;
+  OK(mc_add_pressure(m, 1, s->n_top_edges, s->top_edges, top));
+  free(top);
+  OK(mc_set_option_int(m, MC_OPTION_CONTACT_NORMAL, MC_NORMAL_MORTAR));
+  snprintf(r->label, sizeof r->label, "%s", v ? "Q1" : "P1");
+}
+
+/* ---- the table ------------------------------------------------------------------------------ */
+
+typedef struct scene_def {
+  const char *name;
+  void (*build)(run *r, int v);
+  int variants;
+  void (*step)(run *r, int v, int step); /* NULL: no re-solve */
+  int steps;
+} scene_def;
+
+static const scene_def scenes[] = {
+    {"patch test (test_contact)", b_patch, 12, s_double_top, 1},
+    {"partial load (test_contact)", b_partial_load, 8, s_partial_load, 1},
+    {"gap offset clearance/interference (test_contact)", b_gap_offset, 3, s_gap_offset, 2},
+    {"gap offsets tilting a floating body (test_contact)", b_tilting, 12, s_tilting, 1},
+    {"floating body pulled / pushed (test_contact)", b_floating, 2, NULL, 0},
+    {"partial overlap (test_contact)", b_partial_overlap, 3, NULL, 0},
+    {"Hertz (hertz_build)", b_hertz, 24, s_hertz, 1},
+    {"Hertz units / fine / grazing (test_contact_scenes)", b_hertz_more, 4, NULL, 0},
+    {"grazing stack (test_contact_scenes)", b_grazing, 12, NULL, 0},
+    {"weakly active nodes (test_contact_scenes)", b_weakly, 12, NULL, 0},
+    {"overhang, partly covered edges (test_contact_scenes)", b_overhang, 20, NULL, 0},
+    {"open contact, displacement driven (test_contact_scenes)", b_open, 3, NULL, 0},
+    {"compressed layer (test_contact_scenes)", b_layer, 5, NULL, 0},
+    {"quarter rings shrink fit (test_contact_scenes)", b_quarter_rings, 3, NULL, 0},
+    {"load reversal (test_contact_scenes)", b_reversal, 3, s_reversal, 2},
+    {"wavy surface load steps (test_contact_scenes)", b_wavy, 2, s_wavy, 7},
+    {"Westergaard N = 4 (test_westergaard)", b_westergaard, 2, NULL, 0},
+    {"closed loops shrink fit (test_contact_geometry)", b_closed_loops, 15, NULL, 0},
+    {"zigzag corners (test_contact_geometry)", b_zigzag, 12, NULL, 0},
+    {"node swept across the surface end (test_contact_geometry)", b_sweep, 15, NULL, 0},
+    {"two cylinders (test_contact_geometry)", b_cylinders, 2, NULL, 0},
+    {"no supports (test_contact_hard)", b_no_supports, 5, NULL, 0},
+    {"rotation held by contact (test_contact_hard)", b_rotation, 4, NULL, 0},
+    {"tipping (test_contact_hard)", b_tipping, 8, NULL, 0},
+    {"V-groove hydrostatic (test_contact_hard)", b_groove_hydrostatic, 4, NULL, 0},
+    {"V-groove sliding (test_contact_hard)", b_groove_sliding, 8, NULL, 0},
+    {"flat punch gaps (test_contact_hard)", b_punch, 24, NULL, 0},
+    {"Hertz cases (test_contact_hard)", b_hertz_case, (int)(sizeof hcases / sizeof hcases[0]), NULL, 0},
+    {"patch tests ratio 20 / contrast 1e6 (test_contact_hard)", b_hard_patch, 28, NULL, 0},
+    {"cantilever (test_contact_hard)", b_cantilever, 9, NULL, 0},
+    {"long interface (test_contact_hard)", b_long, 3, s_long, 1},
+    {"convergence study levels (contact_study)", b_study, 12, NULL, 0},
+    {"axisymmetric stack (test_axisymmetric)", b_axi_stack, 9, NULL, 0},
+    {"axisymmetric shrink fit (test_axisymmetric)", b_axi_shrink, 6, NULL, 0},
+    {"sphere on a flat (test_axisymmetric)", b_sphere, 2, NULL, 0},
+};
+enum { n_scenes = (int)(sizeof scenes / sizeof scenes[0]) };
+
+/* ---- the comparison ------------------------------------------------------------------------- */
+
+typedef struct answer {
+  mc_status status;
+  char message[512];
+  long solver, active, factorizations;
+  mc_int n;
+  mc_int *nodes;
+  double *pressure, *force;
+  double *u[2];
+} answer;
+
+static void answer_free(answer *a) {
+  free(a->nodes), free(a->pressure), free(a->force), free(a->u[0]), free(a->u[1]);
+  memset(a, 0, sizeof *a);
+}
+
+static void answer_get(run *r, mc_status st, answer *a) {
+  mc_model *m = r->m;
+  answer_free(a);
+  a->status = st;
+  snprintf(a->message, sizeof a->message, "%s", mc_errmsg(m));
+  if (st != MC_OK) return;
+  a->solver = info_int(m, MC_INFO_INTERFACE_SOLVER);
+  a->active = info_int(m, MC_INFO_ACTIVE_NODES);
+  a->factorizations = info_int(m, MC_INFO_FACTORIZATIONS);
+  OK(mc_get_contact_count(m, &a->n));
+  const size_t n = (size_t)a->n + 1;
+  a->nodes = malloc(n * sizeof(mc_int)), a->pressure = malloc(n * sizeof(double)), a->force = malloc(n * sizeof(double));
+  OK(mc_get_contact_nodes(m, a->nodes));
+  OK(mc_get_contact_pressure(m, a->pressure));
+  OK(mc_get_contact_force(m, a->force));
+  for (int b = 0; b < 2; ++b) a->u[b] = displacement(m, b + 1, r->n_nodes[b]);
+}
+
+typedef struct worst {
+  double dp, du;
+  int failures, compared, known;
+} worst;
+
+/* Compares the condensed (c) and sparse (s) answers; returns 0 if they agree. */
+static void compare(const char *what, run *rc, const answer *c, const answer *s, worst *w) {
+  ck_assert_msg(c->status == MC_OK || c->status == s->status,
+                "%s: condensed %s (%s), sparse %s (%s)", what, mc_status_string(c->status), c->message,
+                mc_status_string(s->status), s->message);
+  if (c->status != MC_OK) {
+    printf("  %s: both %s\n", what, mc_status_string(c->status));
+    return;
+  }
+  if (s->status != MC_OK) {
+    printf("  %s: SPARSE FAILED: %s: %s\n", what, mc_status_string(s->status), s->message);
+    ++w->failures;
+    return;
+  }
+  ck_assert_int_eq(c->solver, MC_INTERFACE_CONDENSED);
+  /* The sparse path hands over to the condensed one when its active-set iteration cycles (the
+     scenes marked falls_back): then the info says so, and the answers must still agree. */
+  if (rc->falls_back && s->solver == MC_INTERFACE_CONDENSED) ++w->known;
+  else ck_assert_int_eq(s->solver, MC_INTERFACE_SPARSE);
+  ck_assert_int_eq(c->n, s->n);
+  for (mc_int j = 0; j < c->n; ++j) ck_assert_int_eq(c->nodes[j], s->nodes[j]);
+  double pmax = 0, dp = 0, umax = 0, du = 0;
+  int flips = 0;
+  for (mc_int j = 0; j < c->n; ++j) {
+    pmax = max_d(pmax, max_d(fabs(c->pressure[j]), fabs(s->pressure[j])));
+    dp = max_d(dp, fabs(c->pressure[j] - s->pressure[j]));
+    flips += (c->force[j] > 0) != (s->force[j] > 0);
+  }
+  dp = pmax > 0 ? dp / pmax : 0;
+  if (rc->skip_active) dp = 0;
+  for (int b = 0; b < 2; ++b)
+    for (mc_int i = 0; i < 2 * rc->n_nodes[b]; ++i) {
+      umax = max_d(umax, max_d(fabs(c->u[b][i]), fabs(s->u[b][i])));
+      du = max_d(du, fabs(c->u[b][i] - s->u[b][i]));
+    }
+  du = umax > 0 ? du / umax : 0;
+  if (rc->skip_u) du = 0;
+  w->dp = max_d(w->dp, dp), w->du = max_d(w->du, du), ++w->compared;
+  printf("  %s: active %ld / %ld of %d, pressure diff %.2e, displacement diff %.2e\n", what, c->active, s->active,
+         (int)c->n, dp, du);
+  const double tol = rc->tol > 0 ? rc->tol : TOL;
+  if (!rc->skip_active) {
+    ck_assert_msg(c->active == s->active, "%s: active nodes %ld (condensed) vs %ld (sparse)", what, c->active, s->active);
+    ck_assert_msg(flips == 0, "%s: %d nodes active on one path only", what, flips);
+    ck_assert_msg(dp <= tol, "%s: pressures differ by %g of the largest", what, dp);
+  } else {
+    printf("  %s: degenerate contact, active flags and pressures not compared\n", what);
+  }
+  if (!rc->skip_u) ck_assert_msg(du <= tol, "%s: displacements differ by %g of the largest", what, du);
+  else printf("  %s: displacement not unique, not compared\n", what);
+}
+
+static int same_active_set(const answer *a, const answer *b) {
+  if (a->status != MC_OK || b->status != MC_OK || a->n != b->n) return 0;
+  for (mc_int j = 0; j < a->n; ++j)
+    if ((a->force[j] > 0) != (b->force[j] > 0)) return 0;
+  return 1;
+}
+
+START_TEST(both_paths_agree) {
+  const scene_def *d = &scenes[_i];
+  worst w = {0, 0, 0, 0, 0};
+  printf("%s:\n", d->name);
+  for (int v = 0; v < d->variants; ++v) {
+    run r[2];
+    answer a[2], previous_sparse;
+    memset(r, 0, sizeof r), memset(a, 0, sizeof a), memset(&previous_sparse, 0, sizeof previous_sparse);
+    const int path[2] = {MC_INTERFACE_CONDENSED, MC_INTERFACE_SPARSE};
+    for (int k = 0; k < 2; ++k) {
+      d->build(&r[k], v);
+      mc_model *m = r[k].m;
+      OK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, path[k]));
+      answer_get(&r[k], mc_solve(m), &a[k]);
+    }
+    char what[256];
+    snprintf(what, sizeof what, "[%d] %s", v, r[0].label);
+    compare(what, &r[0], &a[0], &a[1], &w);
+    for (int step = 0; step < d->steps && a[0].status == MC_OK && a[1].status == MC_OK; ++step) {
+      answer_free(&previous_sparse);
+      previous_sparse = a[1], memset(&a[1], 0, sizeof a[1]);
+      for (int k = 0; k < 2; ++k) {
+        d->step(&r[k], v, step);
+        answer_get(&r[k], mc_solve(r[k].m), &a[k]);
+      }
+      snprintf(what, sizeof what, "[%d] %s, re-solve %d", v, r[0].label, step + 1);
+      compare(what, &r[0], &a[0], &a[1], &w);
+      if (same_active_set(&previous_sparse, &a[1]) && a[1].solver == MC_INTERFACE_SPARSE)
+        ck_assert_msg(a[1].factorizations == 0, "%s: the sparse re-solve on an unchanged active set did %ld "
+                      "factorizations", what, a[1].factorizations);
+    }
+    answer_free(&previous_sparse);
+    for (int k = 0; k < 2; ++k) answer_free(&a[k]), run_free(&r[k]);
+  }
+  printf("%s: %d solves compared, largest differences: pressure %.2e, displacement %.2e; sparse failures %d "
+         "(%d handed over to the condensed path)\n", d->name, w.compared, w.dp, w.du, w.failures, w.known);
+  ck_assert_msg(w.failures == 0, "%s: the sparse path failed %d times", d->name, w.failures);
+}
+END_TEST
+
+int main(void) {
+  setvbuf(stdout, NULL, _IOLBF, 0);
+  Suite *suite = suite_create("interface_solvers");
+  TCase *tc = tcase_create("interface_solvers");
+  tcase_set_timeout(tc, 300);
+  tcase_add_loop_test(tc, both_paths_agree, 0, n_scenes);
+  suite_add_tcase(suite, tc);
+  return sc_run_suite(suite);
+}
