@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <sys/resource.h>
 #include <cstdlib>
 
 namespace mc {
@@ -16,17 +17,31 @@ namespace mc {
 namespace {
 
 
-// The memory the kernel says a process can still get without swapping (MemAvailable), in
-// bytes; 0 if unknown (then no path is refused for its size).
+// The memory this process can still get: what the kernel says it can have without swapping
+// (MemAvailable), or less if the process runs under an address-space limit (RLIMIT_AS, `ulimit
+// -v`: then the limit less what is mapped already). In bytes; 0 if unknown (then no path is
+// refused for its size).
 double available_memory() {
-  FILE *f = std::fopen("/proc/meminfo", "r");
-  if (!f) return 0;
-  char line[256];
-  double kib = 0;
-  while (std::fgets(line, sizeof line, f))
-    if (std::strncmp(line, "MemAvailable:", 13) == 0) kib = std::atof(line + 13);
-  std::fclose(f);
-  return kib * 1024;
+  double bytes = 0;
+  if (FILE *f = std::fopen("/proc/meminfo", "r")) {
+    char line[256];
+    while (std::fgets(line, sizeof line, f))
+      if (std::strncmp(line, "MemAvailable:", 13) == 0) bytes = std::atof(line + 13) * 1024;
+    std::fclose(f);
+  }
+  struct rlimit limit;
+  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+    double mapped = 0;
+    if (FILE *f = std::fopen("/proc/self/status", "r")) {
+      char line[256];
+      while (std::fgets(line, sizeof line, f))
+        if (std::strncmp(line, "VmSize:", 7) == 0) mapped = std::atof(line + 7) * 1024;
+      std::fclose(f);
+    }
+    const double headroom = std::max(double(limit.rlim_cur) - mapped, 1.0);
+    bytes = bytes > 0 ? std::min(bytes, headroom) : headroom;
+  }
+  return bytes;
 }
 
 double gib(double bytes) { return bytes / (1024.0 * 1024.0 * 1024.0); }

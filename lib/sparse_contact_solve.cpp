@@ -1,11 +1,9 @@
 #include "sparse_contact_solve.hpp"
 #include "error.hpp"
-#include <algorithm>
 #include "stopwatch.hpp"
+#include <algorithm>
 #include <cmath>
 #include <set>
-#include <cstdio>
-#include <cstdlib>
 
 namespace mc {
 

@@ -30,6 +30,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #define PI 3.14159265358979323846
 #define TOL 1e-9
@@ -852,9 +855,8 @@ static void b_cantilever(run *r, int v) {
 
 /* [test_contact_hard long_interface_refined_exact_and_gap_residual_reported] strips of 25, 250,
    500 cells. Step: pressure doubled (same active set: the sparse re-solve reuses its factor). */
-static void b_long(run *r, int v) {
-  static const int sizes[3] = {25, 250, 500};
-  const int nx = sizes[v], nx2 = (int)lround(1.37 * nx);
+static void b_long_strips(run *r, int nx) {
+  const int nx2 = (int)lround(1.37 * nx);
   two_rects(r, 3, nx, 4, 0, 0, 0.1 * nx, 0.4, 3, nx2, 4, 0, -0.4, 0.1 * nx, 0.4, 1, 1, 0.3);
   mc_model *m = r->m;
   OK(sc_fix_side(m, 2, &r->mesh[1], SC_BOTTOM, MC_Y, 0));
@@ -863,6 +865,10 @@ static void b_long(run *r, int v) {
   press(m, 1, &r->mesh[0], SC_TOP, 0.01);
   contact_bottom_top(r, MC_METHOD_MORTAR);
   snprintf(r->label, sizeof r->label, "%d cells", nx);
+}
+static void b_long(run *r, int v) {
+  static const int sizes[3] = {25, 250, 500};
+  b_long_strips(r, sizes[v]);
 }
 static void s_long(run *r, int v, int step) {
   (void)v, (void)step;
@@ -1143,12 +1149,77 @@ START_TEST(both_paths_agree) {
 }
 END_TEST
 
+/* A model too large for the memory the process may have fails with MC_ERROR_MEMORY and a
+   message, before allocating, instead of the host being killed; the automatic choice then takes
+   the path that fits. The process's address space is limited (RLIMIT_AS) to what it has mapped
+   plus 1 GiB, in a child process: the condensed path of the strips at 4001 contact nodes needs
+   about 2 GiB (S, W_b and the dense L_GG blocks), the sparse one about 0.1 GiB.
+   AddressSanitizer maps terabytes of shadow memory, which an address-space limit cannot
+   coexist with: there the check runs without the limit and only asserts that the automatic
+   choice solves the scene sparse (printed, not silently skipped). */
+#if defined(__SANITIZE_ADDRESS__)
+#define MC_TEST_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define MC_TEST_UNDER_ASAN 1
+#endif
+#endif
+static double mapped_bytes(void) {
+  FILE *f = fopen("/proc/self/status", "r");
+  char line[256];
+  double kib = 0;
+  while (f && fgets(line, sizeof line, f))
+    if (strncmp(line, "VmSize:", 7) == 0) kib = atof(line + 7);
+  if (f) fclose(f);
+  return kib * 1024;
+}
+static int memory_limit_child(int limited) {
+  run r;
+  memset(&r, 0, sizeof r);
+  b_long_strips(&r, 4000);
+  int failures = 0;
+  if (limited) {
+    struct rlimit limit;
+    limit.rlim_cur = limit.rlim_max = (rlim_t)(mapped_bytes() + 1024.0 * 1024 * 1024);
+    if (setrlimit(RLIMIT_AS, &limit) != 0) return 10;
+    if (mc_set_option_int(r.m, MC_OPTION_INTERFACE_SOLVER, MC_INTERFACE_CONDENSED) != MC_OK) return 11;
+    const mc_status st = mc_solve(r.m);
+    printf("  condensed forced under a 1 GiB headroom: %s: %s\n", mc_status_string(st), mc_errmsg(r.m));
+    if (st != MC_ERROR_MEMORY || !strstr(mc_errmsg(r.m), "MC_INTERFACE_CONDENSED")) ++failures;
+    if (mc_set_option_int(r.m, MC_OPTION_INTERFACE_SOLVER, MC_INTERFACE_AUTO) != MC_OK) return 12;
+  }
+  const mc_status st = mc_solve(r.m);  /* the handle stays usable after the error */
+  int64_t solver = 0;
+  mc_get_info_int(r.m, MC_INFO_INTERFACE_SOLVER, &solver);
+  printf("  automatic%s: %s, solver %d\n", limited ? " under the limit" : "", mc_status_string(st), (int)solver);
+  if (st != MC_OK || solver != MC_INTERFACE_SPARSE) ++failures;
+  run_free(&r);
+  return failures;
+}
+START_TEST(too_large_for_memory_is_an_error) {
+#ifdef MC_TEST_UNDER_ASAN
+  printf("too_large_for_memory_is_an_error: AddressSanitizer build, no address-space limit; automatic choice only\n");
+  ck_assert_int_eq(memory_limit_child(0), 0);
+#else
+  fflush(stdout);
+  const pid_t child = fork();
+  ck_assert_int_ge(child, 0);
+  if (child == 0) _exit(memory_limit_child(1));
+  int status = 0;
+  ck_assert_int_eq(waitpid(child, &status, 0), child);
+  ck_assert_msg(WIFEXITED(status) && WEXITSTATUS(status) == 0, "child: exit %d, signal %d",
+                WIFEXITED(status) ? WEXITSTATUS(status) : -1, WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+#endif
+}
+END_TEST
+
 int main(void) {
   setvbuf(stdout, NULL, _IOLBF, 0);
   Suite *suite = suite_create("interface_solvers");
   TCase *tc = tcase_create("interface_solvers");
   tcase_set_timeout(tc, 300);
   tcase_add_loop_test(tc, both_paths_agree, 0, n_scenes);
+  tcase_add_test(tc, too_large_for_memory_is_an_error);
   suite_add_tcase(suite, tc);
   return sc_run_suite(suite);
 }
