@@ -119,11 +119,12 @@ static void check_kkt_and_equilibrium(blocks *s, const double load1[2], const do
 /* Uniform pressure p on the top of body 1 (E1) over body 2 (E2), plane strain: exact
    solution sigma_yy = -p, sigma_xx = 0 in both, u_x = nu (1+nu) p x / E, u_y linear. Returns
    the largest relative pressure error; asserts displacements when `exact`. */
-static double patch_test(int npc, int method, int nx1, int nx2, int exact) {
+static double patch_test_with(int npc, int method, int nx1, int nx2, int exact, int solver) {
   const double p = 0.3, nu = 0.3, e1 = 2, e2 = 5;
   blocks s;
   blocks_build(&s, npc, nx1, nx2, 0, e1, e2, method);
   mc_model *m = s.m;
+  OK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, solver));
   const sc_mesh *top = &s.mesh[0];
   double *pr = malloc(sizeof(double) * top->n_side_edges[SC_TOP]);
   for (int e = 0; e < top->n_side_edges[SC_TOP]; ++e) pr[e] = p;
@@ -151,9 +152,45 @@ static double patch_test(int npc, int method, int nx1, int nx2, int exact) {
       free(u);
     }
   }
+  if (solver != MC_INTERFACE_AUTO) {
+    int64_t ran = 0, factorizations = -1;
+    OK(mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &ran));
+    ck_assert_int_eq(ran, solver);
+    /* a re-solve at twice the load: the same active set, no new factorization, pressures 2p */
+    double *more = malloc(sizeof(double) * top->n_side_edges[SC_TOP]);
+    for (int e = 0; e < top->n_side_edges[SC_TOP]; ++e) more[e] = p;
+    OK(mc_add_pressure(m, 1, top->n_side_edges[SC_TOP], top->side_edges[SC_TOP], more));
+    free(more);
+    OK(mc_solve(m));
+    OK(mc_get_info_int(m, MC_INFO_FACTORIZATIONS, &factorizations));
+    ck_assert_int_eq(factorizations, 0);
+    double *twice = contact_array(m, mc_get_contact_pressure, &n);
+    for (int j = 0; j < n; ++j) worst = fmax(worst, fabs(twice[j] - 2 * p) / (2 * p));
+    free(twice);
+  }
   blocks_free(&s);
   return worst;
 }
+
+static double patch_test(int npc, int method, int nx1, int nx2, int exact) {
+  return patch_test_with(npc, method, nx1, nx2, exact, MC_INTERFACE_AUTO);
+}
+
+/* The same patch test through each interface solver forced (MC_OPTION_INTERFACE_SOLVER): exact
+   on both, and a re-solve with a new load reuses the factorizations. Keeps the sparse path under
+   valgrind too (test_interface_solvers compares the two paths on every scene, natively and
+   under AddressSanitizer). */
+START_TEST(patch_test_exact_on_both_interface_solvers) {
+  const int solvers[2] = {MC_INTERFACE_CONDENSED, MC_INTERFACE_SPARSE};
+  const int methods[2] = {MC_METHOD_MORTAR, MC_METHOD_DUAL_MORTAR};
+  for (int k = 0; k < 2; ++k)
+    for (int npc = 3; npc <= 4; ++npc)
+      for (int mth = 0; mth < 2; ++mth) {
+        const double worst = patch_test_with(npc, methods[mth], 7, 5, 1, solvers[k]);
+        ck_assert_msg(worst < 1e-12, "solver %d npc %d method %d: pressure error %g", solvers[k], npc, methods[mth], worst);
+      }
+}
+END_TEST
 
 START_TEST(patch_test_mortar_methods_exact) {
   int methods[2] = {MC_METHOD_MORTAR, MC_METHOD_DUAL_MORTAR};
@@ -575,6 +612,7 @@ int main(void) {
   TCase *tc = tcase_create("contact");
   tcase_set_timeout(tc, 300);
   tcase_add_test(tc, patch_test_mortar_methods_exact);
+  tcase_add_test(tc, patch_test_exact_on_both_interface_solvers);
   tcase_add_test(tc, patch_test_node_to_segment_fails_measurably);
   tcase_add_test(tc, matching_meshes_methods_agree);
   tcase_add_test(tc, kkt_and_equilibrium_non_matching);
