@@ -12,6 +12,9 @@
 #include <system_error>
 #include <thread>
 #include <unistd.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 namespace mc {
 
@@ -289,6 +292,9 @@ void Model::build_structure(const std::function<void(int, BodyWork &)> &then) {
   if (contact_ && contact_->sparse) {
     for (auto &sys : system_)
       if (sys) sys->cholesky.release();  // the condensed path's analyses, read by the choice
+#ifdef __GLIBC__
+    malloc_trim(0);  // and their pages back to the system before the larger factor is allocated
+#endif
     build_sparse_structure();
     for_each_body(then);
     built_version_ = structure_version_;

@@ -164,6 +164,7 @@ bool SparseCholesky::analyzed() const { return analyzed_; }
 void SparseCholesky::release() {
   Impl &d = *impl_;
   if (d.factor) cholmod_free_factor(&d.factor, &d.common);
+  cholmod_free_work(&d.common);  // the workspace CHOLMOD keeps between calls (a few n-sized arrays)
   d.interface.clear();
   n_ = 0;
   analyzed_ = false;
