@@ -124,22 +124,9 @@ void Model::solve_condensed(LoadSolve loads[2], DualQp &qp, std::vector<double> 
         }
       qp.d[r] = bv[r] - g;
     }
-    for (int b = 0; b < 2; ++b) {
-      const RigidModes &rm = system_[b]->rigid;
-      const int ndof = system_[b]->stiffness.n;
-      for (int c = 0; c < rm.count; ++c) {
-        const double *mode = &rm.modes[size_t(c) * ndof];
-        for (int r = 0; r < q; ++r) {
-          double s = 0;
-          for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) s += cs.b_value[b][p] * mode[cs.b_dof[b][p]];
-          qp.g.push_back(s);
-        }
-        double e = 0;
-        for (int i = 0; i < ndof; ++i) e += mode[i] * loads[b].lifted[i];
-        qp.e.push_back(e);
-        qp.k++;
-      }
-    }
+    qp.g = rigid_mode_rows();
+    qp.e = rigid_mode_loads(loads);
+    qp.k = int(qp.e.size());
   }
   DualQpResult result;
   const double t_active_set = now();

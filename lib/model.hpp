@@ -191,8 +191,10 @@ private:
   void build_condensed(const std::function<void(int, BodyWork &)> &then);
   void fall_back_to_condensed(LoadSolve loads[2]);
   void solve_condensed(LoadSolve loads[2], DualQp &qp, std::vector<double> &lambda, std::vector<double> &alpha);
-  // Row r's share of the rigid modes, G = B R (q x modes, column-major), and e = R^T f_eff.
+  // Row r's share of the rigid modes, G = B R (q x modes, column-major), and e = R^T f_eff (body
+  // 1's modes, then body 2's).
   std::vector<double> rigid_mode_rows() const;
+  std::vector<double> rigid_mode_loads(const LoadSolve loads[2]) const;
   void interface_block(int b, std::vector<double> &s_b, BodyWork &work);
   void build_structure(const std::function<void(int, BodyWork &)> &then);
   void solve_loads(int b, BodyWork &work, LoadSolve &out) const;

@@ -21,24 +21,24 @@ namespace {
 // (MemAvailable), or less if the process runs under an address-space limit (RLIMIT_AS, `ulimit
 // -v`: then the limit less what is mapped already). In bytes; 0 if unknown (then no path is
 // refused for its size).
+// A "Key: value kB" line of a /proc file, in bytes; 0 if absent.
+double proc_field_bytes(const char *path, const char *key) {
+  FILE *f = std::fopen(path, "r");
+  if (!f) return 0;
+  char line[256];
+  double kib = 0;
+  const size_t length = std::strlen(key);
+  while (std::fgets(line, sizeof line, f))
+    if (std::strncmp(line, key, length) == 0) kib = std::atof(line + length);
+  std::fclose(f);
+  return kib * 1024;
+}
+
 double available_memory() {
-  double bytes = 0;
-  if (FILE *f = std::fopen("/proc/meminfo", "r")) {
-    char line[256];
-    while (std::fgets(line, sizeof line, f))
-      if (std::strncmp(line, "MemAvailable:", 13) == 0) bytes = std::atof(line + 13) * 1024;
-    std::fclose(f);
-  }
+  double bytes = proc_field_bytes("/proc/meminfo", "MemAvailable:");
   struct rlimit limit;
   if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
-    double mapped = 0;
-    if (FILE *f = std::fopen("/proc/self/status", "r")) {
-      char line[256];
-      while (std::fgets(line, sizeof line, f))
-        if (std::strncmp(line, "VmSize:", 7) == 0) mapped = std::atof(line + 7) * 1024;
-      std::fclose(f);
-    }
-    const double headroom = std::max(double(limit.rlim_cur) - mapped, 1.0);
+    const double headroom = std::max(double(limit.rlim_cur) - proc_field_bytes("/proc/self/status", "VmSize:"), 1.0);
     bytes = bytes > 0 ? std::min(bytes, headroom) : headroom;
   }
   return bytes;
@@ -121,6 +121,21 @@ bool Model::choose_interface_solver() {
            condensed_flops, gib(condensed_bytes), kSparseFactorizationsExpected, plain_flops, gib(sparse_bytes), int(q),
            now() - start);
   return sparse;
+}
+
+std::vector<double> Model::rigid_mode_loads(const LoadSolve loads[2]) const {
+  std::vector<double> e;
+  for (int b = 0; b < 2; ++b) {
+    if (!system_[b]) continue;
+    const RigidModes &rm = system_[b]->rigid;
+    const int ndof = system_[b]->stiffness.n;
+    for (int c = 0; c < rm.count; ++c) {
+      double s = 0;
+      for (int i = 0; i < ndof; ++i) s += rm.modes[size_t(c) * ndof + i] * loads[b].lifted[i];
+      e.push_back(s);
+    }
+  }
+  return e;
 }
 
 std::vector<double> Model::rigid_mode_rows() const {
@@ -241,16 +256,13 @@ bool Model::solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::v
   // 1. Loads F = (f_1, f_2, 0, R^T f) and the rows' right-hand sides: the initial gaps less
   //    what the prescribed values already close; the mortar equations' share of them.
   std::vector<double> load(st.n_unknowns, 0.0), target(nrows, 0.0), e(k, 0.0);
-  for (int b = 0, mode = 0; b < 2; ++b) {
+  for (int b = 0; b < 2; ++b) {
     if (!system_[b]) continue;
     const BodySystem &sys = *system_[b];
     for (size_t i = 0; i < sys.solve_dofs.size(); ++i) load[cs.column_offset[b] + i] = loads[b].lifted[sys.solve_dofs[i]];
-    for (int c = 0; c < sys.rigid.count; ++c, ++mode) {
-      double s = 0;
-      for (int i = 0; i < sys.stiffness.n; ++i) s += sys.rigid.modes[size_t(c) * sys.stiffness.n + i] * loads[b].lifted[i];
-      e[mode] = s, load[cs.mode_offset + mode] = s;
-    }
   }
+  e = rigid_mode_loads(loads);
+  for (int c = 0; c < k; ++c) load[cs.mode_offset + c] = e[c];
   for (int r = 0; r < q; ++r) {
     double g = row_initial_gap(r);
     for (int b = 0; b < 2; ++b) {
