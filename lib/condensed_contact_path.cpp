@@ -130,16 +130,7 @@ void Model::solve_condensed(LoadSolve loads[2], DualQp &qp, std::vector<double> 
   }
   DualQpResult result;
   const double t_active_set = now();
-  DualQpObserver observe;
-  if (progress.enabled())
-    observe = [&](const DualQpIteration &it) {
-      if (it.holds_modes)
-        progress(MC_LOG_ITERATION, "active-set iteration %d: %d active of %d, %d to flip, residual %.3g", it.iteration,
-                 it.active, q, it.violating, it.residual);
-      else
-        progress(MC_LOG_ITERATION, "active-set iteration %d: %d active of %d do not hold the floating body, step undone",
-                 it.iteration, it.active, q);
-    };
+  const DualQpObserver observe = iteration_log(q);
   {
     Stopwatch watch(infos.t_contact);
     result = solve_dual_qp(qp, options.tolerance, options.max_iterations, cs.last_active, observe);
@@ -148,22 +139,15 @@ void Model::solve_condensed(LoadSolve loads[2], DualQp &qp, std::vector<double> 
   progress(MC_LOG_PHASE, "active-set solve: %s, %d iterations, residual %.3g, %.3g s", outcome[int(result.outcome)],
            result.iterations, result.violation, now() - t_active_set);
   infos.iterations = result.iterations;
-  auto body_of_mode = [&](std::string &text) {
-    for (int b = 0; b < 2; ++b)
-      if (system_[b]->rigid.count > 0)
-        text += (text.empty() ? "" : "; ") + std::string("body ") + std::to_string(b + 1) + ": " + system_[b]->rigid.description;
-  };
   if (result.outcome == DualQpOutcome::loads_not_balanced) {
-    std::string modes;
-    body_of_mode(modes);
+    const std::string modes = free_modes_description();
     fail(MC_ERROR_SINGULAR,
          "the loads cannot be balanced by contact forces (which only push): with free rigid motion (%s) "
          "the best nonnegative contact forces leave %.3g of the load unbalanced; add supports or change the loads",
          modes.c_str(), result.imbalance);
   }
   if (result.outcome == DualQpOutcome::modes_not_held) {
-    std::string modes;
-    body_of_mode(modes);
+    const std::string modes = free_modes_description();
     fail(MC_ERROR_SINGULAR,
          "contact cannot hold the free rigid motion (%s): the contact normals do not restrain it; add supports",
          modes.c_str());

@@ -195,6 +195,11 @@ private:
   // 1's modes, then body 2's).
   std::vector<double> rigid_mode_rows() const;
   std::vector<double> rigid_mode_loads(const LoadSolve loads[2]) const;
+  // "body 1: translation in y; ..." for the floating bodies, for both paths' messages.
+  std::string free_modes_description() const;
+  // The active-set iterations' log messages (MC_LOG_ITERATION), for both paths; empty without a
+  // log callback.
+  DualQpObserver iteration_log(int q);
   void interface_block(int b, std::vector<double> &s_b, BodyWork &work);
   void build_structure(const std::function<void(int, BodyWork &)> &then);
   void solve_loads(int b, BodyWork &work, LoadSolve &out) const;

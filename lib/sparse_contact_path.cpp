@@ -123,6 +123,26 @@ bool Model::choose_interface_solver() {
   return sparse;
 }
 
+std::string Model::free_modes_description() const {
+  std::string text;
+  for (int b = 0; b < 2; ++b)
+    if (system_[b] && system_[b]->rigid.count > 0)
+      text += (text.empty() ? "" : "; ") + std::string("body ") + std::to_string(b + 1) + ": " + system_[b]->rigid.description;
+  return text;
+}
+
+DualQpObserver Model::iteration_log(int q) {
+  if (!progress.enabled()) return {};
+  return [this, q](const DualQpIteration &it) {
+    if (it.holds_modes)
+      progress(MC_LOG_ITERATION, "active-set iteration %d: %d active of %d, %d to flip, residual %.3g", it.iteration,
+               it.active, q, it.violating, it.residual);
+    else
+      progress(MC_LOG_ITERATION, "active-set iteration %d: %d active of %d do not hold the floating body", it.iteration,
+               it.active, q);
+  };
+}
+
 std::vector<double> Model::rigid_mode_loads(const LoadSolve loads[2]) const {
   std::vector<double> e;
   for (int b = 0; b < 2; ++b) {
@@ -284,13 +304,6 @@ bool Model::solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::v
       target[q + 2 * a + c] = t;
     }
   // 2. Floating bodies: loads that no pushing contact forces can balance have no solution.
-  auto describe_modes = [&]() {
-    std::string text;
-    for (int b = 0; b < 2; ++b)
-      if (system_[b] && system_[b]->rigid.count > 0)
-        text += (text.empty() ? "" : "; ") + std::string("body ") + std::to_string(b + 1) + ": " + system_[b]->rigid.description;
-    return text;
-  };
   if (k > 0) {
     DualQp balance;
     balance.q = q, balance.k = k, balance.g = cs.g, balance.e = e;
@@ -299,7 +312,7 @@ bool Model::solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::v
       fail(MC_ERROR_SINGULAR,
            "the loads cannot be balanced by contact forces (which only push): with free rigid motion (%s) "
            "the best nonnegative contact forces leave %.3g of the load unbalanced; add supports or change the loads",
-           describe_modes().c_str(), imbalance);
+           free_modes_description().c_str(), imbalance);
   }
   // 3. The active-set iteration. An active set must hold the floating bodies (G_A of full rank,
   //    judged as the condensed path judges it) before H_P is factorized.
@@ -321,16 +334,7 @@ bool Model::solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::v
   };
   std::vector<char> start_set;
   if (int(cs.last_active.size()) == q) start_set.assign(nrows, 1), std::copy(cs.last_active.begin(), cs.last_active.end(), start_set.begin());
-  DualQpObserver observe;
-  if (progress.enabled())
-    observe = [&](const DualQpIteration &it) {
-      if (it.holds_modes)
-        progress(MC_LOG_ITERATION, "active-set iteration %d: %d active of %d, %d to flip, residual %.3g", it.iteration,
-                 it.active, q, it.violating, it.residual);
-      else
-        progress(MC_LOG_ITERATION, "active-set iteration %d: %d active of %d do not hold the floating body", it.iteration,
-                 it.active, q);
-    };
+  const DualQpObserver observe = iteration_log(q);
   SparseContactResult result;
   try {
     result = cs.solver.solve(load, target, start_set, options.tolerance, options.max_iterations, hold_modes, observe);
@@ -350,7 +354,7 @@ bool Model::solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::v
   if (result.outcome == SparseContactOutcome::modes_not_held)
     fail(MC_ERROR_SINGULAR,
          "contact cannot hold the free rigid motion (%s): the contact normals do not restrain it; add supports",
-         describe_modes().c_str());
+         free_modes_description().c_str());
   if (result.outcome == SparseContactOutcome::not_converged && result.cycled) return false;
   if (result.outcome == SparseContactOutcome::not_converged)
     fail(MC_ERROR_NOT_CONVERGED,
