@@ -241,8 +241,21 @@ MC_API mc_status mc_set_index_base(mc_model *m, int base);
    MC_ERROR_MESH, naming the node, if a body's mesh has a node with x < 0 (the model is then
    unchanged). Switching between the kinds is allowed at any time; the next solve rebuilds. */
 MC_API mc_status mc_set_plane(mc_model *m, int plane, double thickness);
-/* The mesh of a body (1 or 2). xy: 2 per node. cells: nodes_per_cell ids each,
-   counter-clockwise; 3 = P1 triangle, 4 = Q1 quadrilateral. Every node must be used by a cell.
+/* The mesh of a body (1 or 2). xy: 2 per node. cells: nodes_per_cell ids each, corners
+   counter-clockwise, in Gmsh's and VTK's node order:
+     3 = P1 triangle, 4 = Q1 quadrilateral (corners only);
+     6 = T6 triangle: corners 0 1 2, then the mid-edge nodes of edges 0-1, 1-2, 2-0;
+     8 = Q8 serendipity quadrilateral: corners 0 1 2 3, then mid-edge nodes of 0-1, 1-2, 2-3, 3-0;
+     9 = Q9 Lagrange quadrilateral: as Q8, then the centre node.
+   Quadratic cells are isoparametric: a mid-edge node off its edge's chord makes the edge a
+   curve (a parabola through the three nodes), which loads and contact follow. Two cells sharing
+   an edge must share its mid-edge node; the Jacobian must be positive everywhere inside a cell
+   (checked on a lattice of points, corners and edges included), else MC_ERROR_MESH naming the
+   cell and node. Edges are always named by their two corner nodes (mc_add_traction,
+   mc_add_pressure, mc_set_contact): the library finds the mid-edge node from the cell, so a
+   host's boundary lists are the same for linear and quadratic meshes. Quadrature (docs/api.md):
+   P1 1 point (axisymmetric 3), Q1 2x2, T6 6 points, Q8 and Q9 3x3 Gauss; exact for the
+   stiffness of straight-sided T6 and of parallelogram Q8/Q9 cells. Every node must be used by a cell.
    Setting a mesh again clears that body's materials, supports, loads and contact surface.
    In an axisymmetric model a node with x < 0 is an MC_ERROR_MESH naming it. */
 MC_API mc_status mc_set_mesh(mc_model *m, int body, mc_int n_nodes, const double *xy,
@@ -338,6 +351,12 @@ MC_API mc_status mc_get_displacement(const mc_model *m, int body, double *u);
    Axisymmetric: rr zz rz and the hoop stress theta-theta in the fourth slot, averaged over the
    cell's volume of revolution (weight 2 pi r). */
 MC_API mc_status mc_get_stress(const mc_model *m, int body, double *sigma);
+/* Stresses of a body at its nodes: 4 per node (n_nodes of that body), the components of
+   mc_get_stress. Each cell's stress is evaluated at each of its nodes (for P1 the cell's constant
+   stress), and a node gets the mean over the cells that share it. Exact for a uniform stress
+   state with every cell kind. On the axis of an axisymmetric model the hoop strain u_r / r is
+   taken as its limit du_r/dr. */
+MC_API mc_status mc_get_nodal_stress(const mc_model *m, int body, double *sigma);
 /* Support reactions of a body: 2 per node; the force the supports exert on the body at
    prescribed components, 0 at the others. Reactions + applied loads + contact forces = 0. */
 MC_API mc_status mc_get_reaction(const mc_model *m, int body, double *r);

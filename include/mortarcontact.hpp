@@ -242,14 +242,14 @@ class Model {
     check(::mc_set_plane(get(), static_cast<int>(plane), thickness));
   }
 
-  /// xy: 2 per node; cells: nodes_per_cell (3 or 4) ids each.
+  /// xy: 2 per node; cells: nodes_per_cell (3, 4, 6, 8 or 9) ids each.
   void set_mesh(int body, mc_int n_nodes, const double *xy, mc_int n_cells, int nodes_per_cell,
                 const mc_int *cells) {
     check(::mc_set_mesh(get(), body, n_nodes, xy, n_cells, nodes_per_cell, cells));
     mesh_of(body) = MeshSize{n_nodes, n_cells};
   }
   void set_mesh(int body, const std::vector<double> &xy, const std::vector<mc_int> &cells, int nodes_per_cell) {
-    if (nodes_per_cell <= 0) throw Error(Status::error_argument, "set_mesh: nodes_per_cell must be 3 or 4");
+    if (nodes_per_cell <= 0) throw Error(Status::error_argument, "set_mesh: nodes_per_cell must be 3, 4, 6, 8 or 9");
     set_mesh(body, detail::item_count(xy.size(), 2, "set_mesh: xy"), xy.data(),
              detail::item_count(cells.size(), static_cast<std::size_t>(nodes_per_cell), "set_mesh: cells"),
              nodes_per_cell, cells.data());
@@ -376,6 +376,9 @@ class Model {
   /// 4 per cell: xx yy xy zz.
   void get_stress(int body, double *sigma) const { check(::mc_get_stress(get(), body, sigma)); }
   std::vector<double> get_stress(int body) const { return per_cell(body, 4, ::mc_get_stress); }
+  /// 4 per node of the body: xx yy xy zz, each cell's stress at its nodes averaged over the cells.
+  void get_nodal_stress(int body, double *sigma) const { check(::mc_get_nodal_stress(get(), body, sigma)); }
+  std::vector<double> get_nodal_stress(int body) const { return per_node(body, 4, ::mc_get_nodal_stress); }
   /// 2 per node of the body.
   void get_reaction(int body, double *r) const { check(::mc_get_reaction(get(), body, r)); }
   std::vector<double> get_reaction(int body) const { return per_node(body, 2, ::mc_get_reaction); }

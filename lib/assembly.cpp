@@ -1,4 +1,5 @@
 #include "assembly.hpp"
+#include "cell_shapes.hpp"
 #include <algorithm>
 
 namespace mc {
@@ -96,14 +97,13 @@ SymmetricCsc assemble_stiffness(const Mesh &mesh, const std::vector<PlaneLaw> &l
     }
 
   const int npc = mesh.nodes_per_cell(), m = 2 * npc;
-  double ke[64];
-  Point p[4];
+  double ke[4 * kMaxCellNodes * kMaxCellNodes];
+  Point p[kMaxCellNodes];
   for (int c = 0; c < mesh.n_cells(); ++c) {
     const int *v = mesh.cell(c);
     for (int a = 0; a < npc; ++a) p[a] = mesh.node(v[a]);
     const PlaneLaw &law = laws.size() == 1 ? laws[0] : laws[c];
-    if (npc == 3) triangle_stiffness(p, law, measure, ke);
-    else quadrilateral_stiffness(p, law, measure, bbar, ke);
+    cell_stiffness(p, npc, law, measure, bbar && npc == 4, ke);
     for (int b = 0; b < m; ++b) {
       int col = 2 * v[b / 2] + b % 2;
       const int *first = &k.rows[k.colptr[col]], *last = &k.rows[k.colptr[col + 1]];

@@ -2,6 +2,7 @@
 // and the boundary no C++ exception crosses. Every entry point follows one pattern: run the
 // body inside guard(), which turns an mc::Error (or any other exception) into a status and
 // the model's message.
+#include "cell_shapes.hpp"
 #include "error.hpp"
 #include "model.hpp"
 #include "plane_vectors.hpp"
@@ -109,9 +110,10 @@ std::vector<mc::SurfaceSegment> load_edges(const mc::Model &model, const mc::Mes
     int a = node_id(model, mesh, edges[2 * e], "edges", 2 * size_t(e));
     int b = node_id(model, mesh, edges[2 * e + 1], "edges", 2 * size_t(e) + 1);
     const mc::BoundaryEdge *edge = mesh.boundary_edge(a, b);
+    char hint[160];
     if (!edge)
-      fail(MC_ERROR_MESH, "edges[%d..%d] = (%d, %d) is not an edge on the boundary of the mesh", 2 * int(e),
-           2 * int(e) + 1, int(edges[2 * e]), int(edges[2 * e + 1]));
+      fail(MC_ERROR_MESH, "edges[%d..%d] = (%d, %d) is not an edge on the boundary of the mesh%s", 2 * int(e),
+           2 * int(e) + 1, int(edges[2 * e]), int(edges[2 * e + 1]), mesh.edge_hint(a, b, model.index_base, hint, 160));
     out.push_back({edge->from, edge->to});
   }
   return out;
@@ -239,8 +241,11 @@ mc_status mc_set_mesh(mc_model *m, int body, mc_int n_nodes, const double *xy, m
     require_pointer(cells, "cells");
     require_count(n_nodes, "n_nodes");
     require_count(n_cells, "n_cells");
-    if (nodes_per_cell != 3 && nodes_per_cell != 4)
-      fail(MC_ERROR_ARGUMENT, "nodes_per_cell = %d: must be 3 (P1 triangle) or 4 (Q1 quadrilateral)", nodes_per_cell);
+    if (!mc::is_cell_kind(nodes_per_cell))
+      fail(MC_ERROR_ARGUMENT,
+           "nodes_per_cell = %d: must be 3 (P1 triangle), 4 (Q1 quadrilateral), 6 (T6 triangle), 8 (Q8 "
+           "quadrilateral) or 9 (Q9 quadrilateral)",
+           nodes_per_cell);
     // (as mc::Mesh checks them, before the ids, so that counts are reported first)
     if (n_nodes < 3) fail(MC_ERROR_ARGUMENT, "n_nodes = %d: a mesh needs at least 3 nodes", int(n_nodes));
     if (n_cells < 1) fail(MC_ERROR_ARGUMENT, "n_cells = %d: a mesh needs at least 1 cell", int(n_cells));
@@ -610,6 +615,14 @@ mc_status mc_get_stress(const mc_model *m, int body, double *sigma) {
     const mc::Body &b = solved_body(model, body);
     require_pointer(sigma, "sigma");
     std::memcpy(sigma, b.stress.data(), b.stress.size() * sizeof(double));
+  });
+}
+
+mc_status mc_get_nodal_stress(const mc_model *m, int body, double *sigma) {
+  return guard_const(m, [&](const mc::Model &model) {
+    const mc::Body &b = solved_body(model, body);
+    require_pointer(sigma, "sigma");
+    std::memcpy(sigma, b.nodal_stress.data(), b.nodal_stress.size() * sizeof(double));
   });
 }
 

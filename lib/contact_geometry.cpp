@@ -241,9 +241,10 @@ std::vector<SurfaceSegment> oriented_surface(const Mesh &mesh, const int *edges,
       fail(MC_ERROR_ARGUMENT, "edges[%d..%d] = (%d, %d): node id out of range [%d, %d)", 2 * e, 2 * e + 1, a + base,
            b + base, base, mesh.n_nodes() + base);
     const BoundaryEdge *edge = mesh.boundary_edge(a, b);
+    char hint[160];
     if (!edge)
-      fail(MC_ERROR_CONTACT, "edges[%d..%d] = (%d, %d) is not an edge on the boundary of the mesh", 2 * e, 2 * e + 1,
-           a + base, b + base);
+      fail(MC_ERROR_CONTACT, "edges[%d..%d] = (%d, %d) is not an edge on the boundary of the mesh%s", 2 * e, 2 * e + 1,
+           a + base, b + base, mesh.edge_hint(a, b, base, hint, 160));
     surface.push_back({edge->from, edge->to});
     seen.push_back({std::min(a, b), std::max(a, b)});
   }

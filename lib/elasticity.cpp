@@ -1,4 +1,6 @@
 #include "elasticity.hpp"
+#include "cell_shapes.hpp"
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -47,121 +49,111 @@ PlaneLaw general_plane_law(const double d[9]) {
 
 namespace {
 
-// One quadrature point of a cell: shape functions, their gradients, where it is and its
-// weight (quadrature weight x Jacobian x the measure's t or 2 pi r there).
+// One point of a cell: shape functions, their gradients, where it is and its weight
+// (quadrature weight x Jacobian x the measure's t or 2 pi r there).
 struct CellPoint {
-  double shape[4], dndx[4], dndy[4];
+  double shape[kMaxCellNodes], dndx[kMaxCellNodes], dndy[kMaxCellNodes];
   Point x;
   double weight;
+  double det;  // Jacobian determinant
 };
 
-// P1 gradients: constant on the triangle; returns the area.
-double triangle_gradients(const Point p[3], double dndx[3], double dndy[3]) {
-  double area2 = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
-  for (int a = 0; a < 3; ++a) {
-    const Point &q = p[(a + 1) % 3], &r = p[(a + 2) % 3];
-    dndx[a] = (q.y - r.y) / area2;
-    dndy[a] = (r.x - q.x) / area2;
+// The isoparametric map of a cell at reference point (xi, eta): x = sum N_a x_a, gradients by
+// the inverse Jacobian.
+CellPoint cell_point(const Point *p, int npc, double xi, double eta) {
+  CellPoint cp;
+  double dxi[kMaxCellNodes], deta[kMaxCellNodes];
+  reference_shapes(npc, xi, eta, cp.shape, dxi, deta);
+  double j11 = 0, j12 = 0, j21 = 0, j22 = 0;  // d(x,y)/d(xi,eta)
+  cp.x = {0, 0};
+  for (int a = 0; a < npc; ++a) {
+    j11 += dxi[a] * p[a].x, j12 += dxi[a] * p[a].y;
+    j21 += deta[a] * p[a].x, j22 += deta[a] * p[a].y;
+    cp.x.x += cp.shape[a] * p[a].x, cp.x.y += cp.shape[a] * p[a].y;
   }
-  return area2 / 2;
+  cp.det = j11 * j22 - j12 * j21;
+  for (int a = 0; a < npc; ++a) {
+    cp.dndx[a] = (j22 * dxi[a] - j12 * deta[a]) / cp.det;
+    cp.dndy[a] = (-j21 * dxi[a] + j11 * deta[a]) / cp.det;
+  }
+  cp.weight = 0;
+  return cp;
 }
 
-// Quadrature points of a triangle. Plane: the centroid, exact for the constant B^T D B and
-// for the linear N_a of a body force. Axisymmetric: the three interior points at barycentric
-// (2/3, 1/6, 1/6) and permutations, exact for N_a r (body forces) and never on the axis,
-// where the hoop row N_a / r of B is undefined.
-int triangle_points(const Point p[3], const LineMeasure &measure, CellPoint q[3]) {
-  double dndx[3], dndy[3];
-  const double area = triangle_gradients(p, dndx, dndy);
-  const int n = measure.axisymmetric ? 3 : 1;
+// The quadrature points of a cell (cell_shapes.hpp: the rule of each kind).
+int cell_points(const Point *p, int npc, const LineMeasure &measure, CellPoint q[kMaxCellPoints]) {
+  double xi[kMaxCellPoints], eta[kMaxCellPoints], w[kMaxCellPoints];
+  const int n = quadrature_rule(npc, measure.axisymmetric, xi, eta, w);
   for (int g = 0; g < n; ++g) {
-    CellPoint &cp = q[g];
-    for (int a = 0; a < 3; ++a) {
-      cp.shape[a] = n == 1 ? 1.0 / 3 : (a == g ? 2.0 / 3 : 1.0 / 6);
-      cp.dndx[a] = dndx[a], cp.dndy[a] = dndy[a];
-    }
-    cp.x = {0, 0};
-    for (int a = 0; a < 3; ++a) cp.x.x += cp.shape[a] * p[a].x, cp.x.y += cp.shape[a] * p[a].y;
-    cp.weight = area / n * measure.weight(cp.x);
+    q[g] = cell_point(p, npc, xi[g], eta[g]);
+    q[g].weight = w[g] * q[g].det * measure.weight(q[g].x);
   }
   return n;
 }
 
-const double kGauss = 0.57735026918962576451;  // 1/sqrt(3)
-const double kRefX[4] = {-1, 1, 1, -1}, kRefY[4] = {-1, -1, 1, 1};
-
-// The 2x2 Gauss points of a Q1 cell.
-int quadrilateral_points(const Point p[4], const LineMeasure &measure, CellPoint q[4]) {
-  for (int g = 0; g < 4; ++g) {
-    CellPoint &cp = q[g];
-    const double xi = kGauss * kRefX[g], eta = kGauss * kRefY[g];
-    double dxi[4], deta[4];
-    for (int a = 0; a < 4; ++a) {
-      cp.shape[a] = 0.25 * (1 + xi * kRefX[a]) * (1 + eta * kRefY[a]);
-      dxi[a] = 0.25 * kRefX[a] * (1 + eta * kRefY[a]);
-      deta[a] = 0.25 * kRefY[a] * (1 + xi * kRefX[a]);
-    }
-    double j11 = 0, j12 = 0, j21 = 0, j22 = 0;  // d(x,y)/d(xi,eta)
-    cp.x = {0, 0};
-    for (int a = 0; a < 4; ++a) {
-      j11 += dxi[a] * p[a].x, j12 += dxi[a] * p[a].y;
-      j21 += deta[a] * p[a].x, j22 += deta[a] * p[a].y;
-      cp.x.x += cp.shape[a] * p[a].x, cp.x.y += cp.shape[a] * p[a].y;
-    }
-    const double det = j11 * j22 - j12 * j21;
-    for (int a = 0; a < 4; ++a) {
-      cp.dndx[a] = (j22 * dxi[a] - j12 * deta[a]) / det;
-      cp.dndy[a] = (-j21 * dxi[a] + j11 * deta[a]) / det;
-    }
-    cp.weight = det * measure.weight(cp.x);
-  }
-  return 4;
-}
+constexpr int kMaxCellDofs = 2 * kMaxCellNodes;
+using BMatrix = double[4 * kMaxCellDofs];  // n_strain x 2n, row-major with row stride 2n
 
 // Strain-displacement matrix at one point: eps = B u, B row-major n_strain x 2n. The hoop
-// row of an axisymmetric model is u_r / r = sum N_a u_r,a / r.
-void strain_displacement(int n, int n_strain, const CellPoint &cp, double *b) {
+// row of an axisymmetric model is u_r / r = sum N_a u_r,a / r; at a point on the axis (a node
+// of the cell, for nodal stresses) its limit du_r / dr.
+void strain_displacement(int n, int n_strain, const CellPoint &cp, double axis, double *b) {
   const int m = 2 * n;
   for (int a = 0; a < n; ++a) {
     b[0 * m + 2 * a] = cp.dndx[a], b[0 * m + 2 * a + 1] = 0;
     b[1 * m + 2 * a] = 0, b[1 * m + 2 * a + 1] = cp.dndy[a];
     b[2 * m + 2 * a] = cp.dndy[a], b[2 * m + 2 * a + 1] = cp.dndx[a];
-    if (n_strain == 4) b[3 * m + 2 * a] = cp.shape[a] / cp.x.x, b[3 * m + 2 * a + 1] = 0;
+    if (n_strain == 4) b[3 * m + 2 * a] = std::fabs(cp.x.x) <= axis ? cp.dndx[a] : cp.shape[a] / cp.x.x, b[3 * m + 2 * a + 1] = 0;
   }
 }
 
-// The B matrices of a cell's quadrature points; with bbar, Hughes' B-bar: each point's
-// dilatation (eps_xx + eps_yy, plus eps_theta_theta when axisymmetric) is replaced by its
-// mean over the cell in the measure, shared equally among the normal strains.
-int cell_b_matrices(const Point *p, int npc, const LineMeasure &measure, int n_strain, bool bbar, double b[4][32],
-                    double weight[4]) {
-  CellPoint q[4];
-  const int n = npc == 3 ? triangle_points(p, measure, q) : quadrilateral_points(p, measure, q);
-  const int m = 2 * npc;
-  for (int g = 0; g < n; ++g) weight[g] = q[g].weight, strain_displacement(npc, n_strain, q[g], b[g]);
-  if (!bbar) return n;
+// The dilatation row (eps_xx + eps_yy, plus eps_theta_theta when axisymmetric) of B.
+void dilatation_row(const double *b, int m, int n_strain, double *row) {
   const int normal_rows[3] = {0, 1, 3}, n_normal = n_strain == 4 ? 3 : 2;
-  double dilatation[4][8], mean[8] = {0}, volume = 0;
+  for (int j = 0; j < m; ++j) {
+    row[j] = 0;
+    for (int k = 0; k < n_normal; ++k) row[j] += b[normal_rows[k] * m + j];
+  }
+}
+
+// Hughes' B-bar at one point: its dilatation replaced by `mean` (the cell's), shared equally
+// among the normal strains.
+void replace_dilatation(double *b, int m, int n_strain, const double *mean) {
+  const int normal_rows[3] = {0, 1, 3}, n_normal = n_strain == 4 ? 3 : 2;
+  double own[kMaxCellDofs];
+  dilatation_row(b, m, n_strain, own);
+  for (int j = 0; j < m; ++j) {
+    const double correction = (mean[j] - own[j]) / n_normal;
+    for (int k = 0; k < n_normal; ++k) b[normal_rows[k] * m + j] += correction;
+  }
+}
+
+// The B matrices of a cell's quadrature points; with bbar, Hughes' B-bar, and `mean` (if not
+// null) receives the cell's mean dilatation row.
+int cell_b_matrices(const Point *p, int npc, const LineMeasure &measure, int n_strain, bool bbar, BMatrix *b,
+                    double *weight, double *mean_out = nullptr) {
+  CellPoint q[kMaxCellPoints];
+  const int n = cell_points(p, npc, measure, q);
+  const int m = 2 * npc;
+  for (int g = 0; g < n; ++g) weight[g] = q[g].weight, strain_displacement(npc, n_strain, q[g], 0.0, b[g]);
+  if (!bbar) return n;
+  double mean[kMaxCellDofs] = {0}, volume = 0, row[kMaxCellDofs];
   for (int g = 0; g < n; ++g) {
     volume += weight[g];
-    for (int j = 0; j < m; ++j) {
-      dilatation[g][j] = 0;
-      for (int k = 0; k < n_normal; ++k) dilatation[g][j] += b[g][normal_rows[k] * m + j];
-      mean[j] += weight[g] * dilatation[g][j];
-    }
+    dilatation_row(b[g], m, n_strain, row);
+    for (int j = 0; j < m; ++j) mean[j] += weight[g] * row[j];
   }
-  for (int g = 0; g < n; ++g)
-    for (int j = 0; j < m; ++j) {
-      const double correction = (mean[j] / volume - dilatation[g][j]) / n_normal;
-      for (int k = 0; k < n_normal; ++k) b[g][normal_rows[k] * m + j] += correction;
-    }
+  for (int j = 0; j < m; ++j) mean[j] /= volume;
+  for (int g = 0; g < n; ++g) replace_dilatation(b[g], m, n_strain, mean);
+  if (mean_out)
+    for (int j = 0; j < m; ++j) mean_out[j] = mean[j];
   return n;
 }
 
 // The upper triangle of ke += weight * B^T D B (ke is symmetric: cell_stiffness mirrors it).
 void add_btdb(int n, int n_strain, const double *b, const double *d, double weight, double *ke) {
   const int m = 2 * n;
-  double db[4 * 8];
+  double db[4 * kMaxCellDofs];
   for (int r = 0; r < n_strain; ++r)
     for (int j = 0; j < m; ++j) {
       double s = 0;
@@ -176,15 +168,6 @@ void add_btdb(int n, int n_strain, const double *b, const double *d, double weig
     }
 }
 
-void cell_stiffness(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar, double *ke) {
-  double b[4][32], weight[4];
-  const int n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight), m = 2 * npc;
-  std::memset(ke, 0, size_t(4 * npc * npc) * sizeof(double));
-  for (int g = 0; g < n; ++g) add_btdb(npc, law.n_strain, b[g], law.d, weight[g], ke);
-  for (int i = 0; i < m; ++i)
-    for (int j = 0; j < i; ++j) ke[i * m + j] = ke[j * m + i];
-}
-
 void stress_from_strain(const PlaneLaw &law, const double eps[4], double sigma[4]) {
   for (int r = 0; r < law.n_strain; ++r) {
     sigma[r] = 0;
@@ -193,55 +176,79 @@ void stress_from_strain(const PlaneLaw &law, const double eps[4], double sigma[4
   if (law.n_strain == 3) sigma[3] = law.zz_factor * (sigma[0] + sigma[1]);
 }
 
-void cell_stress(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar,
-                 const double *ue, double sigma[4]) {
-  double b[4][32], weight[4], total = 0;
+void stress_at(const double *b, int m, const PlaneLaw &law, const double *ue, double s[4]) {
+  double eps[4] = {0, 0, 0, 0};
+  s[0] = s[1] = s[2] = s[3] = 0;
+  for (int r = 0; r < law.n_strain; ++r)
+    for (int j = 0; j < m; ++j) eps[r] += b[r * m + j] * ue[j];
+  stress_from_strain(law, eps, s);
+}
+
+}  // namespace
+
+void cell_stiffness(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar, double *ke) {
+  BMatrix b[kMaxCellPoints];
+  double weight[kMaxCellPoints];
+  const int n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight), m = 2 * npc;
+  std::memset(ke, 0, size_t(m * m) * sizeof(double));
+  for (int g = 0; g < n; ++g) add_btdb(npc, law.n_strain, b[g], law.d, weight[g], ke);
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < i; ++j) ke[i * m + j] = ke[j * m + i];
+}
+
+void cell_stress(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar, const double *ue,
+                 double sigma[4]) {
+  BMatrix b[kMaxCellPoints];
+  double weight[kMaxCellPoints], total = 0;
   const int n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight), m = 2 * npc;
   for (int k = 0; k < 4; ++k) sigma[k] = 0;
   for (int g = 0; g < n; ++g) {
-    double eps[4] = {0, 0, 0, 0}, s[4] = {0, 0, 0, 0};
-    for (int r = 0; r < law.n_strain; ++r)
-      for (int j = 0; j < m; ++j) eps[r] += b[g][r * m + j] * ue[j];
-    stress_from_strain(law, eps, s);
+    double s[4];
+    stress_at(b[g], m, law, ue, s);
     for (int k = 0; k < 4; ++k) sigma[k] += weight[g] * s[k];
     total += weight[g];
   }
   for (int k = 0; k < 4; ++k) sigma[k] /= total;
 }
 
+void cell_nodal_stresses(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar,
+                         const double *ue, double *sigma) {
+  const int m = 2 * npc;
+  if (npc == 3) {  // constant strain (plane); the axisymmetric hoop strain varies, evaluated below
+    if (!measure.axisymmetric) {
+      double s[4];
+      cell_stress(p, npc, law, measure, false, ue, s);
+      for (int a = 0; a < 3; ++a)
+        for (int k = 0; k < 4; ++k) sigma[4 * a + k] = s[k];
+      return;
+    }
+  }
+  double mean[kMaxCellDofs] = {0};
+  if (bbar) {
+    BMatrix b[kMaxCellPoints];
+    double weight[kMaxCellPoints];
+    cell_b_matrices(p, npc, measure, law.n_strain, true, b, weight, mean);
+  }
+  // A node within round-off of the axis (model.hpp's axis tolerance: 1e-12 of the extent).
+  double extent = 0;
+  for (int a = 0; a < npc; ++a) extent = std::max({extent, std::fabs(p[a].x - p[0].x), std::fabs(p[a].y - p[0].y)});
+  for (int a = 0; a < npc; ++a) {
+    double xi, eta;
+    reference_node(npc, a, xi, eta);
+    const CellPoint cp = cell_point(p, npc, xi, eta);
+    BMatrix b;
+    strain_displacement(npc, law.n_strain, cp, 1e-9 * extent, b);
+    if (bbar) replace_dilatation(b, m, law.n_strain, mean);
+    stress_at(b, m, law, ue, &sigma[4 * a]);
+  }
+}
+
 void cell_body_force(const Point *p, int npc, double bx, double by, const LineMeasure &measure, double *fe) {
-  CellPoint q[4];
-  const int n = npc == 3 ? triangle_points(p, measure, q) : quadrilateral_points(p, measure, q);
+  CellPoint q[kMaxCellPoints];
+  const int n = cell_points(p, npc, measure, q);
   for (int k = 0; k < 2 * npc; ++k) fe[k] = 0;
   for (int g = 0; g < n; ++g)
     for (int a = 0; a < npc; ++a) fe[2 * a] += q[g].weight * q[g].shape[a] * bx, fe[2 * a + 1] += q[g].weight * q[g].shape[a] * by;
-}
-
-}  // namespace
-
-void triangle_stiffness(const Point p[3], const PlaneLaw &law, const LineMeasure &measure, double ke[36]) {
-  cell_stiffness(p, 3, law, measure, false, ke);
-}
-
-void quadrilateral_stiffness(const Point p[4], const PlaneLaw &law, const LineMeasure &measure, bool bbar, double ke[64]) {
-  cell_stiffness(p, 4, law, measure, bbar, ke);
-}
-
-void triangle_stress(const Point p[3], const PlaneLaw &law, const LineMeasure &measure, const double ue[6], double sigma[4]) {
-  cell_stress(p, 3, law, measure, false, ue, sigma);
-}
-
-void quadrilateral_stress(const Point p[4], const PlaneLaw &law, const LineMeasure &measure, bool bbar, const double ue[8],
-                          double sigma[4]) {
-  cell_stress(p, 4, law, measure, bbar, ue, sigma);
-}
-
-void triangle_body_force(const Point p[3], double bx, double by, const LineMeasure &measure, double fe[6]) {
-  cell_body_force(p, 3, bx, by, measure, fe);
-}
-
-void quadrilateral_body_force(const Point p[4], double bx, double by, const LineMeasure &measure, double fe[8]) {
-  cell_body_force(p, 4, bx, by, measure, fe);
 }
 
 void edge_traction_force(Point p, Point q, double tx, double ty, const LineMeasure &measure, double fe[4]) {
@@ -249,6 +256,31 @@ void edge_traction_force(Point p, Point q, double tx, double ty, const LineMeasu
   measure.hat_integrals(p, q, at_p, at_q);
   fe[0] = at_p * tx, fe[1] = at_p * ty;
   fe[2] = at_q * tx, fe[3] = at_q * ty;
+}
+
+// f_a = integral over s in [0,1] of N_a t w |x'(s)| ds, with t = -p n(s) and n(s) |x'(s)| =
+// (y', -x') for a pressure. Five Gauss points: exact (degree 9) for a straight edge in every
+// model, and for a curved one up to the non-polynomial |x'| of a traction.
+void quadratic_edge_force(Point p, Point q, Point m, double tx, double ty, bool is_pressure, const LineMeasure &measure,
+                          double fe[6]) {
+  double s[5], w[5];
+  gauss_on_unit_interval(5, s, w);
+  const Point node[3] = {p, q, m};
+  for (int k = 0; k < 6; ++k) fe[k] = 0;
+  for (int g = 0; g < 5; ++g) {
+    double n[3], dn[3];
+    line_shapes(3, s[g], n, dn);
+    Point x{0, 0}, d{0, 0};
+    for (int a = 0; a < 3; ++a) x.x += n[a] * node[a].x, x.y += n[a] * node[a].y, d.x += dn[a] * node[a].x, d.y += dn[a] * node[a].y;
+    const double weight = w[g] * measure.weight(x);
+    double fx, fy;  // traction times |x'|
+    if (is_pressure) fx = -tx * d.y, fy = tx * d.x;
+    else {
+      const double speed = std::hypot(d.x, d.y);
+      fx = tx * speed, fy = ty * speed;
+    }
+    for (int a = 0; a < 3; ++a) fe[2 * a] += weight * n[a] * fx, fe[2 * a + 1] += weight * n[a] * fy;
+  }
 }
 
 }  // namespace mc

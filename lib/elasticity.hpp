@@ -22,27 +22,34 @@ PlaneLaw isotropic_plane_law(double young, double poisson, bool plane_stress);
 PlaneLaw isotropic_axisymmetric_law(double young, double poisson);
 PlaneLaw general_plane_law(const double d[9]);
 
-// Stiffness of a P1 triangle: the integral of B^T D B w. Plane: B constant, one point, exact.
-// Axisymmetric: the hoop row N_a / r varies, three interior points (degree 2). ke: 6x6 row-major.
-void triangle_stiffness(const Point p[3], const PlaneLaw &law, const LineMeasure &measure, double ke[36]);
-// Stiffness of a Q1 quadrilateral by 2x2 Gauss; with bbar, the dilatation is replaced by its
-// cell average (Hughes' B-bar), which removes volumetric locking. ke: 8x8 row-major.
-void quadrilateral_stiffness(const Point p[4], const PlaneLaw &law, const LineMeasure &measure, bool bbar,
-                             double ke[64]);
+// Stiffness of a cell of any kind (cell_shapes.hpp: P1, Q1, T6, Q8, Q9; npc nodes at p): the
+// integral of B^T D B w by the cell's quadrature rule. With bbar (Q1 only), the dilatation is
+// replaced by its cell average (Hughes' B-bar), which removes volumetric locking.
+// ke: (2 npc) x (2 npc) row-major.
+void cell_stiffness(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar, double *ke);
 
 // Stress of a cell with nodal displacements ue (2 per node), averaged over the cell with the
 // measure's weight (exact for plane P1): (xx, yy, xy, zz), the fourth the out-of-plane normal
 // stress: sigma_zz of a plane model, the hoop stress sigma_theta_theta of an axisymmetric one.
-void triangle_stress(const Point p[3], const PlaneLaw &law, const LineMeasure &measure, const double ue[6],
-                     double sigma[4]);
-void quadrilateral_stress(const Point p[4], const PlaneLaw &law, const LineMeasure &measure, bool bbar,
-                          const double ue[8], double sigma[4]);
+void cell_stress(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar, const double *ue,
+                 double sigma[4]);
+// The same stress evaluated at each of the cell's nodes: 4 per node. On the axis of an
+// axisymmetric model the hoop strain u_r / r is taken as its limit du_r / dr.
+void cell_nodal_stresses(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar,
+                         const double *ue, double *sigma);
 
 // Consistent nodal forces of a uniform body force b (per unit volume): integral of N_a b w.
-void triangle_body_force(const Point p[3], double bx, double by, const LineMeasure &measure, double fe[6]);
-void quadrilateral_body_force(const Point p[4], double bx, double by, const LineMeasure &measure, double fe[8]);
+void cell_body_force(const Point *p, int npc, double bx, double by, const LineMeasure &measure, double *fe);
+
 // Consistent nodal forces of a uniform traction on a straight edge p->q (per unit area of the
 // true surface): integral of N_a t w, half of the resultant to each end in a plane model.
 void edge_traction_force(Point p, Point q, double tx, double ty, const LineMeasure &measure, double fe[4]);
+// The same on a quadratic edge from p to q through its mid-edge node m (a parabola, curved when m
+// is off the chord): fe holds p's, q's and m's forces (6). With is_pressure, tx is a pressure
+// that pushes against the curve's own outward normal wherever it points along the edge
+// (body on the left of p -> q); otherwise (tx, ty) is a traction in global axes. A uniform
+// pressure on a straight edge gives 1/6, 1/6 and 2/3 of its resultant.
+void quadratic_edge_force(Point p, Point q, Point m, double tx, double ty, bool is_pressure,
+                          const LineMeasure &measure, double fe[6]);
 
 }  // namespace mc

@@ -1,9 +1,11 @@
 #include "mesh.hpp"
+#include "cell_shapes.hpp"
 #include "error.hpp"
 #include <algorithm>
 #include <array>
 #include <climits>
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 namespace mc {
@@ -12,9 +14,12 @@ Mesh::Mesh(int n_nodes, const double *xy, int n_cells, int nodes_per_cell, const
     : n_nodes_(n_nodes), n_cells_(n_cells), nodes_per_cell_(nodes_per_cell) {
   if (n_nodes < 3) fail(MC_ERROR_ARGUMENT, "n_nodes = %d: a mesh needs at least 3 nodes", n_nodes);
   if (n_cells < 1) fail(MC_ERROR_ARGUMENT, "n_cells = %d: a mesh needs at least 1 cell", n_cells);
-  if (nodes_per_cell != 3 && nodes_per_cell != 4)
-    fail(MC_ERROR_ARGUMENT, "nodes_per_cell = %d: must be 3 (P1 triangle) or 4 (Q1 quadrilateral)",
+  if (!is_cell_kind(nodes_per_cell))
+    fail(MC_ERROR_ARGUMENT,
+         "nodes_per_cell = %d: must be 3 (P1 triangle), 4 (Q1 quadrilateral), 6 (T6 triangle), 8 (Q8 "
+         "quadrilateral) or 9 (Q9 quadrilateral)",
          nodes_per_cell);
+  corners_ = cell_type(nodes_per_cell).corners;
   if (!xy) fail(MC_ERROR_ARGUMENT, "xy is NULL");
   if (!cells) fail(MC_ERROR_ARGUMENT, "cells is NULL");
   xy_.assign(xy, xy + 2 * size_t(n_nodes));
@@ -44,6 +49,13 @@ Mesh::Mesh(int n_nodes, const double *xy, int n_cells, int nodes_per_cell, const
   for (int i = 0; i < n_nodes; ++i)
     if (!used[i]) fail(MC_ERROR_MESH, "node %d is used by no cell (it would have no stiffness)", i + base);
   check_cell_shapes(base);
+  if (quadratic()) {
+    corner_.assign(n_nodes_, 0);
+    for (int c = 0; c < n_cells_; ++c)
+      for (int a = 0; a < corners_; ++a) corner_[cell(c)[a]] = 1;
+    check_node_roles(base);
+    check_jacobians(base);
+  }
   derive_boundary(base);
 }
 
@@ -51,7 +63,7 @@ Mesh::Mesh(int n_nodes, const double *xy, int n_cells, int nodes_per_cell, const
 // (its bilinear map then has a positive Jacobian everywhere). The tolerance is relative to
 // the cell's own size, so the check does not depend on units.
 void Mesh::check_cell_shapes(int base) {
-  const int n = nodes_per_cell_;
+  const int n = corners_;
   for (int c = 0; c < n_cells_; ++c) {
     const int *v = cell(c);
     double longest2 = 0;  // the longest side, squared
@@ -77,7 +89,7 @@ void Mesh::check_cell_shapes(int base) {
 // original (a reversed or reordered copy is clockwise or not convex), so it repeats the
 // original's directed edges, and this finds the cause to name.
 void Mesh::fail_on_duplicate_cell(int base) const {
-  const int n = nodes_per_cell_;
+  const int n = corners_;  // a duplicate has the same corners
   std::map<std::array<int, 4>, int> seen;
   for (int c = 0; c < n_cells_; ++c) {
     std::array<int, 4> key{INT_MAX, INT_MAX, INT_MAX, INT_MAX};  // a triangle's fourth slot stays last
@@ -99,10 +111,11 @@ uint64_t Mesh::edge_key(int a, int b) {
 // counting sort) and sorting each small bucket by the other node: linear in the cells, with
 // no hash table over all edges. A wrong edge is reported as the first one met in cell order.
 void Mesh::derive_boundary(int base) {
-  const int npc = nodes_per_cell_;
-  const size_t n_uses = size_t(n_cells_) * npc;  // use k: edge k % npc of cell k / npc
-  auto from = [&](size_t k) { return cells_[k]; };
-  auto to = [&](size_t k) { return cells_[k % npc == size_t(npc - 1) ? k + 1 - npc : k + 1]; };
+  const int npc = corners_, stride = nodes_per_cell_;
+  const size_t n_uses = size_t(n_cells_) * npc;  // use k: edge k % npc of cell k / npc (corner to corner)
+  auto from = [&](size_t k) { return cells_[(k / npc) * stride + k % npc]; };
+  auto to = [&](size_t k) { return cells_[(k / npc) * stride + (k % npc + 1) % npc]; };
+  auto mid = [&](size_t k) { return quadratic() ? cells_[(k / npc) * stride + npc + k % npc] : -1; };
   auto low = [&](size_t k) { return std::min(from(k), to(k)); };
   auto high = [&](size_t k) { return std::max(from(k), to(k)); };
   std::vector<size_t> start(size_t(n_nodes_) + 1, 0);
@@ -112,6 +125,7 @@ void Mesh::derive_boundary(int base) {
   for (size_t k = 0; k < n_uses; ++k) use[next[low(k)]++] = k;
   size_t wrong = n_uses, first_use = 0;  // the first wrong use in cell order, and its edge's first use
   bool overlap = false;                    // wrong is a second use in the first one's direction
+  size_t mid_mismatch = n_uses, mid_first = 0;  // an interior edge whose two cells name different middles
   std::vector<size_t> single;
   for (int i = 0; i < n_nodes_; ++i) {
     auto begin = use.begin() + start[i], end = use.begin() + start[i + 1];
@@ -121,7 +135,9 @@ void Mesh::derive_boundary(int base) {
       while (g_end != end && high(*g_end) == high(*g)) ++g_end;
       const size_t count = size_t(g_end - g);
       if (count == 1) single.push_back(*g);
-      else if (from(g[1]) == from(g[0]) || count > 2) {  // overlap at the second use, or a third use
+      else if (count == 2 && from(g[1]) != from(g[0]) && mid(g[0]) != mid(g[1])) {
+        if (g[1] < mid_mismatch) mid_mismatch = g[1], mid_first = g[0];
+      } else if (from(g[1]) == from(g[0]) || count > 2) {  // overlap at the second use, or a third use
         const bool same_direction = from(g[1]) == from(g[0]);
         const size_t k = same_direction ? g[1] : g[2];
         if (k < wrong) wrong = k, first_use = g[0], overlap = same_direction;
@@ -137,8 +153,112 @@ void Mesh::derive_boundary(int base) {
            b + base);
     fail(MC_ERROR_MESH, "edge %d-%d of cell %d is shared by more than two cells", a + base, b + base, c + base);
   }
+  if (mid_mismatch < n_uses) {
+    const size_t k = mid_mismatch, k0 = mid_first;
+    fail(MC_ERROR_MESH,
+         "cells %d and %d share edge %d-%d but give it different mid-edge nodes (%d and %d): a quadratic edge "
+         "has one middle node, shared by both cells",
+         int(k0 / npc) + base, int(k / npc) + base, from(k0) + base, to(k0) + base, mid(k0) + base, mid(k) + base);
+  }
   boundary_.reserve(single.size());
-  for (size_t k : single) boundary_.emplace(edge_key(from(k), to(k)), BoundaryEdge{from(k), to(k), int(k / npc)});
+  for (size_t k : single)
+    boundary_.emplace(edge_key(from(k), to(k)), BoundaryEdge{from(k), to(k), int(k / npc), mid(k)});
+}
+
+// Each node of a quadratic mesh has one role: a corner (of any number of cells), the middle of
+// one edge (of the one or two cells sharing it), or the centre of one Q9 cell. A node in two
+// roles makes cells that do not fit together.
+void Mesh::check_node_roles(int base) const {
+  const int nc = corners_, npc = nodes_per_cell_;
+  enum Role { kNone, kCorner, kMid, kCentre };
+  std::vector<char> role(n_nodes_, kNone);
+  std::vector<int> first_cell(n_nodes_, -1);
+  std::vector<uint64_t> edge_of(n_nodes_, 0);
+  for (int c = 0; c < n_cells_; ++c)
+    for (int a = 0; a < nc; ++a) {
+      const int v = cell(c)[a];
+      if (role[v] == kNone) role[v] = kCorner, first_cell[v] = c;
+    }
+  for (int c = 0; c < n_cells_; ++c)
+    for (int a = nc; a < npc; ++a) {
+      const int v = cell(c)[a];
+      const bool centre = a == 8;
+      const int e0 = cell(c)[a - nc], e1 = cell(c)[(a - nc + 1) % nc];
+      const uint64_t key = centre ? ~uint64_t(c) : edge_key(e0, e1);
+      if (role[v] == kCorner)
+        fail(MC_ERROR_MESH, "node %d is a corner of cell %d and also the %s of cell %d%s", v + base, first_cell[v] + base,
+             centre ? "centre node" : "mid-edge node", c + base, centre ? "" : " (of its edge between two corners)");
+      if (role[v] == kNone) {
+        role[v] = centre ? kCentre : kMid, first_cell[v] = c, edge_of[v] = key;
+        continue;
+      }
+      if (edge_of[v] != key || centre)
+        fail(MC_ERROR_MESH, "node %d is the %s of cell %d and also the %s of cell %d: a mid-edge node belongs to one "
+             "edge, a centre node to one cell",
+             v + base, role[v] == kCentre ? "centre node" : "mid-edge node", first_cell[v] + base,
+             centre ? "centre node" : "mid-edge node of another edge", c + base);
+    }
+}
+
+// An isoparametric cell is valid if its map is one-to-one: the Jacobian determinant keeps its
+// sign (positive: counter-clockwise) everywhere in the cell, not only at the corners, where a
+// misplaced mid-edge node can fold an edge while the corners look fine. It is checked on a
+// lattice of the reference cell, corners and edges included (45 points on a triangle, 81 on a
+// quadrilateral), against 1e-8 of its mean over the cell.
+void Mesh::check_jacobians(int base) const {
+  const int npc = nodes_per_cell_;
+  const bool triangle = corners_ == 3;
+  constexpr int kSteps = 8;
+  std::vector<std::array<double, 2>> lattice;
+  for (int j = 0; j <= kSteps; ++j)
+    for (int i = 0; i <= kSteps; ++i) {
+      if (triangle && i + j > kSteps) continue;
+      lattice.push_back(triangle ? std::array<double, 2>{double(i) / kSteps, double(j) / kSteps}
+                                 : std::array<double, 2>{-1 + 2.0 * i / kSteps, -1 + 2.0 * j / kSteps});
+    }
+  const double reference_area = triangle ? 0.5 : 4;
+  for (int c = 0; c < n_cells_; ++c) {
+    const int *v = cell(c);
+    double area = 0;  // of the corner polygon: the mean Jacobian of a straight-sided cell
+    for (int a = 0; a < corners_; ++a) {
+      const Point p = node(v[a]), q = node(v[(a + 1) % corners_]);
+      area += 0.5 * (p.x * q.y - q.x * p.y);
+    }
+    for (const auto &point : lattice) {
+      double n[kMaxCellNodes], dxi[kMaxCellNodes], deta[kMaxCellNodes];
+      reference_shapes(npc, point[0], point[1], n, dxi, deta);
+      double j11 = 0, j12 = 0, j21 = 0, j22 = 0;
+      for (int a = 0; a < npc; ++a) {
+        const Point p = node(v[a]);
+        j11 += dxi[a] * p.x, j12 += dxi[a] * p.y, j21 += deta[a] * p.x, j22 += deta[a] * p.y;
+      }
+      const double det = j11 * j22 - j12 * j21;
+      if (det > 1e-8 * area / reference_area) continue;
+      int nearest = 0;  // the node nearest to the failing point, in reference coordinates
+      double best = 1e300;
+      for (int a = 0; a < npc; ++a) {
+        double xa, ya;
+        reference_node(npc, a, xa, ya);
+        const double d = std::hypot(xa - point[0], ya - point[1]);
+        if (d < best) best = d, nearest = a;
+      }
+      fail(MC_ERROR_MESH,
+           "cell %d (%s) is inverted or folded inside: its Jacobian is %s at reference point (%g, %g), nearest its "
+           "node %d (node %d): check the mid-edge nodes' positions (a middle node must lie well inside its edge's "
+           "middle half) and that the corners are counter-clockwise",
+           c + base, cell_name(npc), det < 0 ? "negative" : "zero", point[0], point[1], nearest, v[nearest] + base);
+    }
+  }
+}
+
+const char *Mesh::edge_hint(int a, int b, int base, char *buffer, int size) const {
+  buffer[0] = 0;
+  for (int v : {a, b})
+    if (v >= 0 && v < n_nodes_ && !is_corner(v)) {
+      std::snprintf(buffer, size_t(size), " (node %d is a mid-edge or centre node: an edge of a quadratic cell is named by its two corner nodes)", v + base);
+      break;
+    }
+  return buffer;
 }
 
 const BoundaryEdge *Mesh::boundary_edge(int a, int b) const {

@@ -1,5 +1,5 @@
-// Mesh intake of one body: validated nodes and cells (P1 triangles or Q1 quadrilaterals)
-// and the boundary edges derived from them.
+// Mesh intake of one body: validated nodes and cells (P1 and T6 triangles, Q1, Q8 and Q9
+// quadrilaterals: cell_shapes.hpp) and the boundary edges derived from them.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -14,9 +14,11 @@ struct Point {
 
 // A boundary edge oriented as in its cell (counter-clockwise), so the body lies on its left
 // and its outward normal is (dy, -dx)/length.
+// On a quadratic mesh the edge is a 3-node line: its mid-edge node is `mid` (-1 on a linear mesh).
 struct BoundaryEdge {
   int from, to;
   int cell;
+  int mid = -1;
 };
 
 class Mesh {
@@ -30,6 +32,8 @@ public:
   int n_nodes() const { return n_nodes_; }
   int n_cells() const { return n_cells_; }
   int nodes_per_cell() const { return nodes_per_cell_; }
+  int corners_per_cell() const { return corners_; }
+  bool quadratic() const { return nodes_per_cell_ > 4; }
   Point node(int i) const { return {xy_[2 * i], xy_[2 * i + 1]}; }
   const int *cell(int c) const { return &cells_[size_t(c) * nodes_per_cell_]; }
   const std::vector<double> &xy() const { return xy_; }
@@ -38,16 +42,24 @@ public:
   // The boundary edge joining nodes a and b (either order), or nullptr if a-b is not a
   // boundary edge.
   const BoundaryEdge *boundary_edge(int a, int b) const;
+  // Whether node i is a corner of some cell (every node of a linear mesh is).
+  bool is_corner(int i) const { return !quadratic() || corner_[i]; }
+  // " (node 7 is a mid-edge node: an edge is named by its two corner nodes)", or "" if a and b
+  // are corners: what a message about a bad edge adds on a quadratic mesh.
+  const char *edge_hint(int a, int b, int base, char *buffer, int size) const;
 
 private:
   static uint64_t edge_key(int a, int b);
   void check_cell_shapes(int base);
+  void check_jacobians(int base) const;
+  void check_node_roles(int base) const;
   void derive_boundary(int base);
   void fail_on_duplicate_cell(int base) const;
 
-  int n_nodes_ = 0, n_cells_ = 0, nodes_per_cell_ = 0;
+  int n_nodes_ = 0, n_cells_ = 0, nodes_per_cell_ = 0, corners_ = 0;
   std::vector<double> xy_;
   std::vector<int> cells_;
+  std::vector<char> corner_;  // quadratic meshes: per node, a corner of some cell
   double length_scale_ = 1.0;
   std::unordered_map<uint64_t, BoundaryEdge> boundary_;
 };

@@ -1,4 +1,5 @@
 #include "model.hpp"
+#include "cell_shapes.hpp"
 #include "blas_threads.hpp"
 #include "error.hpp"
 #include "lapack.hpp"
@@ -124,9 +125,16 @@ std::vector<double> Model::load_vector(int b) const {
   const Mesh &mesh = body_.mesh;
   std::vector<double> f(body_.nodal_force);
   f.resize(2 * size_t(mesh.n_nodes()), 0.0);
-  double fe[8];
+  double fe[2 * kMaxCellNodes];
   for (const EdgeLoad &load : body_.edge_loads) {
     Point p = mesh.node(load.a), q = mesh.node(load.b);
+    const BoundaryEdge *edge = mesh.quadratic() ? mesh.boundary_edge(load.a, load.b) : nullptr;
+    if (edge && edge->mid >= 0) {  // a 3-node edge, curved if its middle is off the chord
+      quadratic_edge_force(p, q, mesh.node(edge->mid), load.tx, load.ty, load.is_pressure, measure(), fe);
+      const int node[3] = {load.a, load.b, edge->mid};
+      for (int a = 0; a < 3; ++a) f[2 * node[a]] += fe[2 * a], f[2 * node[a] + 1] += fe[2 * a + 1];
+      continue;
+    }
     double tx = load.tx, ty = load.ty;
     if (load.is_pressure) {  // pressure pushes against the outward normal (dy, -dx)/|e|
       double length = std::hypot(q.x - p.x, q.y - p.y);
@@ -139,16 +147,42 @@ std::vector<double> Model::load_vector(int b) const {
   }
   if (body_.body_force[0] != 0 || body_.body_force[1] != 0) {
     const int npc = mesh.nodes_per_cell();
-    Point p[4];
+    Point p[kMaxCellNodes];
     for (int c = 0; c < mesh.n_cells(); ++c) {
       const int *v = mesh.cell(c);
       for (int a = 0; a < npc; ++a) p[a] = mesh.node(v[a]);
-      if (npc == 3) triangle_body_force(p, body_.body_force[0], body_.body_force[1], measure(), fe);
-      else quadrilateral_body_force(p, body_.body_force[0], body_.body_force[1], measure(), fe);
+      cell_body_force(p, npc, body_.body_force[0], body_.body_force[1], measure(), fe);
       for (int a = 0; a < npc; ++a) f[2 * v[a]] += fe[2 * a], f[2 * v[a] + 1] += fe[2 * a + 1];
     }
   }
   return f;
+}
+
+// Stresses averaged over each cell, and at the nodes: each cell's stress at its own nodes,
+// averaged over the cells sharing a node.
+void Model::cell_and_nodal_stresses(int b, const std::vector<PlaneLaw> &laws) {
+  Body &body_ = body[b];
+  const Mesh &mesh = body_.mesh;
+  const int npc = mesh.nodes_per_cell();
+  const bool bbar = options.q1_integration == MC_Q1_BBAR && npc == 4;
+  body_.stress.assign(4 * size_t(mesh.n_cells()), 0.0);
+  body_.nodal_stress.assign(4 * size_t(mesh.n_nodes()), 0.0);
+  std::vector<int> cells_at(mesh.n_nodes(), 0);
+  Point p[kMaxCellNodes];
+  double ue[2 * kMaxCellNodes], at_nodes[4 * kMaxCellNodes];
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    const int *cv = mesh.cell(c);
+    for (int a = 0; a < npc; ++a) p[a] = mesh.node(cv[a]), ue[2 * a] = body_.u[2 * cv[a]], ue[2 * a + 1] = body_.u[2 * cv[a] + 1];
+    const PlaneLaw &law = laws.size() == 1 ? laws[0] : laws[c];
+    cell_stress(p, npc, law, measure(), bbar, ue, &body_.stress[4 * size_t(c)]);
+    cell_nodal_stresses(p, npc, law, measure(), bbar, ue, at_nodes);
+    for (int a = 0; a < npc; ++a) {
+      cells_at[cv[a]]++;
+      for (int k = 0; k < 4; ++k) body_.nodal_stress[4 * size_t(cv[a]) + k] += at_nodes[4 * a + k];
+    }
+  }
+  for (int i = 0; i < mesh.n_nodes(); ++i)
+    for (int k = 0; k < 4; ++k) body_.nodal_stress[4 * size_t(i) + k] /= cells_at[i];
 }
 
 // Stiffness and rigid modes of one body (the first half of its structure).
@@ -514,20 +548,7 @@ void Model::solve() {
       else residual_norm2[b] += r * r, f_norm2[b] += loads[b].lifted[i] * loads[b].lifted[i] + contact_force[i] * contact_force[i];
     }
     energy[b] = 0.5 * dot(elastic, ku);
-    // Cell-averaged stresses.
-    const Mesh &mesh = body_.mesh;
-    const int npc = mesh.nodes_per_cell();
-    const bool bbar = options.q1_integration == MC_Q1_BBAR;
-    body_.stress.assign(4 * size_t(mesh.n_cells()), 0.0);
-    Point p[4];
-    double ue[8];
-    for (int c = 0; c < mesh.n_cells(); ++c) {
-      const int *cv = mesh.cell(c);
-      for (int a = 0; a < npc; ++a) p[a] = mesh.node(cv[a]), ue[2 * a] = body_.u[2 * cv[a]], ue[2 * a + 1] = body_.u[2 * cv[a] + 1];
-      const PlaneLaw &law = sys.laws.size() == 1 ? sys.laws[0] : sys.laws[c];
-      if (npc == 3) triangle_stress(p, law, measure(), ue, &body_.stress[4 * size_t(c)]);
-      else quadrilateral_stress(p, law, measure(), bbar, ue, &body_.stress[4 * size_t(c)]);
-    }
+    cell_and_nodal_stresses(b, sys.laws);
   };
   for_each_body(recover);
   if (contact_) {

@@ -46,7 +46,7 @@ struct Body {
   std::vector<SurfaceSegment> contact;
   std::vector<double> gap_offset;       // per node (body 1 only), added to g0; empty: none
   // results
-  std::vector<double> u, reaction, stress;
+  std::vector<double> u, reaction, stress, nodal_stress;
 };
 
 // What a solve keeps for the next one when only loads or prescribed values change.
@@ -203,6 +203,7 @@ private:
   void interface_block(int b, std::vector<double> &s_b, BodyWork &work);
   void build_structure(const std::function<void(int, BodyWork &)> &then);
   void solve_loads(int b, BodyWork &work, LoadSolve &out) const;
+  void cell_and_nodal_stresses(int b, const std::vector<PlaneLaw> &laws);
   std::vector<double> load_vector(int b) const;
   void effective_supports();
   // The supports a solve uses: the host's (mc_fix) and, in an axisymmetric model, u_r = 0 at
