@@ -111,6 +111,7 @@ void test_sizes_checked_before_the_c_call() {
   EXPECT_ERROR(mc::Status::error_argument, m.set_cell_elasticity(1, std::vector<double>(9, 1.0)));
   EXPECT_ERROR(mc::Status::error_argument, m.set_gap_offset({0, 1}, {0.1}));
   EXPECT_ERROR(mc::Status::error_state, m.get_stress(2));  // body 2 has no mesh
+  EXPECT_ERROR(mc::Status::error_state, m.get_nodal_stress(2));
 }
 
 void test_move_only_ownership() {
@@ -137,6 +138,9 @@ void test_readme_scene_vector_overloads() {
   EXPECT(m.get_displacement(2).size() == 8 && m.get_reaction(2).size() == 8);
   const std::vector<double> stress = m.get_stress(1), normal = m.get_contact_normal();
   EXPECT(stress.size() == 8 && near(stress[1], -0.1));  // sigma_yy of cell 0
+  const std::vector<double> nodal = m.get_nodal_stress(1);  // uniform: every node as the cells
+  EXPECT(nodal.size() == 16);
+  for (std::size_t k = 0; k < nodal.size(); ++k) EXPECT(near(nodal[k], stress[k % 4]));
   EXPECT(normal.size() == 4 && near(normal[0], 0.0) && near(normal[1], -1.0));
   const std::vector<double> force = m.get_contact_force(), gap = m.get_contact_gap();
   EXPECT(force.size() == 2 && near(force[0] + force[1], 0.1));  // total force = p * length 1
@@ -169,10 +173,12 @@ void test_readme_scene_pointer_overloads_one_based() {
   m.solve();
   expect_uniform_pressure(m, 0.05, __LINE__);
   mc_int nodes[2] = {0, 0};
-  double force[2] = {0, 0}, u[8];
+  double force[2] = {0, 0}, u[8], sigma[16];
   m.get_contact_nodes(nodes);
   m.get_contact_force(force);
   m.get_displacement(1, u);
+  m.get_nodal_stress(1, sigma);
+  EXPECT(near(sigma[1], -0.05) && near(sigma[4 * 3 + 1], -0.05));  // sigma_yy at nodes 1 and 4
   EXPECT(nodes[0] == 1 && nodes[1] == 2);
   EXPECT(near(force[0] + force[1], 0.1));  // 0.05 * length 1 * thickness 2
   EXPECT(u[5] < 0 && u[7] < 0);  // the top moves down
@@ -251,6 +257,42 @@ void test_log_callback() {
   expect_uniform_pressure(m, 0.1, __LINE__);
 }
 
+// Quadratic cells pass through set_mesh (the wrapper checks only that cells is a whole number of
+// cells): one unit-square cell of each kind, on rollers at x = 0 and y = 0, pressed with 0.1 on
+// its top edge (named by its corners): a uniform stress sigma_yy = -0.1 that every cell kind
+// reproduces exactly, at its nodes too.
+void test_quadratic_cells() {
+  const std::vector<double> xy9{0, 0, 1, 0, 1, 1, 0, 1, 0.5, 0, 1, 0.5, 0.5, 1, 0, 0.5, 0.5, 0.5};
+  const std::vector<double> xy6{0, 0, 1, 0, 0, 1, 0.5, 0, 0.5, 0.5, 0, 0.5};
+  struct Case {
+    int nodes_per_cell;
+    std::vector<double> xy;
+    std::vector<mc_int> cells, left, bottom, top;
+  };
+  const std::vector<double> xy8(xy9.begin(), xy9.end() - 2);
+  const Case cases[] = {
+      {6, xy6, {0, 1, 2, 3, 4, 5}, {0, 5, 2}, {0, 3, 1}, {1, 2}},  // T6: the top edge is the hypotenuse
+      {8, xy8, {0, 1, 2, 3, 4, 5, 6, 7}, {0, 7, 3}, {0, 4, 1}, {2, 3}},
+      {9, xy9, {0, 1, 2, 3, 4, 5, 6, 7, 8}, {0, 7, 3}, {0, 4, 1}, {2, 3}},
+  };
+  for (const Case &c : cases) {
+    mc::Model m;
+    m.set_mesh(1, c.xy, c.cells, c.nodes_per_cell);
+    m.set_material(1, 1.0, 0.3);
+    m.fix(1, c.left, mc::Components::x);
+    m.fix(1, c.bottom, mc::Components::y);
+    m.add_pressure(1, c.top, {0.1});  // T6: on the hypotenuse, so sigma_xx = -0.1 too
+    m.solve();
+    const std::vector<double> nodal = m.get_nodal_stress(1), cell = m.get_stress(1);
+    EXPECT(nodal.size() == 4 * c.xy.size() / 2 && cell.size() == 4);
+    for (std::size_t k = 0; k < nodal.size(); ++k) EXPECT(std::fabs(nodal[k] - cell[k % 4]) < 1e-12);
+    EXPECT(near(cell[0], c.nodes_per_cell == 6 ? -0.1 : 0.0) && near(cell[1], -0.1) && near(cell[2], 0.0));
+  }
+  mc::Model m;
+  EXPECT_ERROR(mc::Status::error_argument, m.set_mesh(1, xy8, {0, 1, 2, 3, 4, 5, 6}, 8));  // 7 ids
+  EXPECT_ERROR(mc::Status::error_argument, m.set_mesh(1, xy8, {0, 1, 2, 3, 4, 5, 6, 7}, 0));
+}
+
 void test_write_vtu() {
   mc::Model m;
   set_readme_scene(m);
@@ -278,6 +320,7 @@ int main() {
   test_interface_solver_forced();
   test_loads_and_material_variants();
   test_log_callback();
+  test_quadratic_cells();
   test_write_vtu();
   if (failures) {
     std::fprintf(stderr, "%d check(s) failed\n", failures);

@@ -6,9 +6,10 @@
 !>    change it back; the wrappers pass ids through unchanged);
 !>  - arrays are assumed-shape, one column per node/cell/edge: xy(2, n_nodes),
 !>    cells(nodes_per_cell, n_cells), edges(2, n_edges), d(3, 3, n_cells), u(2, n_nodes),
-!>    sigma(4, n_cells); the counts come from the shapes, and each shape is checked before
-!>    the C call: a wrong one returns MC_ERROR_ARGUMENT (MC_ERROR_STATE when the body has
-!>    no mesh yet) with a message, and the C library is not called;
+!>    sigma(4, n_cells) (mc_get_nodal_stress: sigma(4, n_nodes)); the counts come from the
+!>    shapes, and each shape is checked before the C call: a wrong one returns
+!>    MC_ERROR_ARGUMENT (MC_ERROR_STATE when the body has no mesh yet) with a message, and
+!>    the C library is not called;
 !>  - functions return the status as a default integer (MC_OK = 0); mc_errmsg(model)
 !>    returns the message of the last failed call as a Fortran string ('' after a success);
 !>  - strings (mc_errmsg, mc_status_string, mc_version_string) are Fortran strings;
@@ -76,6 +77,7 @@ module mortarcontact
   public :: mc_fix, mc_add_traction, mc_add_pressure, mc_add_nodal_force, mc_set_body_force
   public :: mc_clear_loads, mc_set_contact, mc_set_option_int, mc_set_option_real, mc_solve
   public :: mc_get_info_int, mc_get_info_real, mc_get_displacement, mc_get_stress, mc_get_reaction
+  public :: mc_get_nodal_stress
   public :: mc_get_contact_count, mc_get_contact_nodes, mc_get_contact_pressure
   public :: mc_get_contact_force, mc_get_contact_gap, mc_get_contact_initial_gap
   public :: mc_get_contact_normal
@@ -262,6 +264,12 @@ module mortarcontact
        real(c_double), intent(out) :: u(*)
      end function
      integer(c_int) function c_mc_get_stress(m, body, sigma) bind(C, name="mc_get_stress")
+       import :: c_ptr, c_int, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: body
+       real(c_double), intent(out) :: sigma(*)
+     end function
+     integer(c_int) function c_mc_get_nodal_stress(m, body, sigma) bind(C, name="mc_get_nodal_stress")
        import :: c_ptr, c_int, c_double
        type(c_ptr), value :: m
        integer(c_int), value :: body
@@ -480,7 +488,9 @@ contains
     status = finish(model, c_mc_set_plane(model%ptr, int(plane, c_int), thickness))
   end function mc_set_plane
 
-  !> The mesh of a body: xy(2, n_nodes), cells(3 or 4, n_cells), counter-clockwise.
+  !> The mesh of a body: xy(2, n_nodes), cells(nodes_per_cell, n_cells) with nodes_per_cell
+  !> 3 (P1), 4 (Q1), 6 (T6), 8 (Q8) or 9 (Q9): corners counter-clockwise, then the mid-edge
+  !> nodes (and the Q9 centre), in Gmsh's and VTK's order (mc_set_mesh in the header).
   integer function mc_set_mesh(model, body, xy, cells) result(status)
     type(mc_model), intent(inout) :: model
     integer, intent(in) :: body
@@ -721,6 +731,18 @@ contains
          '(4, n_cells)', status)) return
     status = finish(model, c_mc_get_stress(model%ptr, int(body, c_int), sigma))
   end function mc_get_stress
+
+  !> Stresses at the nodes sigma(4, n_nodes): xx, yy, xy, zz; each cell's stress at its nodes,
+  !> averaged over the cells sharing a node.
+  integer function mc_get_nodal_stress(model, body, sigma) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    real(mc_real), intent(out) :: sigma(:, :)
+    if (.not. body_ok(model, 'mc_get_nodal_stress', body, status)) return
+    if (.not. shape_ok(model, 'mc_get_nodal_stress: sigma', shape(sigma), [4, model%n_nodes(body)], &
+         '(4, n_nodes)', status)) return
+    status = finish(model, c_mc_get_nodal_stress(model%ptr, int(body, c_int), sigma))
+  end function mc_get_nodal_stress
 
   !> Support reactions r(2, n_nodes).
   integer function mc_get_reaction(model, body, r) result(status)

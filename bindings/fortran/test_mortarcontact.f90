@@ -41,7 +41,12 @@ program test_mortarcontact
   real(mc_real) :: xy(2, 4) = reshape([0d0, 0d0, 1d0, 0d0, 1d0, 1d0, 0d0, 1d0], [2, 4])
   integer(mc_int) :: tri(3, 2) = reshape([1, 2, 3, 1, 3, 4], [3, 2])
   real(mc_real) :: u(2, 4), r(2, 4), sigma(4, 2), wrong(2, 3), d(3, 3, 2), big(3, 4)
-  real(mc_real) :: strided(4, 4)
+  real(mc_real) :: strided(4, 4), sigma_n(4, 4)
+  ! one Q8 cell, the unit square: corners counter-clockwise, then the mid-edge nodes
+  real(mc_real) :: xy8(2, 8) = reshape([0d0, 0d0, 1d0, 0d0, 1d0, 1d0, 0d0, 1d0, &
+       0.5d0, 0d0, 1d0, 0.5d0, 0.5d0, 1d0, 0d0, 0.5d0], [2, 8])
+  integer(mc_int) :: q8(8, 1) = reshape([1, 2, 3, 4, 5, 6, 7, 8], [8, 1])
+  real(mc_real) :: sigma8(4, 1), sigma8_n(4, 8)
   ! the README's scene: body 2, the unit square below body 1 (the square xy above)
   real(mc_real) :: xy2(2, 4) = reshape([0d0, -1d0, 1d0, -1d0, 1d0, 0d0, 0d0, 0d0], [2, 4])
   real(mc_real) :: pressure(2)
@@ -133,6 +138,16 @@ program test_mortarcontact
      call expect(mc_get_reaction(m, 1, r), MC_OK, 'mc_get_reaction')
      call check(abs(sum(r(2, :)) + 1d-3) < 1d-12, 'reactions balance the load')
      call expect(mc_get_stress(m, 1, sigma), MC_OK, 'mc_get_stress')
+     call expect(mc_get_nodal_stress(m, 1, sigma), MC_ERROR_ARGUMENT, 'nodal stresses of shape (4, 2)')
+     call check(index(mc_errmsg(m), '(4, n_nodes)') > 0 .and. index(mc_errmsg(m), '(4, 4)') > 0, &
+          'message: ' // mc_errmsg(m))
+     call expect(mc_get_nodal_stress(m, 2, sigma_n), MC_ERROR_STATE, 'nodal stresses of body 2 (no mesh)')
+     call expect(mc_get_nodal_stress(m, 1, sigma_n), MC_OK, 'mc_get_nodal_stress')
+     ! P1: a node gets the mean of its cells' constant stresses (nodes 2 and 4 are in one cell)
+     call check(all(abs(sigma_n(:, 2) - sigma(:, 1)) < 1d-14) .and. all(abs(sigma_n(:, 4) - sigma(:, 2)) < 1d-14), &
+          'nodal stresses of the nodes in one cell')
+     call check(all(abs(sigma_n(:, 1) - 0.5d0 * (sigma(:, 1) + sigma(:, 2))) < 1d-14) .and. &
+          all(abs(sigma_n(:, 3) - sigma_n(:, 1)) < 1d-14), 'nodal stresses of the nodes in both cells')
      call expect(mc_get_info_int(m, MC_INFO_DOFS, dofs32), MC_OK, 'info, default integer')
      call expect(mc_get_info_int(m, MC_INFO_DOFS, dofs64), MC_OK, 'info, int64')
      call check(dofs32 > 0 .and. dofs64 == dofs32, 'MC_INFO_DOFS')
@@ -174,8 +189,27 @@ program test_mortarcontact
      pressure = 0
      call expect(mc_get_contact_pressure(m, pressure), MC_OK, 'mc_get_contact_pressure')
      call check(all(abs(pressure - 0.1d0) < 1d-12), 'uniform contact pressure 0.1')
+     call expect(mc_get_nodal_stress(m, 2, sigma_n), MC_OK, 'mc_get_nodal_stress (contact)')
+     call check(all(abs(sigma_n(2, :) + 0.1d0) < 1d-12), 'sigma_yy = -0.1 at the nodes of body 2')
      call mc_destroy(m)
   end do
+
+  ! A quadratic cell through the wrapper (cells(8, 1): Q8): the unit square on rollers at x = 0
+  ! and y = 0, pressed with 0.1 on its top edge (named by its corners): a uniform stress,
+  ! exact in the cell and at its nodes.
+  call expect(mc_create(m), MC_OK, 'mc_create (Q8)')
+  call expect(mc_set_mesh(m, 1, xy8, q8), MC_OK, 'mc_set_mesh (Q8)')
+  call expect(mc_set_material(m, 1, 1d0, 0.3d0), MC_OK, 'material (Q8)')
+  call expect(mc_fix(m, 1, [1, 8, 4], MC_X), MC_OK, 'rollers at x = 0 (Q8)')
+  call expect(mc_fix(m, 1, [1, 5, 2], MC_Y), MC_OK, 'rollers at y = 0 (Q8)')
+  call expect(mc_add_pressure(m, 1, reshape([3, 4], [2, 1]), [0.1d0]), MC_OK, 'pressure on top (Q8)')
+  call expect(mc_solve(m), MC_OK, 'mc_solve (Q8)')
+  call expect(mc_get_stress(m, 1, sigma8), MC_OK, 'mc_get_stress (Q8)')
+  call expect(mc_get_nodal_stress(m, 1, sigma8_n), MC_OK, 'mc_get_nodal_stress (Q8)')
+  call check(abs(sigma8(1, 1)) < 1d-12 .and. abs(sigma8(2, 1) + 0.1d0) < 1d-12 .and. abs(sigma8(3, 1)) < 1d-12, &
+       'uniform stress sigma_yy = -0.1 (Q8)')
+  call check(all(abs(sigma8_n - spread(sigma8(:, 1), 2, 8)) < 1d-12), 'nodal stresses = the uniform stress (Q8)')
+  call mc_destroy(m)
 
   if (failures > 0) then
      print '(i0, a)', failures, ' check(s) failed'

@@ -42,6 +42,7 @@
 #pragma weak mc_set_gap_offset
 #pragma weak mc_set_log_callback
 #pragma weak mc_write_vtu
+#pragma weak mc_get_nodal_stress
 
 /* Counters for the replay driver (how far the corpus reaches); not used by the library. */
 long fuzz_api_solves_ok = 0, fuzz_api_contact_solves_ok = 0;
@@ -211,12 +212,13 @@ static void query_all(harness *h) {
     const body_state *b = tracked(h, body);
     size_t nodes = b && b->meshed ? (size_t)b->n_nodes : 0, cells = b && b->meshed ? (size_t)b->n_cells : 0;
     double *u = exact(2 * nodes, sizeof(double)), *sigma = exact(4 * cells, sizeof(double));
-    double *r = exact(2 * nodes, sizeof(double));
+    double *sigma_n = exact(4 * nodes, sizeof(double)), *r = exact(2 * nodes, sizeof(double));
     mc_status su = CALL(mc_get_displacement(m, body, u));
     CALL(mc_get_stress(m, body, sigma));
+    if (mc_get_nodal_stress) CALL(mc_get_nodal_stress(m, body, sigma_n));
     CALL(mc_get_reaction(m, body, r));
     if (su == MC_OK && !(b && b->meshed)) fuzz_fail("displacements of a body without a mesh", "mc_get_displacement");
-    free(u), free(sigma), free(r);
+    free(u), free(sigma), free(sigma_n), free(r);
   }
   {
     mc_int n = -1;
@@ -271,6 +273,7 @@ static void null_calls(harness *h) {
   CALL(mc_get_info_real(m, MC_INFO_STRAIN_ENERGY, &rv));
   CALL(mc_get_displacement(m, 1, v));
   CALL(mc_get_stress(m, 1, v));
+  if (mc_get_nodal_stress) CALL(mc_get_nodal_stress(m, 1, v));
   CALL(mc_get_reaction(m, 1, v));
   CALL(mc_get_contact_count(m, &id));
   CALL(mc_get_contact_nodes(m, &id));
@@ -288,6 +291,7 @@ static void null_calls(harness *h) {
   CALL(mc_get_info_real(m, MC_INFO_STRAIN_ENERGY, NULL));
   CALL(mc_get_displacement(m, 1, NULL));
   CALL(mc_get_stress(m, 2, NULL));
+  if (mc_get_nodal_stress) CALL(mc_get_nodal_stress(m, 2, NULL));
   CALL(mc_get_reaction(m, 1, NULL));
   CALL(mc_get_contact_count(m, NULL));
   CALL(mc_get_contact_nodes(m, NULL));

@@ -13,8 +13,9 @@ Two layers, both thin:
   (raw pointers, `Ref`s and arrays);
 - `Model` and `set_mesh!`, `solve!`, `get_displacement`, ...: a model with 1-based ids (Julia's
   own convention; `Model(index_base=0)` for 0-based), column-major arrays with one column per
-  node/cell/edge (`xy` is 2×n_nodes, `cells` 3×n_cells or 4×n_cells, `edges` 2×n_edges), which is
-  exactly the C layout, and errors thrown as `MortarContactError(status, message)`.
+  node/cell/edge (`xy` is 2×n_nodes, `cells` k×n_cells with k = 3, 4, 6, 8 or 9 nodes per cell,
+  `edges` 2×n_edges), which is exactly the C layout, and errors thrown as
+  `MortarContactError(status, message)`.
 
 The library is `libmortarcontact.so.0`, loaded from `ENV["MORTARCONTACT_LIBRARY"]` (full path)
 if set, else from the install prefix this package was installed into
@@ -40,9 +41,9 @@ export Model, MortarContactError, version_string, version_number, status_string
 export set_index_base!, set_plane!, set_mesh!, set_material!, set_cell_elasticity!, fix!,
        add_traction!, add_pressure!, add_nodal_force!, set_body_force!, clear_loads!, set_contact!,
        set_option_int!, set_option_real!, solve!, get_info_int, get_info_real, get_displacement,
-       get_stress, get_reaction, get_contact_count, get_contact_nodes, get_contact_pressure,
-       get_contact_force, get_contact_gap, get_contact_initial_gap, get_contact_normal, errmsg,
-       set_gap_offset!, set_log_callback!, write_vtu
+       get_stress, get_nodal_stress, get_reaction, get_contact_count, get_contact_nodes,
+       get_contact_pressure, get_contact_force, get_contact_gap, get_contact_initial_gap,
+       get_contact_normal, errmsg, set_gap_offset!, set_log_callback!, write_vtu
 
 # Resolved by soname: __init__ dlopens the chosen file first, and the dynamic loader then
 # matches this name against the already-loaded library's soname.
@@ -203,6 +204,8 @@ mc_get_displacement(m, body, u) =
     ccall((:mc_get_displacement, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Ptr{Cdouble}), m, body, u)
 mc_get_stress(m, body, sigma) =
     ccall((:mc_get_stress, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Ptr{Cdouble}), m, body, sigma)
+mc_get_nodal_stress(m, body, sigma) =
+    ccall((:mc_get_nodal_stress, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Ptr{Cdouble}), m, body, sigma)
 mc_get_reaction(m, body, r) =
     ccall((:mc_get_reaction, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Ptr{Cdouble}), m, body, r)
 mc_get_contact_count(m, n) =
@@ -310,7 +313,9 @@ ids(a) = convert(Array{Int32}, a)          # throws InexactError for ids beyond 
 set_index_base!(m::Model, base::Integer) = check(m, mc_set_index_base(m, base))
 set_plane!(m::Model, plane::Integer, thickness::Real=1.0) = check(m, mc_set_plane(m, plane, thickness))
 
-"""`xy`: 2×n_nodes; `cells`: 3×n_cells (P1) or 4×n_cells (Q1), counter-clockwise."""
+"""`xy`: 2×n_nodes; `cells`: 3×n_cells (P1), 4×n_cells (Q1), 6×n_cells (T6), 8×n_cells (Q8) or
+9×n_cells (Q9): corners counter-clockwise, then the mid-edge nodes (and the Q9 centre), in
+Gmsh's and VTK's order (see `mc_set_mesh` in the header)."""
 function set_mesh!(m::Model, body::Integer, xy::AbstractMatrix{<:Real}, cells::AbstractMatrix{<:Integer})
     size(xy, 1) == 2 || argerror("xy must be 2×n_nodes, got $(size(xy))")
     x, c = reals(xy), ids(cells)
@@ -438,6 +443,8 @@ end
 get_displacement(m::Model, body::Integer) = per_body(mc_get_displacement, m, body, 2, b -> m.n_nodes[b], "get_displacement")
 """Cell-averaged stresses, 4×n_cells (xx, yy, xy, zz)."""
 get_stress(m::Model, body::Integer) = per_body(mc_get_stress, m, body, 4, b -> m.n_cells[b], "get_stress")
+"""Stresses at the nodes, 4×n_nodes (xx, yy, xy, zz): each cell's stress at its nodes, averaged over the cells."""
+get_nodal_stress(m::Model, body::Integer) = per_body(mc_get_nodal_stress, m, body, 4, b -> m.n_nodes[b], "get_nodal_stress")
 """Support reactions, 2×n_nodes."""
 get_reaction(m::Model, body::Integer) = per_body(mc_get_reaction, m, body, 2, b -> m.n_nodes[b], "get_reaction")
 

@@ -127,7 +127,7 @@ class Model:
     Use it as a context manager, or call :meth:`close`; it is also freed when garbage
     collected. Every method raises :class:`MortarContactError` on failure; the model stays
     usable after a failed call. Arrays are numpy arrays, one row per node, cell or edge:
-    coordinates ``(n, 2)``, cells ``(n_cells, 3 or 4)``, edges ``(n_edges, 2)``; ids use the
+    coordinates ``(n, 2)``, cells ``(n_cells, 3, 4, 6, 8 or 9)``, edges ``(n_edges, 2)``; ids use the
     model's index base (0 unless ``index_base=1``).
 
     >>> with Model() as m:
@@ -216,7 +216,9 @@ class Model:
 
     def set_mesh(self, body, xy, cells):
         """Sets the mesh of ``body``: ``xy`` (n_nodes, 2) coordinates and ``cells``
-        (n_cells, 3) P1 triangles or (n_cells, 4) Q1 quadrilaterals, counter-clockwise.
+        (n_cells, 3) P1 triangles, (n_cells, 4) Q1 quadrilaterals, (n_cells, 6) T6 triangles,
+        (n_cells, 8) Q8 or (n_cells, 9) Q9 quadrilaterals: corners counter-clockwise, then the
+        mid-edge nodes (and the Q9 centre), in Gmsh's and VTK's order (``mc_set_mesh``).
         Clears that body's materials, supports, loads and contact surface."""
         xy = _reals(xy, (None, 2), "xy")
         cells = _ids(cells, (None, None), "cells")
@@ -386,6 +388,11 @@ class Model:
     def get_stress(self, body):
         """Cell-averaged stresses of ``body``: (n_cells, 4) as xx, yy, xy, zz."""
         return self._per_body(self._lib.mc_get_stress, body, False, 4, "get_stress")
+
+    def get_nodal_stress(self, body):
+        """Stresses of ``body`` at its nodes: (n_nodes, 4) as xx, yy, xy, zz; each cell's stress
+        evaluated at its nodes, averaged over the cells sharing a node."""
+        return self._per_body(self._lib.mc_get_nodal_stress, body, True, 4, "get_nodal_stress")
 
     def get_reaction(self, body):
         """Support reactions of ``body``: (n_nodes, 2), zero at free components."""

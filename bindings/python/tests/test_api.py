@@ -170,6 +170,13 @@ class TestModel(unittest.TestCase):
             with self.assertRaises(mc.MortarContactError) as cm:
                 m.get_displacement(1)  # no solve yet
             self.assertEqual(cm.exception.status, mc.MC_ERROR_STATE)
+            for getter in (m.get_stress, m.get_nodal_stress):
+                with self.assertRaises(mc.MortarContactError) as cm:
+                    getter(1)  # no solve yet
+                self.assertEqual(cm.exception.status, mc.MC_ERROR_STATE)
+                with self.assertRaises(mc.MortarContactError) as cm:
+                    getter(2)  # no mesh
+                self.assertEqual(cm.exception.status, mc.MC_ERROR_STATE)
             with self.assertRaises(mc.MortarContactError) as cm:
                 m.get_info_int(mc.MC_INFO_TIME_TOTAL)  # a real info through the integer call
             self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
@@ -218,8 +225,38 @@ class TestModel(unittest.TestCase):
             self.assertAlmostEqual(r[:, 1].sum(), -1e-3, delta=1e-12)  # reactions balance the load
             s = m.get_stress(1)
             self.assertEqual(s.shape, (2, 4))
+            # P1: a node gets the mean of its cells' constant stresses
+            sn = m.get_nodal_stress(1)
+            self.assertEqual(sn.shape, (4, 4))
+            np.testing.assert_allclose(sn[[1, 3]], s, rtol=0, atol=1e-14)  # in one cell each
+            np.testing.assert_allclose(sn[[0, 2]], np.tile(s.mean(axis=0), (2, 1)), rtol=0, atol=1e-14)
             self.assertGreater(m.get_info(mc.MC_INFO_DOFS), 0)
             self.assertGreater(m.get_info(mc.MC_INFO_STRAIN_ENERGY), 0.0)
+
+    def test_quadratic_cells(self):
+        """T6, Q8 and Q9 cells reach the library (set_mesh takes the cells' width as
+        nodes_per_cell): one unit-square cell of each kind on rollers at x = 0 and y = 0, pressed
+        with 0.1 on the top edge (named by its corners), is in a uniform stress, which every
+        kind reproduces exactly, at its nodes too."""
+        q9 = np.array([[0, 0], [1, 0], [1, 1], [0, 1], [0.5, 0], [1, 0.5], [0.5, 1], [0, 0.5], [0.5, 0.5]])
+        t6 = np.array([[0, 0], [1, 0], [0, 1], [0.5, 0], [0.5, 0.5], [0, 0.5]])
+        cases = ((t6, [0, 5, 2], [0, 3, 1], [1, 2], [-0.1, -0.1]),  # the hypotenuse is pressed
+                 (q9[:8], [0, 7, 3], [0, 4, 1], [2, 3], [0.0, -0.1]),
+                 (q9, [0, 7, 3], [0, 4, 1], [2, 3], [0.0, -0.1]))
+        for xy, left, bottom, top, (sxx, syy) in cases:
+            with self.subTest(nodes_per_cell=len(xy)), mc.Model() as m:
+                m.set_mesh(1, xy, [list(range(len(xy)))])
+                self.assertEqual((m.n_nodes(1), m.n_cells(1)), (len(xy), 1))
+                m.set_material(1, 1.0, 0.3)
+                m.fix(1, left, mc.MC_X)
+                m.fix(1, bottom, mc.MC_Y)
+                m.add_pressure(1, [top], 0.1)
+                m.solve()
+                s, sn = m.get_stress(1), m.get_nodal_stress(1)
+                self.assertEqual(s.shape, (1, 4))
+                self.assertEqual(sn.shape, (len(xy), 4))
+                np.testing.assert_allclose(s[0, :3], [sxx, syy, 0.0], rtol=0, atol=1e-12)
+                np.testing.assert_allclose(sn, np.tile(s, (len(xy), 1)), rtol=0, atol=1e-12)
 
     @staticmethod
     def pulled_square(m):

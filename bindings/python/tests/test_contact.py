@@ -36,6 +36,9 @@ class TestPatch(unittest.TestCase):
             np.testing.assert_allclose(m.get_contact_normal(), np.tile([0.0, -1.0], (6, 1)), atol=1e-14)
             s = m.get_stress(1)
             np.testing.assert_allclose(s[:, 1], -patch_scene.PRESSURE, rtol=1e-8)
+            sn = m.get_nodal_stress(1)
+            self.assertEqual(sn.shape, (len(xy1), 4))
+            np.testing.assert_allclose(sn[:, 1], -patch_scene.PRESSURE, rtol=1e-8)
             self.assertEqual(m.get_info(mc.MC_INFO_ACTIVE_NODES), int(np.sum(m.get_contact_force() > 0)))
             self.assertLess(m.get_info(mc.MC_INFO_COMPLEMENTARITY), 1e-8)
             self.assertLess(m.get_info(mc.MC_INFO_GAP_RESIDUAL), 1e-10)  # a real info (float), at round-off
