@@ -443,7 +443,10 @@ mc_status mc_set_gap_offset(mc_model *m, mc_int n, const mc_int *nodes, const do
     if (n > 0) require_pointer(nodes, "nodes"), require_pointer(offset, "offset");
     if (n > 0) require_finite(offset, size_t(n), "offset");
     std::vector<char> on_surface(b.mesh.n_nodes(), 0);
-    for (const mc::SurfaceSegment &s : b.contact) on_surface[s.a] = on_surface[s.b] = 1;
+    for (const mc::SurfaceSegment &s : b.contact) {
+      on_surface[s.a] = on_surface[s.b] = 1;
+      if (s.mid >= 0) on_surface[s.mid] = 1;
+    }
     std::vector<int> local(n);
     for (mc_int i = 0; i < n; ++i) {
       local[i] = node_id(model, b.mesh, nodes[i], "nodes", size_t(i));

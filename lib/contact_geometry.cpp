@@ -1,4 +1,5 @@
 #include "contact_geometry.hpp"
+#include "cell_shapes.hpp"
 #include "error.hpp"
 #include "mortarcontact.h"
 #include "plane_vectors.hpp"
@@ -88,13 +89,15 @@ struct FaceContext {
   const ContactGeometry &g;
   int face, edges;
   bool closed;
-  int first_position;  // position of face node 0; node k is first_position + k (mod size if closed)
+  int first_position;  // position of face node 0; node k is first_position + stride k (mod size if closed)
   LookDirection look;
   LineMeasure measure;
+  int stride = 1;      // 2 on a quadratic face: each node is followed by its edge's middle
+  int points = 3;      // Gauss points per covered piece
 
   int position(int k) const {
     const int m = closed ? edges : edges + 1;
-    return first_position + ((k % m) + m) % m;
+    return first_position + stride * (((k % m) + m) % m);
   }
   int segment(int k) const { return g.nonmortar.segment_of(face, k); }
 };
@@ -123,6 +126,7 @@ TracePoint trace_point(const FaceContext &f, double t, const CoveredPiece &adjac
     p.a = f.position(int(nearest));
     p.x = f.g.nonmortar.segments()[f.segment(int(nearest))].pa;
     if (!f.closed && int(nearest) == f.edges) p.x = f.g.nonmortar.segments()[f.segment(f.edges - 1)].pb;
+    // (p.b stays -1: a trace point at a node is that node, on a quadratic edge too)
     if (f.g.projection[p.a].segment >= 0) {
       p.normal = f.g.normals[p.a], p.gap0 = f.g.gap0[p.a], p.projection = f.g.projection[p.a];
       return p;
@@ -134,7 +138,7 @@ TracePoint trace_point(const FaceContext &f, double t, const CoveredPiece &adjac
     const int k = int(std::floor(t));
     p.a = f.position(k), p.b = f.position(k + 1), p.xi = t - k;
     const CurveSegment &c = f.g.nonmortar.segments()[f.segment(k)];
-    p.x = lerp(c.pa, c.pb, p.xi);
+    p.x = c.quadratic() ? f.g.nonmortar.point(f.segment(k), p.xi) : lerp(c.pa, c.pb, p.xi);
     x = f.g.nonmortar.point(f.segment(k), p.xi);
     n = f.look(f.segment(k), p.xi);
   }
@@ -147,20 +151,33 @@ TracePoint trace_point(const FaceContext &f, double t, const CoveredPiece &adjac
 // positions' tributary measures (the integral of each body-1 hat function times w over Gamma_c).
 // The length measure is the chord's: the mortar integrals only need one measure used
 // throughout, and with it Wohlmuth's biorthogonal basis keeps D diagonal on curved surfaces too.
+// A quadratic body-1 edge is measured on its own curve (its arc length, the measure at the curve's
+// point): the integrals then are those of the body's own trace, which its loads also use.
 void add_quadrature(const FaceContext &f, const CoveredPiece &p, double t0, double t1, std::vector<QuadraturePoint> &element,
                     std::vector<double> &tributary) {
   const int seg = f.segment(p.k);
   const CurveSegment &c = f.g.nonmortar.segments()[seg];
-  for (int q = 0; q < 3; ++q) {
-    const double xi = p.xi0 + (p.xi1 - p.xi0) * kGaussPoint[q];
-    // The measure's weight (t, or 2 pi r: linear on the chord, so the rule stays exact for D)
-    const double weight = kGaussWeight[q] * (p.xi1 - p.xi0) * c.length * f.measure.weight(lerp(c.pa, c.pb, xi));
-    const double t = p.shift + p.k + xi;
+  double gauss_point[5], gauss_weight[5];
+  if (f.points == 3) {
+    for (int q = 0; q < 3; ++q) gauss_point[q] = kGaussPoint[q], gauss_weight[q] = kGaussWeight[q];
+  } else {
+    gauss_on_unit_interval(f.points, gauss_point, gauss_weight);
+  }
+  const std::array<int, 3> &positions = f.g.segment_positions[seg];
+  for (int q = 0; q < f.points; ++q) {
+    const double xi = p.xi0 + (p.xi1 - p.xi0) * gauss_point[q];
     Point x = f.g.nonmortar.point(seg, xi), n = f.look(seg, xi);
+    // The measure's weight (t, or 2 pi r: linear on the chord, so the rule stays exact for D)
+    const double weight = c.quadratic() ? gauss_weight[q] * (p.xi1 - p.xi0) * f.g.nonmortar.speed(seg, xi) * f.measure.weight(x)
+                                        : gauss_weight[q] * (p.xi1 - p.xi0) * c.length * f.measure.weight(lerp(c.pa, c.pb, xi));
+    const double t = p.shift + p.k + xi;
     double distance;
-    element.push_back({(t - t0) / (t1 - t0), weight, project_onto(f.g.mortar, p.mortar, x, n, distance)});
-    tributary[f.position(p.k)] += weight * (1 - xi);
-    tributary[f.position(p.k + 1)] += weight * xi;
+    QuadraturePoint point{(t - t0) / (t1 - t0), weight, project_onto(f.g.mortar, p.mortar, x, n, distance)};
+    point.segment1 = seg, point.xi1 = xi, point.gap = distance, point.normal = n;
+    element.push_back(point);
+    double shape[3], ds[3];
+    line_shapes(c.quadratic() ? 3 : 2, xi, shape, ds);
+    for (int a = 0; a < (c.quadratic() ? 3 : 2); ++a) tributary[positions[a]] += weight * shape[a];
   }
 }
 
@@ -245,7 +262,7 @@ std::vector<SurfaceSegment> oriented_surface(const Mesh &mesh, const int *edges,
     if (!edge)
       fail(MC_ERROR_CONTACT, "edges[%d..%d] = (%d, %d) is not an edge on the boundary of the mesh%s", 2 * e, 2 * e + 1,
            a + base, b + base, mesh.edge_hint(a, b, base, hint, 160));
-    surface.push_back({edge->from, edge->to});
+    surface.push_back({edge->from, edge->to, edge->mid});
     seen.push_back({std::min(a, b), std::max(a, b)});
   }
   std::sort(seen.begin(), seen.end());
@@ -263,17 +280,33 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
   g.mortar = SurfaceCurve(body2, surface2, surface_options);
   const SurfaceCurve &curve1 = g.nonmortar, &curve2 = g.mortar;
 
-  // Positions: the nodes of each face of body 1, with the face's nodal normals.
+  // Positions: the nodes of each face of body 1, with the face's nodal normals (on a quadratic
+  // face each node followed by its edge's middle, with the curve's normal there).
   std::vector<int> first_position;
+  g.quadratic_nonmortar = body1.quadratic();
+  const int stride = g.quadratic_nonmortar ? 2 : 1;
   for (const SurfaceFace &face : curve1.faces()) {
     first_position.push_back(int(g.nodes.size()));
-    for (size_t k = 0; k < face.nodes.size(); ++k) g.nodes.push_back(face.nodes[k]), g.normals.push_back(face.normals[k]);
+    for (size_t k = 0; k < face.nodes.size(); ++k) {
+      g.nodes.push_back(face.nodes[k]), g.normals.push_back(face.normals[k]);
+      if (stride == 2 && int(k) < face.edges()) {
+        const CurveSegment &c = curve1.segments()[face.segment_begin + int(k)];
+        g.nodes.push_back(c.mid), g.normals.push_back(c.nm);
+      }
+    }
+  }
+  g.segment_positions.resize(curve1.segments().size());
+  for (size_t seg = 0; seg < curve1.segments().size(); ++seg) {
+    const CurveSegment &c = curve1.segments()[seg];
+    const int m = int(curve1.faces()[c.face].nodes.size());
+    const int pa = first_position[c.face] + stride * c.k, pb = first_position[c.face] + stride * ((c.k + 1) % m);
+    g.segment_positions[seg] = {pa, pb, c.quadratic() ? pa + 1 : -1};
   }
   const size_t n = g.nodes.size();
   if (normal_choice == MC_NORMAL_MORTAR)
     for (size_t j = 0; j < n; ++j) {
       Point p = body1.node(g.nodes[j]);
-      if (!curve2.smooth()) {
+      if (!curve2.smooth() && !body2.quadratic()) {
         g.normals[j] = mortar_side_normal(p, g.normals[j], body2, surface2);
         continue;
       }
@@ -302,17 +335,18 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
   // The direction along which body 1 looks for body 2 between its nodes: its smooth curve's
   // normal, or else the interpolated nodal normals (faceted, or body 2's normals chosen: the
   // projection then follows the constraint's own directions).
-  std::vector<int> segment_position(curve1.segments().size());
-  for (size_t seg = 0; seg < curve1.segments().size(); ++seg) {
-    const CurveSegment &c = curve1.segments()[seg];
-    segment_position[seg] = first_position[c.face] + c.k;
-  }
+  // On a quadratic surface the positions' normals (its nodes' and its middles') interpolated by
+  // the edge's shape functions: continuous from edge to edge.
   LookDirection look = [&](int seg, double s) -> Point {
+    const std::array<int, 3> &pos = g.segment_positions[seg];
+    if (pos[2] >= 0) {
+      double shape[3], ds[3];
+      line_shapes(3, s, shape, ds);
+      return unit(plus(plus(scaled(g.normals[pos[0]], shape[0]), scaled(g.normals[pos[1]], shape[1])),
+                       scaled(g.normals[pos[2]], shape[2])));
+    }
     if (curve1.smooth() && normal_choice == MC_NORMAL_NONMORTAR) return curve1.look_direction(seg, s);
-    const CurveSegment &c = curve1.segments()[seg];
-    const int pa = segment_position[seg], pb = c.k + 1 < int(curve1.faces()[c.face].nodes.size())
-                                                   ? pa + 1 : first_position[c.face];
-    return unit(lerp(g.normals[pa], g.normals[pb], s));
+    return unit(lerp(g.normals[pos[0]], g.normals[pos[1]], s));
   };
 
   // Segmentation of each body-1 segment: breakpoints where body-2 nodes project, then each
@@ -329,6 +363,11 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
   for (int face = 0; face < int(curve1.faces().size()); ++face) {
     const SurfaceFace &sf = curve1.faces()[face];
     FaceContext context{g, face, sf.edges(), sf.closed, first_position[face], look, measure};
+    context.stride = stride;
+    // Quadratic traces (either side): 5 points, exact to degree 9 on straight pieces (the
+    // products of a linear multiplier, a quadratic trace and the weight 2 pi r are of degree 4);
+    // linear ones keep the 3 points (degree 5) that are exact for theirs.
+    context.points = body1.quadratic() || body2.quadratic() ? 5 : 3;
     std::vector<CoveredPiece> pieces;
     for (int k = 0; k < sf.edges(); ++k) {
       const int seg = curve1.segment_of(face, k);

@@ -14,6 +14,7 @@
 #include "contact_surface.hpp"
 #include "line_measure.hpp"
 #include "mesh.hpp"
+#include <array>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -45,6 +46,10 @@ struct TracePoint {
 struct QuadraturePoint {
   double s, weight;
   SurfacePoint mortar;
+  int segment1 = -1;  // body 1's curve segment and parameter there (its trace's shape functions)
+  double xi1 = 0;
+  double gap = 0;     // initial gap along the look direction (without the host's offsets)
+  Point normal{0, 0}; // that look direction
 };
 
 // A connected piece of Gamma_c: the paper's Gamma_c with trace nodes c1 = trace.front(),
@@ -58,6 +63,9 @@ struct ContactRun {
 struct ContactGeometry {
   // Contact positions: body 1's contact-surface nodes face after face; a node where the
   // surface is split at a corner is a position in each of its two faces, with that face's normal.
+  // On a quadratic surface the mid-edge nodes are positions too, each after its edge's first
+  // node (corner, middle, corner, middle, ... along the face); a middle's normal is its
+  // curve's.
   std::vector<int> nodes;
   std::vector<Point> normals;      // unit outward normals of body 1 at the positions
   std::vector<double> gap0;        // along the normal; +inf where body 2 is not seen
@@ -65,6 +73,9 @@ struct ContactGeometry {
   std::vector<double> tributary;   // integral of phi_j w over Gamma_c (the covered part; w: t or 2 pi r)
   std::vector<ContactRun> runs;
   SurfaceCurve nonmortar, mortar;  // the two surfaces as the contact constraint sees them
+  // The positions of each body-1 curve segment's first node, last node and middle (-1: linear).
+  std::vector<std::array<int, 3>> segment_positions;
+  bool quadratic_nonmortar = false;  // body 1's surface has quadratic edges
 };
 
 // Checks the edges (2 per edge, 0-based) are boundary edges of the mesh and returns them

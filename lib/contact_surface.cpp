@@ -1,4 +1,5 @@
 #include "contact_surface.hpp"
+#include "cell_shapes.hpp"
 #include "error.hpp"
 #include "plane_vectors.hpp"
 #include <algorithm>
@@ -13,9 +14,10 @@ constexpr double kPi = 3.14159265358979323846;
 // The direction of travel whose outward normal is n (the body on the left).
 Point tangent_of(Point n) { return {-n.y, n.x}; }
 
-// Chains of a surface: sequences of nodes following the edges' orientation.
+// Chains of a surface: sequences of nodes following the edges' orientation; mids[k] is the
+// mid-edge node of the edge from nodes[k] to the next (-1 on a linear surface).
 struct Chain {
-  std::vector<int> nodes;
+  std::vector<int> nodes, mids;
   bool closed = false;
 };
 
@@ -23,6 +25,13 @@ std::vector<Chain> chains_of(const std::vector<SurfaceSegment> &surface) {
   std::vector<std::pair<int, int>> next;  // (from, to), sorted by from
   for (auto &s : surface) next.push_back({s.a, s.b});
   std::sort(next.begin(), next.end());
+  std::vector<std::pair<int, int>> mid_after;  // (from, mid), sorted by from
+  for (auto &s : surface) mid_after.push_back({s.a, s.mid});
+  std::sort(mid_after.begin(), mid_after.end());
+  auto mid_of = [&](int node) {
+    auto it = std::lower_bound(mid_after.begin(), mid_after.end(), std::make_pair(node, -2));
+    return it != mid_after.end() && it->first == node ? it->second : -1;
+  };
   auto find = [&](int node) { return std::lower_bound(next.begin(), next.end(), std::make_pair(node, -1)); };
   auto successor = [&](int node) {
     auto it = find(node);
@@ -41,7 +50,7 @@ std::vector<Chain> chains_of(const std::vector<SurfaceSegment> &surface) {
     Chain c;
     for (int node = head; node >= 0; node = successor(node)) {
       c.nodes.push_back(node);
-      if (successor(node) >= 0) take(node);
+      if (successor(node) >= 0) take(node), c.mids.push_back(mid_of(node));
     }
     chains.push_back(c);
   }
@@ -53,6 +62,7 @@ std::vector<Chain> chains_of(const std::vector<SurfaceSegment> &surface) {
     int node = start;
     do {
       c.nodes.push_back(node);
+      c.mids.push_back(mid_of(node));
       take(node);
       node = successor(node);
     } while (node != start);
@@ -63,14 +73,41 @@ std::vector<Chain> chains_of(const std::vector<SurfaceSegment> &surface) {
 
 // Splits a chain into faces at corners (turns above the feature angle). A closed loop without
 // corners stays one closed face; one with corners is opened at a corner.
+// The tangent (direction of travel) of a quadratic edge p -> q with middle m at its start (s = 0)
+// or end (s = 1): x'(0) = 4m - 3p - q, x'(1) = 3q + p - 4m.
+Point quadratic_tangent(Point p, Point q, Point m, bool at_end) {
+  return at_end ? Point{3 * q.x + p.x - 4 * m.x, 3 * q.y + p.y - 4 * m.y}
+                : Point{4 * m.x - 3 * p.x - q.x, 4 * m.y - 3 * p.y - q.y};
+}
+
+// The unit outward normal of a (possibly quadratic) chain edge k at its start or end.
+Point chain_edge_normal(const Mesh &mesh, const std::vector<int> &nodes, const std::vector<int> &mids, int k,
+                        bool at_end) {
+  const int m = int(nodes.size());
+  const Point p = mesh.node(nodes[k % m]), q = mesh.node(nodes[(k + 1) % m]);
+  if (mids.empty() || mids[k] < 0) return edge_normal(p, q);
+  const Point t = quadratic_tangent(p, q, mesh.node(mids[k]), at_end);
+  return unit({t.y, -t.x});
+}
+
 std::vector<SurfaceFace> faces_of(const Mesh &mesh, const Chain &chain, bool split, double feature_angle) {
   const int m = int(chain.nodes.size());
+  const bool quadratic = !chain.mids.empty() && chain.mids[0] >= 0;
   auto at = [&](int k) { return mesh.node(chain.nodes[((k % m) + m) % m]); };
+  auto wrap = [&](int k) { return ((k % m) + m) % m; };
   std::vector<char> corner(m, 0);
   if (split)
     for (int k = 0; k < m; ++k) {
       if (!chain.closed && (k == 0 || k == m - 1)) continue;
-      corner[k] = std::fabs(turn_angle(at(k - 1), at(k), at(k + 1))) > feature_angle;
+      double turn;
+      if (quadratic) {  // the turn of the curve itself: between the two edges' tangents at the node
+        const Point n_in = chain_edge_normal(mesh, chain.nodes, chain.mids, wrap(k - 1), true);
+        const Point n_out = chain_edge_normal(mesh, chain.nodes, chain.mids, k, false);
+        turn = std::atan2(cross(n_in, n_out), dot(n_in, n_out));
+      } else {
+        turn = turn_angle(at(k - 1), at(k), at(k + 1));
+      }
+      corner[k] = std::fabs(turn) > feature_angle;
     }
   std::vector<SurfaceFace> faces;
   int first_corner = -1;
@@ -79,6 +116,7 @@ std::vector<SurfaceFace> faces_of(const Mesh &mesh, const Chain &chain, bool spl
   if (chain.closed && first_corner < 0) {
     SurfaceFace face;
     face.nodes = chain.nodes;
+    face.mids = chain.mids;
     face.closed = true;
     faces.push_back(face);
     return faces;
@@ -90,6 +128,7 @@ std::vector<SurfaceFace> faces_of(const Mesh &mesh, const Chain &chain, bool spl
   face.corner_at_start = corner[start];
   for (int step = 1; step <= steps; ++step) {
     const int k = (start + step) % m;
+    face.mids.push_back(chain.mids[wrap(k - 1)]);
     face.nodes.push_back(chain.nodes[k]);
     if (corner[k] || step == steps) {
       face.corner_at_end = corner[k];
@@ -122,6 +161,19 @@ void face_normals(const Mesh &mesh, SurfaceFace &face, bool smooth) {
   const int m = int(face.nodes.size());
   auto p = [&](int k) { return mesh.node(face.nodes[((k % m) + m) % m]); };
   face.normals.assign(m, Point{0, 0});
+  if (!face.mids.empty() && face.mids[0] >= 0) {
+    // Quadratic edges: the mean of the two edges' own normals at the node; a face's end, the
+    // end edge's own normal there (its curve goes on as it went).
+    const int edges = face.edges();
+    for (int k = 0; k < m; ++k) {
+      const bool has_prev = face.closed || k > 0, has_next = face.closed || k + 1 < m;
+      Point n{0, 0};
+      if (has_prev) n = plus(n, chain_edge_normal(mesh, face.nodes, face.mids, (k + edges - 1) % edges, true));
+      if (has_next) n = plus(n, chain_edge_normal(mesh, face.nodes, face.mids, k % edges, false));
+      face.normals[k] = unit(n);
+    }
+    return;
+  }
   for (int k = 0; k < m; ++k) {
     const bool has_prev = face.closed || k > 0, has_next = face.closed || k + 1 < m;
     if (has_prev && has_next) {
@@ -172,10 +224,17 @@ SurfaceCurve::SurfaceCurve(const Mesh &mesh, const std::vector<SurfaceSegment> &
         c.length = norm(minus(c.pb, c.pa));
         c.edge_normal = edge_normal(c.pa, c.pb);
         c.ta = scaled(tangent_of(c.na), c.length), c.tb = scaled(tangent_of(c.nb), c.length);
+        if (!face.mids.empty() && face.mids[k] >= 0) {
+          c.mid = face.mids[k], c.pm = mesh.node(c.mid);
+          c.ta = quadratic_tangent(c.pa, c.pb, c.pm, false), c.tb = quadratic_tangent(c.pa, c.pb, c.pm, true);
+          const Point t = plus(c.ta, c.tb);  // x'(1/2): x' is linear in s
+          c.nm = unit({t.y, -t.x});
+        }
         // The curve lies in the convex hull of its Bezier points (the chord if faceted).
-        const Point hull[4] = {c.pa, c.pb, plus(c.pa, scaled(c.ta, 1.0 / 3)), minus(c.pb, scaled(c.tb, 1.0 / 3))};
+        Point hull[4];
+        const int count = c.bezier(hull, smooth_);
         c.box_lo = c.box_hi = c.pa;
-        for (int h = 1; h < (smooth_ ? 4 : 2); ++h) {
+        for (int h = 1; h < count; ++h) {
           c.box_lo = {std::min(c.box_lo.x, hull[h].x), std::min(c.box_lo.y, hull[h].y)};
           c.box_hi = {std::max(c.box_hi.x, hull[h].x), std::max(c.box_hi.y, hull[h].y)};
         }
@@ -254,6 +313,21 @@ template <class Visit, class GoOn> void SurfaceCurve::visit_near(Point p, Visit 
   }
 }
 
+int CurveSegment::bezier(Point control[4], bool smooth) const {
+  control[0] = pa;
+  if (quadratic()) {  // a parabola's middle control point: 2 x(1/2) - (pa + pb) / 2
+    control[1] = {2 * pm.x - 0.5 * (pa.x + pb.x), 2 * pm.y - 0.5 * (pa.y + pb.y)};
+    control[2] = pb;
+    return 3;
+  }
+  if (!smooth) {
+    control[1] = pb;
+    return 2;
+  }
+  control[1] = plus(pa, scaled(ta, 1.0 / 3)), control[2] = minus(pb, scaled(tb, 1.0 / 3)), control[3] = pb;
+  return 4;
+}
+
 int SurfaceCurve::segment_of(int face, int k) const {
   const SurfaceFace &f = faces_[face];
   const int e = f.edges();
@@ -262,6 +336,11 @@ int SurfaceCurve::segment_of(int face, int k) const {
 
 Point SurfaceCurve::point(int seg, double s) const {
   const CurveSegment &c = segments_[seg];
+  if (c.quadratic()) {
+    double n[3], ds[3];
+    line_shapes(3, s, n, ds);
+    return {n[0] * c.pa.x + n[1] * c.pb.x + n[2] * c.pm.x, n[0] * c.pa.y + n[1] * c.pb.y + n[2] * c.pm.y};
+  }
   if (!smooth_) return plus(c.pa, scaled(minus(c.pb, c.pa), s));
   double h[4];
   hermite(s, h);
@@ -271,6 +350,11 @@ Point SurfaceCurve::point(int seg, double s) const {
 
 Point SurfaceCurve::derivative(int seg, double s) const {
   const CurveSegment &c = segments_[seg];
+  if (c.quadratic()) {
+    double n[3], ds[3];
+    line_shapes(3, s, n, ds);
+    return {ds[0] * c.pa.x + ds[1] * c.pb.x + ds[2] * c.pm.x, ds[0] * c.pa.y + ds[1] * c.pb.y + ds[2] * c.pm.y};
+  }
   if (!smooth_) return minus(c.pb, c.pa);
   double h[4];
   hermite_derivative(s, h);
@@ -279,14 +363,19 @@ Point SurfaceCurve::derivative(int seg, double s) const {
 }
 
 Point SurfaceCurve::surface_normal(int seg, double s) const {
-  if (!smooth_) return segments_[seg].edge_normal;
+  if (!smooth_ && !segments_[seg].quadratic()) return segments_[seg].edge_normal;
   Point d = derivative(seg, s);
   return unit({d.y, -d.x});
 }
 
 Point SurfaceCurve::look_direction(int seg, double s) const {
-  if (smooth_) return surface_normal(seg, s);
   const CurveSegment &c = segments_[seg];
+  if (c.quadratic()) {
+    double n[3], ds[3];
+    line_shapes(3, s, n, ds);
+    return unit(plus(plus(scaled(c.na, n[0]), scaled(c.nb, n[1])), scaled(c.nm, n[2])));
+  }
+  if (smooth_) return surface_normal(seg, s);
   return unit(plus(scaled(c.na, 1 - s), scaled(c.nb, s)));
 }
 
@@ -297,12 +386,14 @@ bool SurfaceCurve::intersect_line(int seg, Point p, Point n, double slack, doubl
   // f(s) = cross(point(s) - p, n): zero where the curve crosses the line.
   auto f = [&](double x) { return cross(minus(point(seg, x), p), n); };
   const double tolerance = 1e-14 * (c.length + norm(minus(c.pa, p)));
-  if (smooth_) {
+  const bool curved = smooth_ || c.quadratic();
+  if (curved) {
     // The curve lies in the convex hull of its Bezier points: skip it if they are all on one side.
-    Point bezier[4] = {c.pa, plus(c.pa, scaled(c.ta, 1.0 / 3)), minus(c.pb, scaled(c.tb, 1.0 / 3)), c.pb};
+    Point bezier[4];
+    const int count = c.bezier(bezier, smooth_);
     double lo = 1e300, hi = -1e300;
-    for (Point q : bezier) {
-      double v = cross(minus(q, p), n);
+    for (int h = 0; h < count; ++h) {
+      double v = cross(minus(bezier[h], p), n);
       lo = std::min(lo, v), hi = std::max(hi, v);
     }
     const double reach = slack * 2 * (c.length + norm(c.ta) + norm(c.tb));
@@ -312,7 +403,7 @@ bool SurfaceCurve::intersect_line(int seg, Point p, Point n, double slack, doubl
   if (std::fabs(fa) <= tolerance) fa = 0;
   if (std::fabs(fb) <= tolerance) fb = 0;
   if ((fa > 0 && fb > 0) || (fa < 0 && fb < 0)) return false;
-  if (!smooth_) {
+  if (!curved) {
     s = fa == fb ? 0.5 : a + (b - a) * fa / (fa - fb);  // f is linear in s
   } else {
     // Safeguarded Newton inside the bracket [a, b] (the curve turns little on one segment).
@@ -389,7 +480,7 @@ bool SurfaceCurve::closest_point(Point p, Point facing, int &seg, double &s) con
     const CurveSegment &c = segments_[k];
     Point e = minus(c.pb, c.pa);
     double x = std::clamp(dot(minus(p, c.pa), e) / dot(e, e), 0.0, 1.0);
-    if (smooth_)  // Newton on (point(x) - p) . point'(x) = 0, kept in [0, 1]
+    if (smooth_ || c.quadratic())  // Newton on (point(x) - p) . point'(x) = 0, kept in [0, 1]
       for (int it = 0; it < 20; ++it) {
         Point r = minus(point(k, x), p), d = derivative(k, x);
         double g = dot(r, d), slope = dot(d, d);

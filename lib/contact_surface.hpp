@@ -9,8 +9,15 @@
 //   faceted : the straight edges; nodal normals the mean of the adjacent edges' unit normals
 //             (version 0.1's geometry), never split at corners.
 //
-// A segment's parameter s in [0,1] is also the coordinate of the linear finite element trace
-// on that edge: the displacement at curve point (seg, s) is (1-s) u_a + s u_b.
+//   quadratic: a body of quadratic cells (T6, Q8, Q9): each edge is the body's own isoparametric
+//             3-node edge (a parabola through its ends and its mid-edge node), in both modes: it is
+//             the surface the body has, and is smooth between nodes. Nodal normals are the mean
+//             of the two edges' normals at the node (the curve turns there by O(h^2/R)); smooth
+//             mode splits chains at corners, faceted mode does not.
+//
+// A segment's parameter s in [0,1] is also the coordinate of the finite element trace on that
+// edge: the displacement at curve point (seg, s) is (1-s) u_a + s u_b, or on a quadratic edge
+// N_a(s) u_a + N_b(s) u_b + N_m(s) u_m (cell_shapes.hpp, line_shapes).
 #pragma once
 #include "mesh.hpp"
 #include <vector>
@@ -20,6 +27,7 @@ namespace mc {
 // A boundary edge, oriented like its cell (body on the left).
 struct SurfaceSegment {
   int a, b;
+  int mid = -1;  // the mid-edge node of a quadratic edge
 };
 
 struct SurfaceOptions {
@@ -31,7 +39,8 @@ struct SurfaceOptions {
 // a whole loop without corners. Face ends at a corner hold the corner node; a corner node
 // therefore belongs to two faces, with one normal in each.
 struct SurfaceFace {
-  std::vector<int> nodes;          // mesh node ids
+  std::vector<int> nodes;          // mesh node ids (corners of the cells)
+  std::vector<int> mids;           // mid-edge node of edge k (nodes k, k+1), -1 on a linear surface
   std::vector<Point> normals;      // unit outward normal at each node, in this face
   bool closed = false;
   bool corner_at_start = false, corner_at_end = false;  // ends where the chain was split
@@ -45,10 +54,15 @@ struct CurveSegment {
   int a, b;            // mesh node ids
   Point pa, pb;        // end points
   Point na, nb;        // unit nodal normals (in this face)
-  Point ta, tb;        // Hermite end tangents (smooth), scaled to the chord length
+  Point ta, tb;        // Hermite end tangents (smooth), scaled to the chord length; a quadratic edge's own
+  int mid = -1;        // quadratic edge: its mid-edge node, at pm, where its curve's normal is nm
+  Point pm{0, 0}, nm{0, 0};
   Point edge_normal;   // unit normal of the straight edge
   double length;       // chord length
   Point box_lo, box_hi;  // a box around the curve (its Bezier points' or the chord's)
+  bool quadratic() const { return mid >= 0; }
+  // The curve's Bezier control points (4 for a Hermite cubic, 3 for a parabola, 2 for a chord).
+  int bezier(Point control[4], bool smooth) const;
 };
 
 class SurfaceCurve {
@@ -66,7 +80,9 @@ public:
   // The outward normal of the surface at (seg, s): the curve's own (smooth) or the edge's.
   Point surface_normal(int seg, double s) const;
   // The direction along which a non-mortar surface looks for the other body: the curve normal
-  // (smooth) or the normalized linear interpolation of the nodal normals (faceted).
+  // (smooth) or the normalized linear interpolation of the nodal normals (faceted); on a
+  // quadratic edge the quadratic interpolation of the nodal normals and the curve's normal at
+  // its middle (continuous from edge to edge, where the curve's own normal jumps slightly).
   Point look_direction(int seg, double s) const;
   // Line element |d point / d s|.
   double speed(int seg, double s) const;

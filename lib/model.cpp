@@ -3,6 +3,7 @@
 #include "blas_threads.hpp"
 #include "error.hpp"
 #include "lapack.hpp"
+#include "plane_vectors.hpp"
 #include <algorithm>
 #include "stopwatch.hpp"
 #include <cmath>
@@ -289,17 +290,18 @@ void Model::build_structure(const std::function<void(int, BodyWork &)> &then) {
     for (int b = 0; b < 2; ++b) cs->b_start[b].push_back(0);
     for (int r = 0; r < rows.size(); ++r) {
       const Point n = rows.normal[r];
+      const bool vectors = !rows.vector1.empty();  // each entry with its own direction
       for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p) {
         const int node = cs->geometry.nodes[rows.position1[p]];
-        const double w = rows.weight1[p];
+        const Point v = vectors ? rows.vector1[p] : scaled(n, rows.weight1[p]);
         cs->b_dof[0].insert(cs->b_dof[0].end(), {2 * node, 2 * node + 1});
-        cs->b_value[0].insert(cs->b_value[0].end(), {w * n.x, w * n.y});
+        cs->b_value[0].insert(cs->b_value[0].end(), {v.x, v.y});
       }
       for (int p = rows.start2[r]; p < rows.start2[r + 1]; ++p) {
         const int l = rows.body2_node[p];
-        const double w = rows.weight2[p];
+        const Point v = vectors ? rows.vector2[p] : scaled(n, rows.weight2[p]);
         cs->b_dof[1].insert(cs->b_dof[1].end(), {2 * l, 2 * l + 1});
-        cs->b_value[1].insert(cs->b_value[1].end(), {-w * n.x, -w * n.y});
+        cs->b_value[1].insert(cs->b_value[1].end(), {-v.x, -v.y});
       }
       for (int b = 0; b < 2; ++b) cs->b_start[b].push_back(int(cs->b_dof[b].size()));
     }
@@ -307,6 +309,7 @@ void Model::build_structure(const std::function<void(int, BodyWork &)> &then) {
     // mortar row has some 60 of them).
     std::vector<int>().swap(cs->rows.body2_node);
     std::vector<double>().swap(cs->rows.weight2);
+    std::vector<Point>().swap(cs->rows.vector2);
     progress(MC_LOG_PHASE, "contact geometry and mortar operators: %zu body-1 contact nodes, %d constraint rows, %.3g s",
              cs->geometry.nodes.size(), cs->rows.size(), now() - t_geometry);
     contact_ = std::move(cs);
@@ -361,6 +364,19 @@ double Model::row_gap(int r) const {
     for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
       gap -= contact_->b_value[b][p] * body[b].u[contact_->b_dof[b][p]];
   return gap;
+}
+
+// The gap at contact position pos itself, g0 - (u1 - u2(y)) . n with y its projection on body 2.
+double Model::pointwise_gap(size_t pos) const {
+  const ContactGeometry &g = contact_->geometry;
+  const CurveSegment &c = g.mortar.segments()[g.projection[pos].segment];
+  double shape[3], ds[3];
+  line_shapes(c.quadratic() ? 3 : 2, g.projection[pos].eta, shape, ds);
+  const int node2[3] = {c.a, c.b, c.mid}, node1 = g.nodes[pos];
+  double ux = body[0].u[2 * size_t(node1)], uy = body[0].u[2 * size_t(node1) + 1];
+  for (int a = 0; a < (c.quadratic() ? 3 : 2); ++a)
+    ux -= shape[a] * body[1].u[2 * size_t(node2[a])], uy -= shape[a] * body[1].u[2 * size_t(node2[a]) + 1];
+  return initial_gap(pos) - (ux * g.normals[pos].x + uy * g.normals[pos].y);
 }
 
 // u += R alpha for body b (its rigid modes' share of alpha; nothing for a held body).
@@ -581,6 +597,9 @@ void Model::solve() {
       if (rows.own_position[r] >= 0) contact_gap[rows.own_position[r]] = gap;
       for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p) contact_force[rows.position1[p]] += rows.weight1[p] * lambda[r];
     }
+    if (g.quadratic_nonmortar)  // the middles and the ends own no row: their gaps pointwise
+      for (size_t pos = 0; pos < n; ++pos)
+        if (contact_gap[pos] == kNoGap && g.projection[pos].segment >= 0) contact_gap[pos] = pointwise_gap(pos);
     for (size_t pos = 0; pos < n; ++pos)
       // The tributary measure includes the thickness (or 2 pi r): a position whose contact edges
       // all lie on the axis stands for no area; its force is reported, its pressure as 0.

@@ -163,6 +163,7 @@ public:
   // g0 of constraint row r with the host's offsets.
   double row_initial_gap(int r) const;
   double row_gap(int r) const;
+  double pointwise_gap(size_t pos) const;
   void add_rigid_motion(int b, const std::vector<double> &alpha, std::vector<double> &u) const;
   double recovered_gap_residual(const std::vector<double> &lambda) const;
   bool refine_solution(DualQp &qp, LoadSolve loads[2], std::vector<double> &lambda, std::vector<double> &alpha);

@@ -1,4 +1,6 @@
 #include "mortar_operators.hpp"
+#include "cell_shapes.hpp"
+#include "plane_vectors.hpp"
 #include "error.hpp"
 #include <algorithm>
 #include <cmath>
@@ -19,12 +21,56 @@ void test_functions(int method, double s, const double c[4], double psi[2]) {
   else psi[0] = phi0, psi[1] = phi1;
 }
 
+// The body-2 trace at a surface point: its nodes (2, or 3 on a quadratic edge: ends, middle) and
+// their shape functions there. Returns the count.
+int mortar_trace(const ContactGeometry &g, SurfacePoint at, int node[3], double shape[3]) {
+  const CurveSegment &s = g.mortar.segments()[at.segment];
+  double ds[3];
+  const int count = s.quadratic() ? 3 : 2;
+  line_shapes(count, at.eta, shape, ds);
+  node[0] = s.a, node[1] = s.b, node[2] = s.mid;
+  return count;
+}
+
 // Interpolation weights of u2 at a body-2 surface point.
 void add_interpolation(const ContactGeometry &g, SurfacePoint at, std::map<int, double> &row) {
-  const CurveSegment &s = g.mortar.segments()[at.segment];
-  row[s.a] += 1 - at.eta;
-  row[s.b] += at.eta;
+  int node[3];
+  double shape[3];
+  const int count = mortar_trace(g, at, node, shape);
+  for (int a = 0; a < count; ++a) row[node[a]] += shape[a];
 }
+
+// The paper's multiplier space M_h^1 on a run (section 3): the hats of the run's trace points,
+// merged at an open run's two ends (constant on the end elements: psi_1 = phi_0 + phi_1,
+// psi_{n-2} = phi_{n-2} + phi_{n-1}); a closed run keeps all its hats. When an end element is only
+// a fraction theta of its body-1 segment (Gamma_c ends inside it), the neighbouring node's hat
+// on the next element is shared between the end multiplier (w = theta^2) and the next one
+// (1 - w): at theta = 1 this is the paper's space, and as theta -> 0 it becomes the paper's
+// space of the run that ends at that node, with the vanishing element's multiplier (whose
+// integrals are O(theta), the shared part O(theta^2)) pinning the constraint to the end value
+// there. So the cone changes continuously as body 2's end crosses a body-1 node. (The dual basis
+// needs no sharing: its end rows already converge.)
+struct MultiplierSpace {
+  int n;
+  bool closed, share;
+  double theta_start = 1, theta_end = 1;
+
+  MultiplierSpace(const ContactRun &run, bool share_ends) : n(int(run.trace.size())), closed(run.closed) {
+    auto share_of = [](double theta) { return theta * theta; };
+    theta_start = share_of(run.trace.front().is_position() ? 1 : 1 - run.trace.front().xi);
+    theta_end = share_of(run.trace.back().is_position() ? 1 : run.trace.back().xi);
+    share = !closed && n >= 4 && share_ends;
+  }
+  // The multipliers that trace point k's hat on element e feeds, with their shares of `value`.
+  template <class Add> void feed(int e, int k, double value, Add &&add) const {
+    if (closed) return add(k % n, value);
+    if (k == 0) return add(1, value);
+    if (k == n - 1) return add(n - 2, value);
+    if (share && k == 1 && e == 1) return add(1, theta_start * value), add(2, (1 - theta_start) * value);
+    if (share && k == n - 2 && e == n - 3) return add(n - 2, theta_end * value), add(n - 3, (1 - theta_end) * value);
+    add(k, value);
+  }
+};
 
 // A row: body 1 at trace point t; body 2 with weights w over nodes (both n long, nodes
 // ascending). Weights below 1e-17 of the row's largest are left out: D^-1 decays geometrically
@@ -177,26 +223,7 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, co
       for (auto &[node, value] : w) end_row[e].emplace_back(node, value);
     }
   // The multipliers (rows of D and M) that trace point k's test function on element e feeds.
-  // Closed loop: its own. Open run, the paper's M_h^1: psi_0 merges into psi_1 and psi_last
-  // into its neighbour (constant on the two end elements). When an end element is only a
-  // fraction theta of its body-1 segment (Gamma_c ends inside it), the neighbouring node's hat
-  // on the next element is shared between the end multiplier (w = theta^2) and the next one
-  // (1 - w): at theta = 1 this is the paper's space, and as theta -> 0 it becomes the paper's
-  // space of the run that ends at that node, with the vanishing element's multiplier (whose
-  // integrals are O(theta), the shared part O(theta^2)) pinning pi_h to the end value there. So the cone changes continuously as body 2's end
-  // crosses a body-1 node. (The dual basis needs no sharing: its end rows already converge.)
-  auto share_of = [](double theta) { return theta * theta; };
-  const double theta_start = share_of(run.trace.front().is_position() ? 1 : 1 - run.trace.front().xi);
-  const double theta_end = share_of(run.trace.back().is_position() ? 1 : run.trace.back().xi);
-  const bool share = !closed && n >= 4 && method == MC_METHOD_MORTAR;
-  auto feed = [&](int e, int k, double value, const std::function<void(int, double)> &add) {
-    if (closed) return add(k % n, value);
-    if (k == 0) return add(1, value);
-    if (k == n - 1) return add(n - 2, value);
-    if (share && k == 1 && e == 1) return add(1, theta_start * value), add(2, (1 - theta_start) * value);
-    if (share && k == n - 2 && e == n - 3) return add(n - 2, theta_end * value), add(n - 3, (1 - theta_end) * value);
-    add(k, value);
-  };
+  const MultiplierSpace space(run, method == MC_METHOD_MORTAR);
   // D (band: trace points i-1, i, i+1 of row i, cyclic on a loop) and M (sparse: row i over the
   // body-2 nodes that its multiplier's support faces).
   std::vector<double> lower(n, 0.0), diag(n, 0.0), upper(n, 0.0);
@@ -208,17 +235,17 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, co
       double psi[2];
       test_functions(method, q.s, c, psi);
       const double phi[2] = {1 - q.s, q.s};
-      const CurveSegment &s = g.mortar.segments()[q.mortar.segment];
-      const double phi2[2] = {1 - q.mortar.eta, q.mortar.eta};
-      const int node2[2] = {s.a, s.b};
+      double phi2[3];
+      int node2[3];
+      const int count2 = mortar_trace(g, q.mortar, node2, phi2);
       for (int t = 0; t < 2; ++t)
-        feed(e, e + t, q.weight * psi[t], [&](int i, double w) {
+        space.feed(e, e + t, q.weight * psi[t], [&](int i, double w) {
           for (int j = 0; j < 2; ++j) {
             const int trace = closed ? (e + j) % n : e + j;
             const int offset = closed ? ((trace - i) % n + n + 1) % n - 1 : trace - i;  // -1, 0 or +1
             (offset == 0 ? diag : offset > 0 ? upper : lower)[i] += w * phi[j];
-            mm[i].emplace_back(node2[j], w * phi2[j]);
           }
+          for (int j = 0; j < count2; ++j) mm[i].emplace_back(node2[j], w * phi2[j]);
         });
     }
   }
@@ -275,6 +302,92 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, co
   rows.aux_count += last - first + 1;
 }
 
+// Rows of one run when body 1's trace is quadratic (T6, Q8, Q9): the multipliers stay the
+// paper's M_h^1, continuous piecewise linear on the trace points (Gamma_c's vertex nodes) with
+// the end modification, but the constraint is the weak one, for each multiplier psi_i
+//     integral over Gamma_c of psi_i ((u1 - u2) . n_i - g0) <= 0,
+// since a quadratic W_h^1 has more nodes than M_h^1 has functions and pi_h of (3.2) is not
+// defined on it. A nonnegative P1 multiplier is a nonnegative combination of the psi_i, so these
+// rows are the exact cone of the mixed P2/P1 method (Hild & Laborde 2002; GetFEM's P2/P1), and
+// its KKT forces int lambda phi_k reach every node of body 1's trace, the mid-edge nodes
+// included: a uniform pressure loads an edge 1/6, 2/3, 1/6, which is what the patch test needs.
+// Each row is divided by int psi_i (its body-1 weights then sum to 1, the row's gap is a length
+// and lambda_i a force, as in the paper's rows). The gap is measured along the look direction n(x)
+// of each quadrature point, the displacements' too: (u1(x) - u2(y(x))) . n(x). One normal per row
+// (the multiplier node's) would project the middle nodes' displacements on a direction off theirs
+// by half an edge's turn, an O(h^2) error in the interference of a shrink fit (measured: 0.64 %
+// in Lame's pressure with 32 Q8 cells around, 0.16 % with 64); n_i, the multiplier node's normal,
+// is the direction its force is reported along.
+// A run of one or two elements has one multiplier, constant along it.
+void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, ConstraintRows &rows) {
+  const int n = int(run.trace.size());
+  const bool closed = run.closed, single = !closed && n <= 3;
+  const MultiplierSpace space(run, true);
+  const int first = closed ? 0 : single ? 0 : 1, last = closed ? n - 1 : single ? 0 : n - 2;
+  const int count = last - first + 1;
+  // Entries (node or position, scalar weight, vector weight); merged per row below.
+  struct Entry {
+    int id;
+    double w;
+    Point v;
+    bool operator<(const Entry &o) const { return id < o.id; }
+  };
+  auto merged = [](std::vector<Entry> &row) {
+    std::sort(row.begin(), row.end());
+    size_t kept = 0;
+    for (size_t i = 0; i < row.size(); ++i) {
+      if (kept > 0 && row[kept - 1].id == row[i].id) row[kept - 1].w += row[i].w, row[kept - 1].v = plus(row[kept - 1].v, row[i].v);
+      else row[kept++] = row[i];
+    }
+    row.resize(kept);
+  };
+  std::vector<std::vector<Entry>> body1(count), body2(count);
+  std::vector<double> gap(count, 0.0), total(count, 0.0);
+  for (int e = 0; e < int(run.elements.size()); ++e)
+    for (const QuadraturePoint &q : run.elements[e]) {
+      const std::array<int, 3> &pos = g.segment_positions[q.segment1];
+      const int count1 = pos[2] >= 0 ? 3 : 2;
+      double phi1[3], ds[3], phi2[3];
+      line_shapes(count1, q.xi1, phi1, ds);
+      int node2[3];
+      const int count2 = mortar_trace(g, q.mortar, node2, phi2);
+      const double hat[2] = {1 - q.s, q.s};
+      auto add = [&](int i, double w) {
+        const int r = single ? 0 : i - first;
+        for (int a = 0; a < count1; ++a) body1[r].push_back({pos[a], w * phi1[a], scaled(q.normal, w * phi1[a])});
+        for (int a = 0; a < count2; ++a) body2[r].push_back({node2[a], w * phi2[a], scaled(q.normal, w * phi2[a])});
+        gap[r] += w * q.gap, total[r] += w;
+      };
+      for (int t = 0; t < 2; ++t) {
+        if (single) add(0, q.weight * hat[t]);
+        else space.feed(e, e + t, q.weight * hat[t], add);
+      }
+    }
+  for (int r = 0; r < count; ++r) {
+    // The row's trace point: its multiplier's node (the middle one of a single multiplier on
+    // two elements; none on one element).
+    const int k = single ? (n == 3 ? 1 : -1) : first + r;
+    if (!(total[r] > 0))
+      fail(MC_ERROR_CONTACT,
+           "the contact constraint at body-1 contact node %d has no measure: body 2's surface covers too little of "
+           "the body-1 edges around it",
+           g.nodes[run.trace[k >= 0 ? k : 0].a]);
+    merged(body1[r]), merged(body2[r]);
+    const double scale = 1 / total[r];
+    for (const Entry &e : body1[r])
+      rows.position1.push_back(e.id), rows.weight1.push_back(e.w * scale), rows.vector1.push_back(scaled(e.v, scale));
+    rows.start1.push_back(int(rows.position1.size()));
+    for (const Entry &e : body2[r])
+      if (e.w != 0 || e.v.x != 0 || e.v.y != 0)
+        rows.body2_node.push_back(e.id), rows.weight2.push_back(e.w * scale), rows.vector2.push_back(scaled(e.v, scale));
+    rows.start2.push_back(int(rows.body2_node.size()));
+    rows.normal.push_back(k >= 0 ? run.trace[k].normal : unit(plus(run.trace.front().normal, run.trace.back().normal)));
+    rows.gap0.push_back(gap[r] / total[r]);
+    rows.own_position.push_back(k >= 0 && run.trace[k].is_position() ? run.trace[k].a : -1);
+    rows.aux.push_back(-1);
+  }
+}
+
 }  // namespace
 
 ConstraintRows build_constraint_rows(const ContactGeometry &g, int method, const LineMeasure &measure) {
@@ -289,7 +402,16 @@ ConstraintRows build_constraint_rows(const ContactGeometry &g, int method, const
       }
     return rows;
   }
+  if (g.quadratic_nonmortar && method == MC_METHOD_DUAL_MORTAR)
+    fail(MC_ERROR_ARGUMENT,
+         "MC_OPTION_METHOD = MC_METHOD_DUAL_MORTAR: body 1 (the non-mortar side) has quadratic cells, and the "
+         "dual basis is defined for linear traces only: use MC_METHOD_MORTAR or MC_METHOD_NODE_TO_SEGMENT, or make "
+         "a body of linear cells body 1");
   for (const ContactRun &run : g.runs) {
+    if (g.quadratic_nonmortar) {
+      weak_mortar_rows(g, run, rows);
+      continue;
+    }
     // Runs of one element carry no multiplier: only the end conditions of (3.2) remain.
     if (!run.closed && run.trace.size() <= 2) {
       for (const TracePoint &t : run.trace) append_pointwise_row(g, rows, t);

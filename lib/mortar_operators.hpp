@@ -23,6 +23,11 @@ struct ConstraintRows {
   std::vector<int> start2{0}, body2_node;
   std::vector<double> weight2;
   std::vector<Point> normal;
+  // Rows whose direction varies along the row (the weak rows of a quadratic body 1, where each
+  // quadrature point measures the gap along its own normal): the vector weight of each body-1
+  // and body-2 entry, parallel to weight1 and weight2 (row r reads sum_k vector1 . u1 -
+  // sum_l vector2 . u2 <= g0). Empty: every entry's direction is its row's normal.
+  std::vector<Point> vector1, vector2;
   std::vector<double> gap0;
   // The position whose nodal row this is (its gap is reported there); -1 for a row at an end
   // of Gamma_c inside a partly covered segment.

@@ -24,6 +24,93 @@ double sc_reldiff(double a, double b, double floor) {
   return fabs(a - b) / s;
 }
 
+int sc_mesh_cells(sc_mesh *mesh, int npc, int nx, int ny, double x0, double y0, double lx, double ly, int criss_cross) {
+  const int order = npc > 4 ? 2 : 1, quad = npc == 4 || npc == 8 || npc == 9;
+  const int nI = order * nx + 1, nJ = order * ny + 1;
+  int i, j, s, k;
+  memset(mesh, 0, sizeof *mesh);
+  if ((npc != 3 && npc != 4 && npc != 6 && npc != 8 && npc != 9) || nx < 1 || ny < 1 || !(lx > 0) || !(ly > 0)) return 1;
+  mesh->nx = nx, mesh->ny = ny, mesh->npc = npc;
+  mesh->n_cells = (mc_int)(quad ? nx * ny : 2 * nx * ny);
+  mesh->cells = malloc(sizeof(mc_int) * (size_t)npc * (size_t)mesh->n_cells);
+  mesh->lattice = malloc(sizeof(mc_int) * (size_t)nI * (size_t)nJ);
+  /* cells in lattice indices first, then the used points numbered */
+  {
+    mc_int *c = mesh->cells;
+#define L(I, J) ((mc_int)((J) * nI + (I)))
+    for (j = 0; j < ny; ++j)
+      for (i = 0; i < nx; ++i) {
+        const int I = order * i, J = order * j, o = order;
+        const mc_int a = L(I, J), b = L(I + o, J), cc = L(I + o, J + o), d = L(I, J + o);
+        if (quad) {
+          c[0] = a, c[1] = b, c[2] = cc, c[3] = d;
+          if (order == 2) {
+            c[4] = L(I + 1, J), c[5] = L(I + 2, J + 1), c[6] = L(I + 1, J + 2), c[7] = L(I, J + 1);
+            if (npc == 9) c[8] = L(I + 1, J + 1);
+          }
+          c += npc;
+        } else if (!criss_cross || (i + j) % 2 == 0) { /* diagonal a-cc: (a, b, cc) and (a, cc, d) */
+          c[0] = a, c[1] = b, c[2] = cc;
+          if (order == 2) c[3] = L(I + 1, J), c[4] = L(I + 2, J + 1), c[5] = L(I + 1, J + 1);
+          c += npc;
+          c[0] = a, c[1] = cc, c[2] = d;
+          if (order == 2) c[3] = L(I + 1, J + 1), c[4] = L(I + 1, J + 2), c[5] = L(I, J + 1);
+          c += npc;
+        } else { /* diagonal b-d: (a, b, d) and (b, cc, d) */
+          c[0] = a, c[1] = b, c[2] = d;
+          if (order == 2) c[3] = L(I + 1, J), c[4] = L(I + 1, J + 1), c[5] = L(I, J + 1);
+          c += npc;
+          c[0] = b, c[1] = cc, c[2] = d;
+          if (order == 2) c[3] = L(I + 2, J + 1), c[4] = L(I + 1, J + 2), c[5] = L(I + 1, J + 1);
+          c += npc;
+        }
+      }
+#undef L
+  }
+  for (k = 0; k < nI * nJ; ++k) mesh->lattice[k] = -1;
+  for (k = 0; k < mesh->n_cells * npc; ++k) mesh->lattice[mesh->cells[k]] = 0;
+  mesh->n_nodes = 0;
+  for (k = 0; k < nI * nJ; ++k)
+    if (mesh->lattice[k] == 0) mesh->lattice[k] = mesh->n_nodes++;
+  for (k = 0; k < mesh->n_cells * npc; ++k) mesh->cells[k] = mesh->lattice[mesh->cells[k]];
+  mesh->xy = malloc(sizeof(double) * 2 * (size_t)mesh->n_nodes);
+  mesh->on_boundary = calloc((size_t)mesh->n_nodes, 1);
+  for (j = 0; j < nJ; ++j)
+    for (i = 0; i < nI; ++i) {
+      const mc_int id = mesh->lattice[j * nI + i];
+      if (id < 0) continue;
+      mesh->xy[2 * id] = i == nI - 1 ? x0 + lx : x0 + i * lx / (nI - 1);
+      mesh->xy[2 * id + 1] = j == nJ - 1 ? y0 + ly : y0 + j * ly / (nJ - 1);
+      mesh->on_boundary[id] = i == 0 || j == 0 || i == nI - 1 || j == nJ - 1;
+    }
+  mesh->n_side_nodes[SC_BOTTOM] = mesh->n_side_nodes[SC_TOP] = nI;
+  mesh->n_side_nodes[SC_LEFT] = mesh->n_side_nodes[SC_RIGHT] = nJ;
+  for (s = 0; s < 4; ++s) {
+    const mc_int n = mesh->n_side_nodes[s], edges = (n - 1) / order;
+    mesh->side_nodes[s] = malloc(sizeof(mc_int) * (size_t)n);
+    mesh->n_side_edges[s] = edges;
+    mesh->side_edges[s] = malloc(sizeof(mc_int) * 2 * (size_t)edges);
+    for (k = 0; k < n; ++k) {
+      int I = 0, J = 0;
+      switch (s) {
+        case SC_BOTTOM: I = k, J = 0; break;
+        case SC_RIGHT: I = nI - 1, J = k; break;
+        case SC_TOP: I = nI - 1 - k, J = nJ - 1; break;
+        default: I = 0, J = nJ - 1 - k; break;
+      }
+      mesh->side_nodes[s][k] = mesh->lattice[J * nI + I];
+    }
+    for (k = 0; k < edges; ++k) {
+      mesh->side_edges[s][2 * k] = mesh->side_nodes[s][order * k];
+      mesh->side_edges[s][2 * k + 1] = mesh->side_nodes[s][order * (k + 1)];
+    }
+  }
+  mesh->boundary_nodes = malloc(sizeof(mc_int) * (size_t)mesh->n_nodes);
+  for (k = 0; k < mesh->n_nodes; ++k)
+    if (mesh->on_boundary[k]) mesh->boundary_nodes[mesh->n_boundary_nodes++] = (mc_int)k;
+  return 0;
+}
+
 mc_int sc_node(const sc_mesh *mesh, int i, int j) { return (mc_int)(j * (mesh->nx + 1) + i); }
 
 double sc_cell_area(const sc_mesh *mesh, mc_int c) {
@@ -138,6 +225,7 @@ void sc_mesh_free(sc_mesh *mesh) {
   free(mesh->cells);
   free(mesh->on_boundary);
   free(mesh->boundary_nodes);
+  free(mesh->lattice);
   for (s = 0; s < 4; ++s) {
     free(mesh->side_nodes[s]);
     free(mesh->side_edges[s]);

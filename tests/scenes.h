@@ -48,6 +48,7 @@ typedef struct sc_mesh {
   mc_int n_boundary_nodes;
   mc_int *boundary_nodes; /* every boundary node once, increasing ids */
   char *on_boundary;      /* per node: 1 if on the boundary */
+  mc_int *lattice;        /* sc_mesh_cells only: node id of lattice point (I, J), or -1 (see there) */
 } sc_mesh;
 
 /* Builds a structured mesh of the rectangle [x0, x0+lx] x [y0, y0+ly]. npc = 3 or 4.
@@ -57,6 +58,16 @@ typedef struct sc_mesh {
 int sc_mesh_rect(sc_mesh *mesh, int npc, int nx, int ny, double x0, double y0, double lx, double ly,
                  double distortion, unsigned seed);
 void sc_mesh_free(sc_mesh *mesh);
+/* Any cell kind: npc = 3 (P1), 4 (Q1), 6 (T6), 8 (Q8), 9 (Q9), nx x ny squares of the rectangle,
+   no distortion. Triangles: two per square, the diagonal from (i,j) to (i+1,j+1) as in
+   sc_mesh_rect, or with criss_cross alternating from square to square ((i + j) odd: from
+   (i+1,j) to (i,j+1)). Nodes: the lattice of corners (order 1) or of corners and mid-edge points
+   (order 2: (2nx+1) x (2ny+1) points, point (I, J) at (x0 + I lx/(2nx), y0 + J ly/(2ny))),
+   numbered row by row, skipping points no cell uses (a Q8 square's centre). mesh->lattice maps
+   lattice point (I, J) (index J * (order nx + 1) + I) to its node id or -1. Side node lists hold
+   every node of the side (mid-edge nodes included), side edges the corner pairs. sc_node is not
+   for these meshes. Returns 0 on success. */
+int sc_mesh_cells(sc_mesh *mesh, int npc, int nx, int ny, double x0, double y0, double lx, double ly, int criss_cross);
 /* Id of node (i, j). */
 mc_int sc_node(const sc_mesh *mesh, int i, int j);
 /* Applies map(x, y) to every node (e.g. to bend a side); side lists are unchanged. */
