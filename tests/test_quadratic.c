@@ -471,6 +471,55 @@ START_TEST(shrink_fit_curved_q8_rings_lame) {
 }
 END_TEST
 
+/* ---- axisymmetric shrink fit ------------------------------------------------------------------------ */
+
+/* test_axisymmetric's shrink fit with quadratic cells: a hub b <= r <= c shrunk on a solid shaft
+   r <= b, both 0 <= z <= L, free ends, interference delta by gap offsets on every node of the
+   shaft's surface (mid-edge nodes included); the plane-stress Lame field is the exact 3D solution,
+   a uniform pressure p = E delta (c^2 - b^2) / (2 b c^2). Coarse, non-matching: 8 x 12 shaft and
+   8 x 17 hub cells (test_axisymmetric uses 32 x 48 and 32 x 68 linear cells and 1 %). */
+START_TEST(axisymmetric_shrink_fit_quadratic_lame) {
+  const double b = 1, c = 2, length = 1, delta = 1e-3, young = 1, nu = 0.3;
+  const double lame = young * delta * (c * c - b * b) / (2 * b * c * c);
+  const int kinds[3] = {6, 8, 9};
+  for (int k = 0; k < 3; ++k)
+    for (int method = MC_METHOD_MORTAR; method <= MC_METHOD_NODE_TO_SEGMENT; method += 2) {
+      sc_mesh shaft, hub;
+      ck_assert_int_eq(sc_mesh_cells(&shaft, kinds[k], 8, 12, 0, 0, b, length, 0), 0);
+      ck_assert_int_eq(sc_mesh_cells(&hub, kinds[k], 8, 17, b, 0, c - b, length, 1), 0);
+      mc_model *m = NULL;
+      ck_assert_int_eq(mc_create(&m), MC_OK);
+      OK(mc_set_plane(m, MC_AXISYMMETRIC, 1));
+      OK(sc_set_mesh(m, 1, &shaft, 0));
+      OK(sc_set_mesh(m, 2, &hub, 0));
+      OK(mc_set_material(m, 1, young, nu));
+      OK(mc_set_material(m, 2, young, nu));
+      OK(sc_fix_side(m, 1, &shaft, SC_BOTTOM, MC_Y, 0));
+      OK(sc_fix_side(m, 2, &hub, SC_BOTTOM, MC_Y, 0));
+      OK(mc_set_contact(m, 1, shaft.n_side_edges[SC_RIGHT], shaft.side_edges[SC_RIGHT]));
+      OK(mc_set_contact(m, 2, hub.n_side_edges[SC_LEFT], hub.side_edges[SC_LEFT]));
+      const mc_int n = shaft.n_side_nodes[SC_RIGHT];
+      double *offset = malloc(sizeof(double) * (size_t)n);
+      for (mc_int j = 0; j < n; ++j) offset[j] = -delta;
+      OK(mc_set_gap_offset(m, n, shaft.side_nodes[SC_RIGHT], offset));
+      OK(mc_set_option_int(m, MC_OPTION_METHOD, method));
+      SUCCEEDS(mc_solve(m));
+      contact_data cd = contact_get(m);
+      ck_assert_int_eq(cd.n, n);
+      double worst = 0;
+      for (mc_int j = 0; j < cd.n; ++j) worst = fmax(worst, fabs(cd.pressure[j] / lame - 1));
+      printf("axisymmetric shrink fit, %s, %s: %d contact positions, every pressure within %.4f %% of Lame\n",
+             kind_name(kinds[k]), method == MC_METHOD_MORTAR ? "mortar" : "node-to-segment", (int)cd.n, 100 * worst);
+      if (method == MC_METHOD_MORTAR)
+        ck_assert_msg(worst < 1e-3, "%s: a pressure %.3f %% off Lame", kind_name(kinds[k]), 100 * worst);
+      contact_free(&cd);
+      free(offset);
+      mc_destroy(m);
+      sc_mesh_free(&shaft), sc_mesh_free(&hub);
+    }
+}
+END_TEST
+
 /* ---- bad input -------------------------------------------------------------------------------------- */
 
 START_TEST(bad_quadratic_input_is_refused_clearly) {
@@ -550,6 +599,7 @@ int main(void) {
   tcase_add_test(contact, flat_patch_test_every_pair_of_kinds);
   tcase_add_test(contact, zigzag_hydrostatic_patch_test_quadratic);
   tcase_add_test(contact, shrink_fit_curved_q8_rings_lame);
+  tcase_add_test(contact, axisymmetric_shrink_fit_quadratic_lame);
   suite_add_tcase(s, contact);
   return sc_run_suite(s);
 }
