@@ -363,6 +363,48 @@ void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, Constrain
         else space.feed(e, e + t, q.weight * hat[t], add);
       }
     }
+  // mu at the run's positions (ConstraintRows::pressure_of_position): at the ends of each element
+  // the multipliers' values (the share of a trace point's hat each one takes there), averaged
+  // over the one or two elements at a trace point; at a mid-edge node inside an element, linear
+  // between the element's ends.
+  const int row0 = rows.size();
+  if (rows.pressure_of_position.empty()) rows.pressure_of_position.resize(g.nodes.size());
+  using Coefficients = std::vector<std::pair<int, double>>;
+  auto end_values = [&](int e, int t) {
+    Coefficients c;
+    auto add = [&](int i, double v) {
+      const int r = single ? 0 : i - first;
+      c.emplace_back(row0 + r, v / total[r]);
+    };
+    if (single) add(0, 1.0);
+    else space.feed(e, e + t, 1.0, add);
+    return c;
+  };
+  std::vector<Coefficients> at_trace(n);
+  std::vector<int> elements_at(n, 0);
+  for (int e = 0; e < int(run.elements.size()); ++e) {
+    const Coefficients c0 = end_values(e, 0), c1 = end_values(e, 1);
+    const int k0 = e, k1 = closed ? (e + 1) % n : e + 1;
+    at_trace[k0].insert(at_trace[k0].end(), c0.begin(), c0.end()), elements_at[k0]++;
+    at_trace[k1].insert(at_trace[k1].end(), c1.begin(), c1.end()), elements_at[k1]++;
+    // The middle of the element's body-1 edge, if the element holds it: s is affine in the
+    // edge's parameter xi along an element (one edge, or a part of it).
+    const std::vector<QuadraturePoint> &qs = run.elements[e];
+    if (qs.size() < 2) continue;
+    const QuadraturePoint &qa = qs.front(), &qb = qs.back();
+    const int mid = g.segment_positions[qa.segment1][2];
+    if (mid < 0 || qb.xi1 == qa.xi1 || qb.segment1 != qa.segment1) continue;
+    const double s_mid = qa.s + (0.5 - qa.xi1) * (qb.s - qa.s) / (qb.xi1 - qa.xi1);
+    if (s_mid < -1e-12 || s_mid > 1 + 1e-12) continue;
+    Coefficients &out = rows.pressure_of_position[mid];
+    for (auto &[r, v] : c0) out.emplace_back(r, (1 - s_mid) * v);
+    for (auto &[r, v] : c1) out.emplace_back(r, s_mid * v);
+  }
+  for (int k = 0; k < n; ++k) {
+    if (!run.trace[k].is_position() || elements_at[k] == 0) continue;
+    Coefficients &out = rows.pressure_of_position[run.trace[k].a];
+    for (auto &[r, v] : at_trace[k]) out.emplace_back(r, v / elements_at[k]);
+  }
   for (int r = 0; r < count; ++r) {
     // The row's trace point: its multiplier's node (the middle one of a single multiplier on
     // two elements; none on one element).

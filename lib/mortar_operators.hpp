@@ -29,6 +29,11 @@ struct ConstraintRows {
   // sum_l vector2 . u2 <= g0). Empty: every entry's direction is its row's normal.
   std::vector<Point> vector1, vector2;
   std::vector<double> gap0;
+  // The contact pressure of a weak row's method (a quadratic body 1): the multiplier field
+  // mu = sum_i (lambda_i / int psi_i) psi_i itself, continuous piecewise linear on Gamma_c, at each
+  // contact position: pressure[pos] = sum over (row, c) in pressure_of_position[pos] of
+  // c lambda[row]. Empty for the paper's rows (their pressure is the lumped one).
+  std::vector<std::vector<std::pair<int, double>>> pressure_of_position;
   // The position whose nodal row this is (its gap is reported there); -1 for a row at an end
   // of Gamma_c inside a partly covered segment.
   std::vector<int> own_position;

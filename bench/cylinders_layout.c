@@ -1,0 +1,223 @@
+/*
+ * cylinders_layout.c - two cylinders in contact (R = 1 on R = 3, plane strain) meshed with each
+ * cell kind and triangle layout, and the node-to-node ripple of the nodal contact pressures
+ * (docs/robustness.md, "Quadratic cells").
+ *
+ * Body 1: the part |x| <= 0.6, y <= 0.6 of the disc of radius 1 centred at (0, 1) (its arc touches
+ * the origin); body 2: the part |x| <= 1.5, y >= -1.5 of the disc of radius 3 centred at (0, -3).
+ * Both are mapped structured grids, spacing about h at the contact point, growing away from it;
+ * every node (a quadratic cell's mid-edge nodes included) is placed by the same map, so the arcs'
+ * nodes lie on the circles and quadratic edges are curved. E = 1, nu = 0.3 both; body 1 loaded by
+ * P = 0.01 on its top, u_x = 0 on its axis, held vertically by contact alone; body 2 clamped at
+ * its bottom. Triangles: one-way diagonals, or criss-cross (alternating square by square).
+ *
+ * Ripple: the largest deviation |p_j - (p_{j-1} + p_{j+1}) / 2| of a nodal pressure from the
+ * mean of its two neighbours along body 1's surface (corner and mid-edge positions alike, in
+ * order) inside 0.6 a, over p0: node-to-node oscillation. A smooth profile gives about
+ * p0 d^2 / a^2 (d the spacing of the positions): 0.3 % at d = a / 13. p0: the largest nodal pressure; Hertz:
+ * 1/R* = 1/1 + 1/3, 1/E* = 2 (1 - nu^2) / E.
+ *
+ * usage: cylinders_layout [h ...]       (default h = 0.01; PROFILE=1 in the environment also prints
+ *        each solve's nonzero nodal pressures against x)
+ */
+#include "mortarcontact.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+
+typedef struct mesh {
+  int npc, n_nodes, n_cells, nI, nJ;
+  double *xy;
+  mc_int *cells, *lattice; /* lattice point (I, J) -> node or -1 */
+} mesh;
+
+/* The rectangle lattice [-1, 1] x [0, 1] with 2n x ny squares of kind npc (as tests/scenes.c,
+   sc_mesh_cells), then mapped by map(xi, eta). */
+static void build(mesh *m, int npc, int n2, int ny, int criss, void (*map)(double, double, double *, double *, void *),
+                  void *ctx) {
+  const int o = npc > 4 ? 2 : 1, quad = npc == 4 || npc == 8 || npc == 9;
+  m->npc = npc, m->nI = o * n2 + 1, m->nJ = o * ny + 1;
+  m->n_cells = quad ? n2 * ny : 2 * n2 * ny;
+  m->cells = malloc(sizeof(mc_int) * (size_t)npc * (size_t)m->n_cells);
+  m->lattice = malloc(sizeof(mc_int) * (size_t)m->nI * (size_t)m->nJ);
+  mc_int *c = m->cells;
+  const int row = m->nI;
+#define L(I, J) ((mc_int)((J) * row + (I)))
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < n2; ++i) {
+      const int I = o * i, J = o * j;
+      const mc_int a = L(I, J), b = L(I + o, J), cc = L(I + o, J + o), d = L(I, J + o);
+      if (quad) {
+        c[0] = a, c[1] = b, c[2] = cc, c[3] = d;
+        if (o == 2) {
+          c[4] = L(I + 1, J), c[5] = L(I + 2, J + 1), c[6] = L(I + 1, J + 2), c[7] = L(I, J + 1);
+          if (npc == 9) c[8] = L(I + 1, J + 1);
+        }
+        c += npc;
+      } else if (!criss || (i + j) % 2 == 0) {
+        c[0] = a, c[1] = b, c[2] = cc;
+        if (o == 2) c[3] = L(I + 1, J), c[4] = L(I + 2, J + 1), c[5] = L(I + 1, J + 1);
+        c += npc;
+        c[0] = a, c[1] = cc, c[2] = d;
+        if (o == 2) c[3] = L(I + 1, J + 1), c[4] = L(I + 1, J + 2), c[5] = L(I, J + 1);
+        c += npc;
+      } else {
+        c[0] = a, c[1] = b, c[2] = d;
+        if (o == 2) c[3] = L(I + 1, J), c[4] = L(I + 1, J + 1), c[5] = L(I, J + 1);
+        c += npc;
+        c[0] = b, c[1] = cc, c[2] = d;
+        if (o == 2) c[3] = L(I + 2, J + 1), c[4] = L(I + 1, J + 2), c[5] = L(I + 1, J + 1);
+        c += npc;
+      }
+    }
+#undef L
+  for (int k = 0; k < m->nI * m->nJ; ++k) m->lattice[k] = -1;
+  for (int k = 0; k < m->n_cells * npc; ++k) m->lattice[m->cells[k]] = 0;
+  m->n_nodes = 0;
+  for (int k = 0; k < m->nI * m->nJ; ++k)
+    if (m->lattice[k] == 0) m->lattice[k] = m->n_nodes++;
+  for (int k = 0; k < m->n_cells * npc; ++k) m->cells[k] = m->lattice[m->cells[k]];
+  m->xy = malloc(sizeof(double) * 2 * (size_t)m->n_nodes);
+  for (int J = 0; J < m->nJ; ++J)
+    for (int I = 0; I < m->nI; ++I) {
+      const mc_int id = m->lattice[J * m->nI + I];
+      if (id < 0) continue;
+      const double xi = I == (m->nI - 1) / 2 ? 0 : -1 + 2.0 * I / (m->nI - 1), eta = (double)J / (m->nJ - 1);
+      map(xi, eta, &m->xy[2 * id], &m->xy[2 * id + 1], ctx);
+    }
+}
+
+static mc_int node_at(const mesh *m, int I, int J) { return m->lattice[J * m->nI + I]; }
+
+typedef struct shape {
+  double radius, half_width, height, beta, gamma;
+  int upper; /* body 1: the arc at the bottom, eta = 0 */
+} shape;
+
+/* x = W (beta xi + (1 - beta) xi^3): spacing W beta / n at the contact point, growing outwards;
+   body 1: y from its arc (eta = 0) up to the height, body 2: from -height (eta = 0) up to its arc;
+   psi grades the spacing towards the arc (gamma: the first step's fraction of a uniform one). */
+static void shape_map(double xi, double eta, double *x, double *y, void *ctx) {
+  const shape *s = ctx;
+  const double X = xi == 0 ? 0 : s->half_width * (s->beta * xi + (1 - s->beta) * xi * xi * xi);
+  const double r = s->radius;
+  *x = X;
+  if (s->upper) {
+    const double arc = r - sqrt(r * r - X * X), t = eta;
+    const double psi = t * (s->gamma + (1 - s->gamma) * t);
+    *y = eta == 0 ? arc : arc + (s->height - arc) * psi;
+  } else {
+    const double arc = -r + sqrt(r * r - X * X), t = 1 - eta;
+    const double psi = t * (s->gamma + (1 - s->gamma) * t);
+    *y = eta == 1 ? arc : arc - (arc + s->height) * psi;
+  }
+}
+
+typedef struct outcome {
+  long dofs;
+  int positions;
+  double p0, ripple, seconds;
+} outcome;
+
+/* coarse: a quadratic mesh with half the cells each way, of twice the size (the same nodes as the
+   linear mesh of h). */
+static outcome solve(int npc, int criss, double h, int coarse) {
+  const int n_half = coarse ? 20 : 40, ny = coarse ? 12 : 24;
+  if (coarse) h *= 2;
+  mesh b[2];
+  shape s1 = {1, 0.6, 0.6, 0, 0, 1}, s2 = {3, 1.5, 1.5, 0, 0, 0};
+  s1.beta = h * n_half / s1.half_width, s2.beta = h * n_half / s2.half_width;
+  s1.gamma = h * ny / s1.height, s2.gamma = h * ny / s2.height;
+  build(&b[0], npc, 2 * n_half, ny, criss, shape_map, &s1);
+  build(&b[1], npc, 2 * n_half, ny, criss, shape_map, &s2);
+  mc_model *m = NULL;
+  mc_create(&m);
+  const int o = npc > 4 ? 2 : 1;
+  for (int k = 0; k < 2; ++k) {
+    if (mc_set_mesh(m, k + 1, b[k].n_nodes, b[k].xy, b[k].n_cells, npc, b[k].cells) != MC_OK) {
+      fprintf(stderr, "mesh %d: %s\n", k + 1, mc_errmsg(m));
+      exit(1);
+    }
+    mc_set_material(m, k + 1, 1, 0.3);
+  }
+  /* body 1: u_x = 0 on its axis (lattice column nI / 2); load on its top; contact on its arc */
+  mc_int *ids = malloc(sizeof(mc_int) * (size_t)(b[0].nJ + b[1].nI + 2 * b[0].nI));
+  int n = 0;
+  for (int J = 0; J < b[0].nJ; ++J) ids[n++] = node_at(&b[0], b[0].nI / 2, J);
+  mc_fix(m, 1, n, ids, MC_X, NULL);
+  n = 0;
+  for (int I = 0; I < b[1].nI; ++I) ids[n++] = node_at(&b[1], I, 0);
+  mc_fix(m, 2, n, ids, MC_XY, NULL);
+  const int cells_across = 2 * n_half;
+  mc_int *top = malloc(sizeof(mc_int) * 2 * (size_t)cells_across), *arc1 = malloc(sizeof(mc_int) * 2 * (size_t)cells_across),
+         *arc2 = malloc(sizeof(mc_int) * 2 * (size_t)cells_across);
+  double *traction = malloc(sizeof(double) * 2 * (size_t)cells_across);
+  const double P = 0.01, width = 2 * s1.half_width;
+  for (int i = 0; i < cells_across; ++i) {
+    /* top of body 1, right to left; arc of body 1 left to right; arc of body 2 right to left */
+    top[2 * i] = node_at(&b[0], o * (cells_across - i), b[0].nJ - 1), top[2 * i + 1] = node_at(&b[0], o * (cells_across - i - 1), b[0].nJ - 1);
+    arc1[2 * i] = node_at(&b[0], o * i, 0), arc1[2 * i + 1] = node_at(&b[0], o * (i + 1), 0);
+    arc2[2 * i] = node_at(&b[1], o * (cells_across - i), b[1].nJ - 1), arc2[2 * i + 1] = node_at(&b[1], o * (cells_across - i - 1), b[1].nJ - 1);
+    traction[2 * i] = 0, traction[2 * i + 1] = -P / width;
+  }
+  mc_add_traction(m, 1, cells_across, top, traction);
+  mc_set_contact(m, 1, cells_across, arc1);
+  mc_set_contact(m, 2, cells_across, arc2);
+  if (mc_solve(m) != MC_OK) {
+    fprintf(stderr, "solve: %s\n", mc_errmsg(m));
+    exit(1);
+  }
+  outcome out = {0, 0, 0, 0, 0};
+  int64_t dofs;
+  mc_get_info_int(m, MC_INFO_DOFS, &dofs);
+  mc_get_info_real(m, MC_INFO_TIME_TOTAL, &out.seconds);
+  out.dofs = (long)dofs;
+  mc_int count;
+  mc_get_contact_count(m, &count);
+  out.positions = (int)count;
+  mc_int *nodes = malloc(sizeof(mc_int) * (size_t)count);
+  double *p = malloc(sizeof(double) * (size_t)count);
+  mc_get_contact_nodes(m, nodes);
+  mc_get_contact_pressure(m, p);
+  for (int j = 0; j < count; ++j) out.p0 = fmax(out.p0, p[j]);
+  if (getenv("PROFILE"))
+    for (int j = 0; j < count; ++j)
+      if (p[j] > 0) printf("  x %+.5f p %.6f\n", b[0].xy[2 * nodes[j]], p[j]);
+  const double nu = 0.3, r_star = 1.0 / (1.0 + 1.0 / 3.0), e_star = 1 / (2 * (1 - nu * nu));
+  const double a = sqrt(4 * P * r_star / (PI * e_star));
+  for (int j = 1; j + 1 < count; ++j) {
+    const double x0 = b[0].xy[2 * nodes[j - 1]], x2 = b[0].xy[2 * nodes[j + 1]];
+    if (fmax(fabs(x0), fabs(x2)) > 0.6 * a) continue;
+    out.ripple = fmax(out.ripple, fabs(p[j] - 0.5 * (p[j - 1] + p[j + 1])) / out.p0);
+  }
+  free(nodes), free(p), free(ids), free(top), free(arc1), free(arc2), free(traction);
+  for (int k = 0; k < 2; ++k) free(b[k].xy), free(b[k].cells), free(b[k].lattice);
+  mc_destroy(m);
+  return out;
+}
+
+int main(int argc, char **argv) {
+  for (int arg = 1; arg < (argc > 1 ? argc : 2); ++arg) {
+  const double h = argc > 1 ? atof(argv[arg]) : 0.01;
+  const double P = 0.01, nu = 0.3, r_star = 1.0 / (1.0 + 1.0 / 3.0), e_star = 1 / (2 * (1 - nu * nu));
+  const double a = sqrt(4 * P * r_star / (PI * e_star)), p0 = 2 * P / (PI * a);
+  printf("two cylinders R = 1 on R = 3, h = %g at the contact point (a = %.4f, %.1f cells across a)\n\n", h, a, a / h);
+  printf("| cells | triangles | cell size at contact | DOFs | contact positions | p0 vs Hertz | ripple: largest |p_j - (p_j-1 + p_j+1)/2| inside 0.6 a | time (s) |\n");
+  printf("|---|---|---:|---:|---:|---:|---:|---:|\n");
+  const int kinds[5] = {3, 6, 4, 8, 9};
+  for (int k = 0; k < 5; ++k)
+    for (int coarse = kinds[k] > 4; coarse >= 0; --coarse)
+    for (int criss = 0; criss < (kinds[k] == 3 || kinds[k] == 6 ? 2 : 1); ++criss) {
+      const outcome o = solve(kinds[k], criss, h, coarse);
+      const char *name = kinds[k] == 3 ? "P1" : kinds[k] == 6 ? "T6" : kinds[k] == 4 ? "Q1" : kinds[k] == 8 ? "Q8" : "Q9";
+      printf("| %s | %s | %g | %ld | %d | %+.2f %% | %.2f %% of p0 | %.3f |\n", name,
+             kinds[k] == 3 || kinds[k] == 6 ? (criss ? "criss-cross" : "one-way") : "-", coarse ? 2 * h : h, o.dofs, o.positions,
+             100 * (o.p0 / p0 - 1), 100 * o.ripple, o.seconds);
+    }
+  printf("\n");
+  }
+  return 0;
+}
