@@ -393,13 +393,19 @@ MC_API mc_status mc_get_contact_normal(const mc_model *m, double *n);
 /* Writes the solved scene for ParaView. A path ending in ".pvd" writes a collection and one
    VTK XML unstructured-grid file per body next to it ("<stem>_body1.vtu", "<stem>_body2.vtu");
    any other path gets one .vtu with both bodies (cell data "body" = 1 or 2). Point data:
-   displacement; cell data: stress (xx yy xy zz; axisymmetric: rr zz rz theta_theta), von Mises; on body 1's contact nodes (zero
+   displacement and the nodal stress (mc_get_nodal_stress); cell data: stress (xx yy xy zz;
+   axisymmetric: rr zz rz theta_theta), von Mises; on body 1's contact nodes (zero
    elsewhere, flag "contact" = 1): contact pressure, gap, initial gap and "active" (force > 0).
+   Cells keep the mesh's node order (VTK's = Gmsh's = mc_set_mesh's), with VTK cell types 5
+   (P1 triangle), 9 (Q1), 22 (T6, VTK_QUADRATIC_TRIANGLE), 23 (Q8, VTK_QUADRATIC_QUAD) and 28
+   (Q9, VTK_BIQUADRATIC_QUAD); every node of a quadratic mesh, mid-edge and centre nodes
+   included, is a point with its own values.
    MC_ERROR_STATE before a successful solve; MC_ERROR_ARGUMENT if the file cannot be written.
-   Array names: point data "displacement" (3 components, z = 0), "pressure", "gap",
-   "initial_gap", "active", "contact"; cell data "stress" (4 components), "von_mises" (with
-   sigma_zz), "body". A corner node, a contact position in two faces, gets its total force over
-   its total tributary measure as pressure, and the smaller of its gaps. A body-1 contact-surface node that sees no mortar surface has
+   Array names: point data "displacement" (3 components, z = 0), "nodal_stress" (4 components,
+   as "stress"), "pressure", "gap", "initial_gap", "active", "contact"; cell data "stress" (4
+   components), "von_mises" (with sigma_zz), "body". A corner node, a contact position in two
+   faces, gets its total force over its total tributary measure as pressure, and the smaller of
+   its gaps. A body-1 contact-surface node that sees no mortar surface has
    "contact" = 0 and gap = initial_gap = -1 (a sentinel for the +infinity of the getters: VTK
    readers take no inf). ASCII, 17 significant digits (values read back exactly), independent
    of the C locale. Only bodies with a mesh are written. */

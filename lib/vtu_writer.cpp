@@ -13,7 +13,20 @@ namespace mc {
 
 namespace {
 
-constexpr int kVtkTriangle = 5, kVtkQuad = 9;
+// VTK cell types by nodes per cell; the node order of quadratic cells is the library's (corners
+// counter-clockwise, then the mid-edge nodes of edges 0-1, 1-2, ..., then Q9's centre).
+constexpr int kVtkTriangle = 5, kVtkQuad = 9, kVtkQuadraticTriangle = 22, kVtkQuadraticQuad = 23,
+              kVtkBiquadraticQuad = 28;
+
+int vtk_cell_type(int nodes_per_cell) {
+  switch (nodes_per_cell) {
+    case 3: return kVtkTriangle;
+    case 4: return kVtkQuad;
+    case 6: return kVtkQuadraticTriangle;
+    case 8: return kVtkQuadraticQuad;
+    default: return kVtkBiquadraticQuad;  // 9
+  }
+}
 // Written for gap and initial gap where the API reports +infinity (no mortar surface seen).
 constexpr double kUnseenGap = -1.0;
 
@@ -156,6 +169,14 @@ void open_array(TextFile &out, const char *type, const char *name, int component
 
 void close_array(TextFile &out) { out << "        </DataArray>\n"; }
 
+// The ComponentName attributes of a 4-component stress array: an axisymmetric model's
+// components are (rr, zz, rz, hoop) in the slots of (xx, yy, xy, zz).
+const char *stress_component_names(const Model &model) {
+  return model.axisymmetric ? "ComponentName0=\"rr\" ComponentName1=\"zz\" ComponentName2=\"rz\" "
+                              "ComponentName3=\"theta_theta\""
+                            : "ComponentName0=\"xx\" ComponentName1=\"yy\" ComponentName2=\"xy\" ComponentName3=\"zz\"";
+}
+
 // One <Piece> holding the given bodies (0-based), nodes and cells numbered body after body.
 void write_piece(TextFile &out, const Model &model, const std::vector<int> &bodies) {
   long n_points = 0, n_cells = 0;
@@ -185,16 +206,21 @@ void write_piece(TextFile &out, const Model &model, const std::vector<int> &bodi
   contact_field("Float64", "initial_gap", [&](int i) { return contact.initial_gap[i]; });
   contact_field("Int32", "active", [&](int i) { return contact.active[i]; });
   contact_field("Int32", "contact", [&](int i) { return contact.constrained[i]; });
+  // Each cell's stress at its nodes, averaged over the cells sharing a node (mc_get_nodal_stress).
+  out << "        <DataArray type=\"Float64\" Name=\"nodal_stress\" NumberOfComponents=\"4\" "
+      << stress_component_names(model) << " format=\"ascii\">\n";
+  for (int b : bodies) {
+    const std::vector<double> &s = model.body[b].nodal_stress;
+    for (int i = 0; i < model.body[b].mesh.n_nodes(); ++i)
+      out << s[4 * size_t(i)] << " " << s[4 * size_t(i) + 1] << " " << s[4 * size_t(i) + 2] << " " << s[4 * size_t(i) + 3]
+          << "\n";
+  }
+  close_array(out);
   out << "      </PointData>\n";
 
   out << "      <CellData Scalars=\"von_mises\">\n";
-  // An axisymmetric model's components are (rr, zz, rz, hoop) in the same slots.
-  if (model.axisymmetric)
-    out << "        <DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"4\" ComponentName0=\"rr\" "
-           "ComponentName1=\"zz\" ComponentName2=\"rz\" ComponentName3=\"theta_theta\" format=\"ascii\">\n";
-  else
-    out << "        <DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"4\" ComponentName0=\"xx\" "
-           "ComponentName1=\"yy\" ComponentName2=\"xy\" ComponentName3=\"zz\" format=\"ascii\">\n";
+  out << "        <DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"4\" " << stress_component_names(model)
+      << " format=\"ascii\">\n";
   for (int b : bodies) {
     const std::vector<double> &s = model.body[b].stress;
     for (int c = 0; c < model.body[b].mesh.n_cells(); ++c)
@@ -241,7 +267,7 @@ void write_piece(TextFile &out, const Model &model, const std::vector<int> &bodi
   close_array(out);
   out << "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
   for (int b : bodies) {
-    const int type = model.body[b].mesh.nodes_per_cell() == 3 ? kVtkTriangle : kVtkQuad;
+    const int type = vtk_cell_type(model.body[b].mesh.nodes_per_cell());
     for (int c = 0; c < model.body[b].mesh.n_cells(); ++c) out << type << "\n";
   }
   close_array(out);

@@ -69,7 +69,7 @@ static void scene_free(scene *s) {
 
 /* What the getters return after a solve. */
 typedef struct results {
-  double *u[2], *stress[2];
+  double *u[2], *stress[2], *nodal_stress[2];
   mc_int n_contact, *contact_nodes;
   double *pressure, *force, *gap, *gap0;
 } results;
@@ -80,8 +80,10 @@ static results results_get(const scene *s) {
   for (int b = 0; b < 2; ++b) {
     r.u[b] = malloc(sizeof(double) * 2 * s->mesh[b].n_nodes);
     r.stress[b] = malloc(sizeof(double) * 4 * s->mesh[b].n_cells);
+    r.nodal_stress[b] = malloc(sizeof(double) * 4 * s->mesh[b].n_nodes);
     OK(mc_get_displacement(m, b + 1, r.u[b]));
     OK(mc_get_stress(m, b + 1, r.stress[b]));
+    OK(mc_get_nodal_stress(m, b + 1, r.nodal_stress[b]));
   }
   OK(mc_get_contact_count(m, &r.n_contact));
   r.contact_nodes = malloc(sizeof(mc_int) * r.n_contact);
@@ -98,7 +100,7 @@ static results results_get(const scene *s) {
 }
 
 static void results_free(results *r) {
-  for (int b = 0; b < 2; ++b) free(r->u[b]), free(r->stress[b]);
+  for (int b = 0; b < 2; ++b) free(r->u[b]), free(r->stress[b]), free(r->nodal_stress[b]);
   free(r->contact_nodes), free(r->pressure), free(r->force), free(r->gap), free(r->gap0);
 }
 
@@ -211,11 +213,12 @@ static double *data_array(const char *xml, const char *name, const char *type, i
 static void check_piece(const char *xml, const scene *s, const results *r, int first, int last) {
   long n_points = 0, n_cells = 0;
   for (int b = first; b <= last; ++b) n_points += s->mesh[b].n_nodes, n_cells += s->mesh[b].n_cells;
-  check_structure(xml, 13);
+  check_structure(xml, 14);
   ck_assert_int_eq(attribute(xml, "NumberOfPoints"), n_points);
   ck_assert_int_eq(attribute(xml, "NumberOfCells"), n_cells);
 
   double *u = data_array(xml, "displacement", "Float64", 3, 3 * n_points);
+  double *ns = data_array(xml, "nodal_stress", "Float64", 4, 4 * n_points);
   double *x = data_array(xml, "coordinates", "Float64", 3, 3 * n_points);
   double *p = data_array(xml, "pressure", "Float64", 1, n_points);
   double *g = data_array(xml, "gap", "Float64", 1, n_points);
@@ -240,6 +243,9 @@ static void check_piece(const char *xml, const scene *s, const results *r, int f
                     "body %d node %d: displacement (%.17g, %.17g) in the file, (%.17g, %.17g) from the API", b + 1,
                     (int)i, u[3 * point], u[3 * point + 1], r->u[b][2 * i], r->u[b][2 * i + 1]);
       ck_assert(x[3 * point] == mesh->xy[2 * i] && x[3 * point + 1] == mesh->xy[2 * i + 1] && x[3 * point + 2] == 0);
+      for (int k = 0; k < 4; ++k)
+        ck_assert_msg(ns[4 * point + k] == r->nodal_stress[b][4 * i + k], "body %d node %d: nodal stress %d", b + 1,
+                      (int)i, k);
       if (b == 1) /* body 2 carries no contact fields */
         ck_assert(p[point] == 0 && g[point] == 0 && g0[point] == 0 && active[point] == 0 && contact[point] == 0);
     }
@@ -284,7 +290,7 @@ static void check_piece(const char *xml, const scene *s, const results *r, int f
                   "unseen %d, seen %d, active %d, inactive %d", unseen, seen, n_active, n_inactive);
     free(on_surface);
   }
-  free(u), free(x), free(p), free(g), free(g0), free(active), free(contact);
+  free(u), free(ns), free(x), free(p), free(g), free(g0), free(active), free(contact);
   free(stress), free(vm), free(body), free(types), free(offsets), free(conn);
 }
 
@@ -354,7 +360,7 @@ START_TEST(single_body_solve_writes_that_body) {
   OK(mc_solve(m));
   SUCCEEDS(mc_write_vtu(m, "test_output_single.vtu"));
   char *xml = slurp("test_output_single.vtu");
-  check_structure(xml, 13);
+  check_structure(xml, 14);
   ck_assert_int_eq(attribute(xml, "NumberOfPoints"), mesh.n_nodes);
   ck_assert_int_eq(attribute(xml, "NumberOfCells"), mesh.n_cells);
   double *u_api = malloc(sizeof(double) * 2 * mesh.n_nodes);

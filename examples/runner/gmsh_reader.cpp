@@ -113,12 +113,19 @@ struct ElementShape {
   int nodes;
 };
 
+// Gmsh's node order is the library's (and VTK's): corners first (counter-clockwise when the
+// surface is), then the mid-edge nodes of the sides 0-1, 1-2, ..., then a 9-node quad's centre;
+// a 3-node line is its two ends, then its middle.
 bool supported_shape(long type, ElementShape *shape) {
   switch (type) {
     case 15: *shape = {0, 1}; return true;  // point
     case 1: *shape = {1, 2}; return true;   // 2-node line
     case 2: *shape = {2, 3}; return true;   // 3-node triangle
     case 3: *shape = {2, 4}; return true;   // 4-node quadrilateral
+    case 8: *shape = {1, 3}; return true;   // 3-node line (second order)
+    case 9: *shape = {2, 6}; return true;   // 6-node triangle (T6)
+    case 16: *shape = {2, 8}; return true;  // 8-node quadrilateral (Q8, serendipity)
+    case 10: *shape = {2, 9}; return true;  // 9-node quadrilateral (Q9, Lagrange)
     default: return false;
   }
 }
@@ -126,7 +133,6 @@ bool supported_shape(long type, ElementShape *shape) {
 // Why an element type is refused, in words a user can act on.
 std::string unsupported_type_message(long type) {
   static const std::map<long, const char *> higher_order = {
-      {8, "3-node line"},       {9, "6-node triangle"},    {10, "9-node quadrilateral"}, {16, "8-node quadrilateral"},
       {20, "9-node triangle"},  {21, "10-node triangle"},  {22, "12-node triangle"},     {23, "15-node triangle"},
       {24, "15-node triangle"}, {25, "21-node triangle"},  {26, "4-node line"},          {27, "5-node line"},
       {28, "6-node line"},      {36, "16-node quadrilateral"}, {37, "25-node quadrilateral"}};
@@ -136,12 +142,13 @@ std::string unsupported_type_message(long type) {
       {18, "15-node prism"}, {19, "13-node pyramid"}};
   std::string kind = "element type " + std::to_string(type);
   if (auto it = higher_order.find(type); it != higher_order.end())
-    return kind + " (" + it->second + ", higher order) is not supported: only first-order 3-node triangles, "
-                  "4-node quadrilaterals and 2-node lines are (mesh with -order 1)";
+    return kind + " (" + it->second + ", order 3 or more, or incomplete) is not supported: only first- and "
+                  "second-order triangles and quadrilaterals (3, 4, 6, 8, 9 nodes) and 2- and 3-node lines are "
+                  "(mesh with -order 1 or -order 2)";
   if (auto it = solid.find(type); it != solid.end())
     return kind + " (" + it->second + ", 3D) is not supported: the scene is 2D (mesh with -2)";
-  return kind + " is not supported: only 3-node triangles (2), 4-node quadrilaterals (3), 2-node lines (1) "
-                "and points (15) are";
+  return kind + " is not supported: only 3- and 6-node triangles (2, 9), 4-, 8- and 9-node quadrilaterals "
+                "(3, 16, 10), 2- and 3-node lines (1, 8) and points (15) are";
 }
 
 class Reader {

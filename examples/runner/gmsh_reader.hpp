@@ -1,8 +1,12 @@
 // gmsh_reader.hpp - reads Gmsh ASCII mesh files (.msh, format 2.2 and 4.1) into a flat list of
 // nodes, elements and physical groups. Only what a 2D linear-elastic scene needs is kept:
-// 3-node triangles and 4-node quadrilaterals (cells), 2-node lines (boundary pieces) and
-// 1-node points. Anything else (higher-order or 3D elements, binary or partitioned files) is
-// rejected with a message "file:line: what is wrong".
+// first- and second-order cells (3- and 6-node triangles, 4-, 8- and 9-node quadrilaterals:
+// Gmsh types 2, 9, 3, 16, 10), 2- and 3-node lines (types 1, 8: boundary pieces) and 1-node
+// points, with their nodes in Gmsh's order (corners, then mid-edge nodes, then a 9-node quad's
+// centre; a 3-node line's ends, then its middle), which is also the library's and VTK's.
+// Anything else (order 3 or more, 3D elements, binary or partitioned files) is rejected with a
+// message "file:line: what is wrong". Node tags may be sparse and in any order (4.1 writes
+// them per entity): elements refer to nodes by index into the node arrays.
 #ifndef MC_RUNNER_GMSH_READER_HPP
 #define MC_RUNNER_GMSH_READER_HPP
 
@@ -26,7 +30,7 @@ struct PhysicalGroup {
 
 struct Element {
   int dim;                         // 0 point, 1 line, 2 cell
-  std::vector<int> nodes;          // indices into GmshMesh::node_tags / xy (not file tags)
+  std::vector<int> nodes;          // indices into GmshMesh::node_tags / xy (not file tags), Gmsh's order
   std::vector<int> physical_tags;  // physical groups of dimension `dim` holding it
   long tag;                        // element tag in the file (first one if written twice)
   long line;                       // line of the file where it is (first) written

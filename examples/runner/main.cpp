@@ -122,7 +122,15 @@ auto at_key(const Scene &scene, const std::string &key, F f) {
   }
 }
 
-const char *cell_name(int nodes_per_cell) { return nodes_per_cell == 3 ? "triangles" : "quadrilaterals"; }
+const char *cell_name(int nodes_per_cell) {
+  switch (nodes_per_cell) {
+    case 3: return "triangles";
+    case 4: return "quadrilaterals";
+    case 6: return "6-node triangles";
+    case 8: return "8-node quadrilaterals";
+    default: return "9-node quadrilaterals";
+  }
+}
 
 void set_mesh(mc_model *m, int body, const BodyMesh &mesh, const Scene &scene) {
   const Body &spec = scene.bodies[body - 1];
@@ -177,10 +185,12 @@ void apply_loads(mc_model *m, int body, const BodyMesh &mesh, const Scene &scene
 void set_contact(mc_model *m, int body, const BodyMesh &mesh, const Scene &scene) {
   const Body &spec = scene.bodies[body - 1];
   const std::string key = spec.key + ".contact";
-  const std::vector<int> edges = at_key(scene, key, [&] { return group_edges(mesh, spec.contact); });
+  std::vector<int> mids;  // the mid-edge nodes of a second-order surface
+  const std::vector<int> edges = at_key(scene, key, [&] { return group_edges(mesh, spec.contact, &mids); });
   setup(m, mc_set_contact(m, body, int(edges.size() / 2), edges.data()), scene, key, "mc_set_contact");
   if (!spec.has_gap_offset) return;
   std::vector<int> nodes(edges);  // every node of the contact surface, once
+  nodes.insert(nodes.end(), mids.begin(), mids.end());
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   const std::vector<double> offsets(nodes.size(), spec.gap_offset);
@@ -284,8 +294,9 @@ void write_pressure_csv(const std::string &path, const BodyMesh &body1, const Co
 // ---- the Hertz comparison -----------------------------------------------------------------
 
 // p0 and a of the computed pressure. a is measured along the tangent at the pressure peak:
-// on each side, midway between the outermost loaded node and the next node, so it is known
-// to within half that spacing (reported).
+// on each side, midway between the outermost loaded node (pressure above 1e-9 p0: round-off on
+// an inactive node does not count) and the next node, so it is known to within half that
+// spacing (reported).
 struct HertzMeasured {
   double p0 = 0, a = 0, spacing = 0, force = 0;
 };
@@ -299,11 +310,13 @@ HertzMeasured measure_hertz(const BodyMesh &body1, const ContactResults &r, doub
     if (r.pressure[j] > r.pressure[peak]) peak = j;
   if (r.nodes.empty() || !(r.pressure[peak] > 0)) return h;
   h.p0 = r.pressure[peak];
+  // Loaded: a pressure above round-off of the peak's (an inactive node may carry 1e-12 p0).
+  const double loaded = 1e-9 * h.p0;
   if (axisymmetric) {
     double last = 0, next = std::numeric_limits<double>::infinity();
     for (size_t j = 0; j < r.nodes.size(); ++j) {
       h.force -= r.force[j] * r.normal[2 * j + 1];  // along the axis, pressing body 1 down
-      if (r.pressure[j] > 0) last = std::max(last, body1.xy[2 * size_t(r.nodes[j])]);
+      if (r.pressure[j] > loaded) last = std::max(last, body1.xy[2 * size_t(r.nodes[j])]);
     }
     for (size_t j = 0; j < r.nodes.size(); ++j) {
       const double x = body1.xy[2 * size_t(r.nodes[j])];
@@ -325,7 +338,7 @@ HertzMeasured measure_hertz(const BodyMesh &body1, const ContactResults &r, doub
   for (double side : {-1.0, 1.0}) {
     double last = 0, next = std::numeric_limits<double>::infinity();
     for (size_t j = 0; j < s.size(); ++j)
-      if (r.pressure[j] > 0 && side * s[j] > last) last = side * s[j];
+      if (r.pressure[j] > loaded && side * s[j] > last) last = side * s[j];
     for (size_t j = 0; j < s.size(); ++j)
       if (side * s[j] > last && side * s[j] < next) next = side * s[j];
     if (std::isinf(next)) next = last;  // loaded to the end of the surface
