@@ -95,31 +95,83 @@ static double *symmetric_axis(double w, double h, double len, int *n_cells)
   return x;
 }
 
-/*
- * Cells of an (nx x ny)-cell structured grid with node (i,j) = j*(nx+1)+i,
- * counter-clockwise as long as the grid maps (i,j) orientation-preservingly.
- * Triangles split along lower-left/upper-right, except in the cell at
- * (flip_i, flip_j) (pass -1 for none), which is split along the other diagonal.
- */
-static int *grid_cells(int nx, int ny, int quads, int flip_i, int flip_j, int *n_cells)
+/* The positions p[0..n] with the parameter midpoint of each cell inserted: 2n + 1 positions (the
+   lattice of a quadratic grid, whose mid-edge nodes then sit at the middle of each cell's
+   parameter interval and on the mapped curves). order 1: a copy. */
+static double *refined_axis(const double *p, int n, int order)
 {
-  const int npc = quads ? 4 : 3;
+  double *r = malloc((size_t)(order * n + 1) * sizeof *r);
+  if (!r) return NULL;
+  for (int k = 0; k <= n; ++k) {
+    r[order * k] = p[k];
+    if (order == 2 && k < n) r[2 * k + 1] = 0.5 * (p[k] + p[k + 1]);
+  }
+  return r;
+}
+
+/*
+ * Cells of an (nx x ny)-cell structured grid of any kind (npc = 3, 4, 6, 8, 9) on its lattice of
+ * (order nx + 1) x (order ny + 1) points, point (I,J) = J*(order nx+1)+I, counter-clockwise as
+ * long as the grid maps (I,J) orientation-preservingly; quadratic cells list their mid-edge
+ * nodes (and Q9 its centre) in Gmsh's order. Triangles as grid_cells below. A Q8 grid leaves
+ * the cells' centres unused (compact_lattice drops them).
+ */
+static int *lattice_cells(int nx, int ny, int npc, int flip_i, int flip_j, int *n_cells)
+{
+  const int quads = npc == 4 || npc == 8 || npc == 9, o = npc > 4 ? 2 : 1, row = o * nx + 1;
   *n_cells = quads ? nx * ny : 2 * nx * ny;
   int *c = malloc((size_t)*n_cells * npc * sizeof *c);
   if (!c) return NULL;
   int *q = c;
+#define P(I, J) ((J) * row + (I))
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
-      const int ll = j * (nx + 1) + i, lr = ll + 1, ul = ll + nx + 1, ur = ul + 1;
+      const int I = o * i, J = o * j;
+      const int ll = P(I, J), lr = P(I + o, J), ul = P(I, J + o), ur = P(I + o, J + o);
       if (quads) {
-        q[0] = ll; q[1] = lr; q[2] = ur; q[3] = ul; q += 4;
-      } else if (i == flip_i && j == flip_j) {
-        q[0] = ll; q[1] = lr; q[2] = ul; q[3] = lr; q[4] = ur; q[5] = ul; q += 6;
-      } else {
-        q[0] = ll; q[1] = lr; q[2] = ur; q[3] = ll; q[4] = ur; q[5] = ul; q += 6;
+        q[0] = ll; q[1] = lr; q[2] = ur; q[3] = ul;
+        if (o == 2) {
+          q[4] = P(I + 1, J); q[5] = P(I + 2, J + 1); q[6] = P(I + 1, J + 2); q[7] = P(I, J + 1);
+          if (npc == 9) q[8] = P(I + 1, J + 1);
+        }
+        q += npc;
+      } else if (i == flip_i && j == flip_j) { /* (ll, lr, ul) and (lr, ur, ul) */
+        q[0] = ll; q[1] = lr; q[2] = ul;
+        if (o == 2) { q[3] = P(I + 1, J); q[4] = P(I + 1, J + 1); q[5] = P(I, J + 1); }
+        q += npc;
+        q[0] = lr; q[1] = ur; q[2] = ul;
+        if (o == 2) { q[3] = P(I + 2, J + 1); q[4] = P(I + 1, J + 2); q[5] = P(I + 1, J + 1); }
+        q += npc;
+      } else { /* (ll, lr, ur) and (ll, ur, ul) */
+        q[0] = ll; q[1] = lr; q[2] = ur;
+        if (o == 2) { q[3] = P(I + 1, J); q[4] = P(I + 2, J + 1); q[5] = P(I + 1, J + 1); }
+        q += npc;
+        q[0] = ll; q[1] = ur; q[2] = ul;
+        if (o == 2) { q[3] = P(I + 1, J + 1); q[4] = P(I + 1, J + 2); q[5] = P(I, J + 1); }
+        q += npc;
       }
     }
+#undef P
   return c;
+}
+
+/* Drops the lattice points no cell uses (a Q8 cell's centre) and renumbers the cells; new_id
+   (n_points long) receives the map, -1 for a dropped point. Returns the number kept. */
+static int compact_lattice(hertz_mesh *m, int *new_id)
+{
+  const int n_points = m->n_nodes;
+  for (int k = 0; k < n_points; ++k) new_id[k] = -1;
+  for (int k = 0; k < m->n_cells * m->nodes_per_cell; ++k) new_id[m->cells[k]] = 0;
+  int n = 0;
+  for (int k = 0; k < n_points; ++k)
+    if (new_id[k] == 0) {
+      new_id[k] = n;
+      m->xy[2 * n] = m->xy[2 * k], m->xy[2 * n + 1] = m->xy[2 * k + 1];
+      ++n;
+    }
+  for (int k = 0; k < m->n_cells * m->nodes_per_cell; ++k) m->cells[k] = new_id[m->cells[k]];
+  m->n_nodes = n;
+  return n;
 }
 
 /* Appends the edge (a,b) to e if both ends satisfy |x| <= xmax. */
@@ -130,75 +182,96 @@ static void add_if_inside(int *e, int *n, const double *xy, int a, int b, double
   }
 }
 
-static int build_block(hertz_scene *sc, double h2, int quads)
+/* Renumbers a list of lattice ids through new_id (compact_lattice's map). */
+static void renumber(int *ids, int n, const int *new_id)
+{
+  for (int k = 0; k < n; ++k) ids[k] = new_id[ids[k]];
+}
+
+static int build_block(hertz_scene *sc, double h2, int npc)
 {
   hertz_mesh *m = &sc->body[1];
+  const int o = npc > 4 ? 2 : 1;
   int nx, ny;
-  double *x = symmetric_axis(FINE_HALF_WIDTH, h2, 4.0, &nx);
-  double *p = graded_axis(FINE_HALF_WIDTH, h2, 4.0, &ny);
+  double *x0 = symmetric_axis(FINE_HALF_WIDTH, h2, 4.0, &nx);
+  double *p0 = graded_axis(FINE_HALF_WIDTH, h2, 4.0, &ny);
+  double *x = x0 ? refined_axis(x0, nx, o) : NULL, *p = p0 ? refined_axis(p0, ny, o) : NULL;
+  int *new_id = NULL;
   int rc = 1;
   if (!x || !p) goto done;
+  const int nI = o * nx + 1, nJ = o * ny + 1;
 
-  m->n_nodes = (nx + 1) * (ny + 1);
+  m->n_nodes = nI * nJ;
   m->xy = malloc((size_t)m->n_nodes * 2 * sizeof *m->xy);
   if (!m->xy) goto done;
-  for (int j = 0; j <= ny; ++j) {
+  for (int J = 0; J < nJ; ++J) {
     /* graded_axis runs from the fine end (y = 0) down to y = -4 */
-    const double y = j == ny ? 0.0 : -p[ny - j];
-    for (int i = 0; i <= nx; ++i) {
-      m->xy[2 * (j * (nx + 1) + i)] = x[i];
-      m->xy[2 * (j * (nx + 1) + i) + 1] = y;
+    const double y = J == nJ - 1 ? 0.0 : -p[nJ - 1 - J];
+    for (int I = 0; I < nI; ++I) {
+      m->xy[2 * (J * nI + I)] = x[I];
+      m->xy[2 * (J * nI + I) + 1] = y;
     }
   }
-  m->nodes_per_cell = quads ? 4 : 3;
-  m->cells = grid_cells(nx, ny, quads, -1, -1, &m->n_cells);
+  m->nodes_per_cell = npc;
+  m->cells = lattice_cells(nx, ny, npc, -1, -1, &m->n_cells);
   if (!m->cells) goto done;
 
-  sc->bottom_nodes = malloc((size_t)(nx + 1) * sizeof *sc->bottom_nodes);
+  sc->bottom_nodes = malloc((size_t)nI * sizeof *sc->bottom_nodes);
   sc->contact_edges[1] = malloc((size_t)nx * 2 * sizeof *sc->contact_edges[1]);
-  if (!sc->bottom_nodes || !sc->contact_edges[1]) goto done;
-  sc->n_bottom_nodes = nx + 1;
-  for (int i = 0; i <= nx; ++i) sc->bottom_nodes[i] = i;
-  /* top edges oriented as the counter-clockwise boundary walk (right to left) */
+  new_id = malloc((size_t)m->n_nodes * sizeof *new_id);
+  if (!sc->bottom_nodes || !sc->contact_edges[1] || !new_id) goto done;
+  sc->n_bottom_nodes = nI;
+  for (int I = 0; I < nI; ++I) sc->bottom_nodes[I] = I;
+  /* top edges, by their corners, oriented as the counter-clockwise boundary walk (right to left) */
   sc->n_contact_edges[1] = 0;
+  const int top = (nJ - 1) * nI;
   for (int i = nx - 1; i >= 0; --i)
-    add_if_inside(sc->contact_edges[1], &sc->n_contact_edges[1], m->xy,
-                  ny * (nx + 1) + i + 1, ny * (nx + 1) + i, 1.0);
+    add_if_inside(sc->contact_edges[1], &sc->n_contact_edges[1], m->xy, top + o * (i + 1), top + o * i, 1.0);
+  if (npc == 8) { /* the cells' centres are no nodes */
+    compact_lattice(m, new_id);
+    renumber(sc->bottom_nodes, sc->n_bottom_nodes, new_id);
+    renumber(sc->contact_edges[1], 2 * sc->n_contact_edges[1], new_id);
+  }
   rc = 0;
 done:
-  free(x);
-  free(p);
+  free(x0), free(p0), free(x), free(p), free(new_id);
   return rc;
 }
 
-static int build_disc(hertz_scene *sc, double h1, int quads)
+static int build_disc(hertz_scene *sc, double h1, int npc)
 {
   hertz_mesh *m = &sc->body[0];
   const double r2 = sqrt(2.0);
+  const int o = npc > 4 ? 2 : 1;
   int ns, nt;
-  double *s = symmetric_axis(FINE_HALF_WIDTH * r2, h1 * r2, 1.0, &ns);
-  double *q = graded_axis(FINE_HALF_WIDTH * r2, h1 * r2, 1.0, &nt); /* t = -1 + q */
+  double *s0 = symmetric_axis(FINE_HALF_WIDTH * r2, h1 * r2, 1.0, &ns);
+  double *q0 = graded_axis(FINE_HALF_WIDTH * r2, h1 * r2, 1.0, &nt); /* t = -1 + q */
+  double *s = s0 ? refined_axis(s0, ns, o) : NULL, *q = q0 ? refined_axis(q0, nt, o) : NULL;
+  int *new_id = NULL;
   int rc = 1;
   if (!s || !q) goto done;
+  const int nI = o * ns + 1, nJ = o * nt + 1, axis = o * ns / 2;
 
-  m->n_nodes = (ns + 1) * (nt + 1);
+  m->n_nodes = nI * nJ;
   m->xy = malloc((size_t)m->n_nodes * 2 * sizeof *m->xy);
   if (!m->xy) goto done;
-  for (int j = 0; j <= nt; ++j) {
-    const double t = j == nt ? 0.0 : -1.0 + q[j];
-    for (int i = 0; i <= ns; ++i) {
-      double x = s[i] * sqrt(1.0 - 0.5 * t * t);
-      double y = t * sqrt(1.0 - 0.5 * s[i] * s[i]); /* relative to the centre (0,1) */
-      if (j == 0 || i == 0 || i == ns) {
+  for (int J = 0; J < nJ; ++J) {
+    const double t = J == nJ - 1 ? 0.0 : -1.0 + q[J];
+    for (int I = 0; I < nI; ++I) {
+      double x = s[I] * sqrt(1.0 - 0.5 * t * t);
+      double y = t * sqrt(1.0 - 0.5 * s[I] * s[I]); /* relative to the centre (0,1) */
+      if (J == 0 || I == 0 || I == nI - 1) {
         /* the map puts these on the circle only up to rounding; the contact
-           geometry and the area check want them exactly at radius 1 */
+           geometry and the area check want them exactly at radius 1 (a quadratic
+           mesh's mid-edge nodes too: its edges are then parabolas through three
+           points of the circle) */
         const double r = hypot(x, y);
         x /= r;
         y /= r;
       }
-      if (i == ns / 2) x = 0.0; /* s = 0 gives 0 anyway; keep the axis exact by construction */
-      m->xy[2 * (j * (ns + 1) + i)] = x;
-      m->xy[2 * (j * (ns + 1) + i) + 1] = j == nt ? 1.0 : 1.0 + y;
+      if (I == axis) x = 0.0; /* s = 0 gives 0 anyway; keep the axis exact by construction */
+      m->xy[2 * (J * nI + I)] = x;
+      m->xy[2 * (J * nI + I) + 1] = J == nJ - 1 ? 1.0 : 1.0 + y;
     }
   }
   /* At the corner (s,t) = (1,-1) the map is singular (both grid directions turn
@@ -206,52 +279,69 @@ static int build_disc(hertz_scene *sc, double h1, int quads)
      make a sliver with all three vertices on the arc. The other diagonal gives
      two triangles that each use the interior vertex. At (s,t) = (-1,-1) the
      default diagonal already does so. */
-  m->nodes_per_cell = quads ? 4 : 3;
-  m->cells = grid_cells(ns, nt, quads, ns - 1, 0, &m->n_cells);
+  m->nodes_per_cell = npc;
+  m->cells = lattice_cells(ns, nt, npc, ns - 1, 0, &m->n_cells);
   if (!m->cells) goto done;
 
-  sc->axis_nodes = malloc((size_t)(nt + 1) * sizeof *sc->axis_nodes);
+  sc->axis_nodes = malloc((size_t)nJ * sizeof *sc->axis_nodes);
   sc->top_edges = malloc((size_t)ns * 2 * sizeof *sc->top_edges);
   sc->contact_edges[0] = malloc((size_t)(ns + 2 * nt) * 2 * sizeof *sc->contact_edges[0]);
-  if (!sc->axis_nodes || !sc->top_edges || !sc->contact_edges[0]) goto done;
-  sc->n_axis_nodes = nt + 1;
-  for (int j = 0; j <= nt; ++j) sc->axis_nodes[j] = j * (ns + 1) + ns / 2;
+  new_id = malloc((size_t)m->n_nodes * sizeof *new_id);
+  if (!sc->axis_nodes || !sc->top_edges || !sc->contact_edges[0] || !new_id) goto done;
+  sc->n_axis_nodes = nJ;
+  for (int J = 0; J < nJ; ++J) sc->axis_nodes[J] = J * nI + axis;
   sc->n_top_edges = ns;
+  const int top = (nJ - 1) * nI;
   for (int k = 0; k < ns; ++k) { /* right to left: counter-clockwise boundary walk */
     const int i = ns - 1 - k;
-    sc->top_edges[2 * k] = nt * (ns + 1) + i + 1;
-    sc->top_edges[2 * k + 1] = nt * (ns + 1) + i;
+    sc->top_edges[2 * k] = top + o * (i + 1);
+    sc->top_edges[2 * k + 1] = top + o * i;
   }
   /* The whole arc is t = -1 plus the sides s = +-1; the |x| <= 0.5 filter keeps
      only part of t = -1 (the sides have |x| >= 1/sqrt(2)), but testing every arc
      edge keeps the rule what the header says. Walk: left side down, bottom
-     left to right, right side up. */
+     left to right, right side up. Edges by their corners. */
   int *e = sc->contact_edges[0];
   int ne = 0;
-  for (int j = nt; j > 0; --j) add_if_inside(e, &ne, m->xy, j * (ns + 1), (j - 1) * (ns + 1), 0.5);
-  for (int i = 0; i < ns; ++i) add_if_inside(e, &ne, m->xy, i, i + 1, 0.5);
-  for (int j = 0; j < nt; ++j)
-    add_if_inside(e, &ne, m->xy, j * (ns + 1) + ns, (j + 1) * (ns + 1) + ns, 0.5);
+  for (int j = nt; j > 0; --j) add_if_inside(e, &ne, m->xy, o * j * nI, o * (j - 1) * nI, 0.5);
+  for (int i = 0; i < ns; ++i) add_if_inside(e, &ne, m->xy, o * i, o * (i + 1), 0.5);
+  for (int j = 0; j < nt; ++j) add_if_inside(e, &ne, m->xy, o * j * nI + nI - 1, o * (j + 1) * nI + nI - 1, 0.5);
   sc->n_contact_edges[0] = ne;
+  if (npc == 8) {
+    compact_lattice(m, new_id);
+    renumber(sc->axis_nodes, sc->n_axis_nodes, new_id);
+    renumber(sc->top_edges, 2 * sc->n_top_edges, new_id);
+    renumber(sc->contact_edges[0], 2 * ne, new_id);
+  }
   rc = 0;
 done:
-  free(s);
-  free(q);
+  free(s0), free(q0), free(s), free(q), free(new_id);
   return rc;
 }
 
-int hertz_scene_build(hertz_scene *s, double h1, double h2, int quads)
+int hertz_scene_build_cells(hertz_scene *s, double h1, double h2, int nodes_per_cell)
 {
   if (!s) return 1;
   memset(s, 0, sizeof *s);
   /* Upper bound: coarser spacings leave no room for a graded tail in body 1
      (fine zone 0.4 sqrt(2) of the unit square side). !(a > 0) also rejects NaN. */
-  if (!(h1 > 0.0) || !(h2 > 0.0) || h1 > 0.2 || h2 > 0.2 || (quads != 0 && quads != 1)) return 1;
-  if (build_disc(s, h1, quads) || build_block(s, h2, quads)) {
+  const int npc = nodes_per_cell;
+  if (!(h1 > 0.0) || !(h2 > 0.0) || h1 > 0.2 || h2 > 0.2 || (npc != 3 && npc != 4 && npc != 6 && npc != 8 && npc != 9))
+    return 1;
+  if (build_disc(s, h1, npc) || build_block(s, h2, npc)) {
     hertz_scene_free(s);
     return 2;
   }
   return 0;
+}
+
+int hertz_scene_build(hertz_scene *s, double h1, double h2, int quads)
+{
+  if (s && quads != 0 && quads != 1) {
+    memset(s, 0, sizeof *s);
+    return 1;
+  }
+  return hertz_scene_build_cells(s, h1, h2, quads ? 4 : 3);
 }
 
 void hertz_scene_free(hertz_scene *s)
@@ -323,7 +413,16 @@ static int keep_nodes(int *nodes, int n, const int *new_id)
 
 int hertz_scene_axisymmetric(hertz_scene *s, double h1, double h2, int quads)
 {
-  int b, status = hertz_scene_build(s, h1, h2, quads);
+  if (s && quads != 0 && quads != 1) {
+    memset(s, 0, sizeof *s);
+    return 1;
+  }
+  return hertz_scene_axisymmetric_cells(s, h1, h2, quads ? 4 : 3);
+}
+
+int hertz_scene_axisymmetric_cells(hertz_scene *s, double h1, double h2, int nodes_per_cell)
+{
+  int b, status = hertz_scene_build_cells(s, h1, h2, nodes_per_cell);
   if (status) return status;
   for (b = 0; b < 2; ++b) {
     int *new_id = malloc(sizeof(int) * (size_t)s->body[b].n_nodes);

@@ -20,7 +20,7 @@ typedef struct hertz_mesh {
   int n_nodes;
   double *xy;         /* 2 per node */
   int n_cells;
-  int nodes_per_cell; /* 3 = P1 triangles, 4 = Q1 quadrilaterals; counter-clockwise */
+  int nodes_per_cell; /* 3 = P1 triangles, 4 = Q1, 6 = T6, 8 = Q8, 9 = Q9; counter-clockwise */
   int *cells;         /* nodes_per_cell per cell, 0-based */
 } hertz_mesh;
 
@@ -42,6 +42,14 @@ typedef struct hertz_scene {
    along the other diagonal (three arc vertices would make a sliver). Near both arc corners
    the elliptical map is singular: cells there are thin but valid (see hertz_scene.c). */
 int hertz_scene_build(hertz_scene *s, double h1, double h2, int quads);
+/* The same scene with cells of any kind the library has: nodes_per_cell = 3 (P1), 4 (Q1) (as
+   hertz_scene_build with quads 0, 1), 6 (T6), 8 (Q8) or 9 (Q9). Quadratic meshes are the same
+   grids with a mid-edge node at the parameter middle of each cell edge, mapped like the
+   corners (so the disc's arc nodes, mid-edge ones included, lie on the circle and its edges are
+   curved), numbered row by row on the lattice of corners and middles (a Q8 mesh skips the
+   cells' centres). Edge lists name each edge by its two corners; axis, bottom and top node
+   lists hold every node there, mid-edge ones included. */
+int hertz_scene_build_cells(hertz_scene *s, double h1, double h2, int nodes_per_cell);
 void hertz_scene_free(hertz_scene *s); /* NULL-safe, frees everything */
 /* The axisymmetric scene "sphere on a flat" (3D Hertz): the part x >= 0 of the same meshes,
    read as meridians with x = r and y the axis: body 1 = the lower hemisphere of radius 1
@@ -49,6 +57,7 @@ void hertz_scene_free(hertz_scene *s); /* NULL-safe, frees everything */
    Edge and node lists keep their members with x >= 0 (axis_nodes: the nodes on the axis).
    Returns as hertz_scene_build, or 3 if a cell straddles x = 0. */
 int hertz_scene_axisymmetric(hertz_scene *s, double h1, double h2, int quads);
+int hertz_scene_axisymmetric_cells(hertz_scene *s, double h1, double h2, int nodes_per_cell);
 /* 3D Hertz of that scene for a total force `load`: a^3 = 3 P R / (4 E*), p0 = 3 P / (2 pi a^2),
    approach of distant points delta = a^2 / R (R = 1, E = 1, nu = 0.3 both). Any output may be NULL. */
 void hertz_analytic_sphere(double load, double *a, double *p0, double *approach);
