@@ -364,7 +364,8 @@ MC_API mc_status mc_get_reaction(const mc_model *m, int body, double *r);
 /* Number of body-1 contact positions (the length of the arrays below): the nodes of body 1's
    contact surface, except that a corner node where the smooth surface is split
    (MC_OPTION_FEATURE_ANGLE) counts once per face, each with that face's normal and its own
-   constraint. */
+   constraint. On a quadratic surface (T6, Q8, Q9 cells) the mid-edge nodes are positions too,
+   each right after its edge's first corner. */
 MC_API mc_status mc_get_contact_count(const mc_model *m, mc_int *n);
 /* Their node ids (index base applies), in order along each face of the surface. */
 MC_API mc_status mc_get_contact_nodes(const mc_model *m, mc_int *nodes);
@@ -373,12 +374,16 @@ MC_API mc_status mc_get_contact_nodes(const mc_model *m, mc_int *nodes);
    which is exact for uniform pressure. Axisymmetric: p_j = f_j / (integral of phi_j 2 pi r
    over Gamma_c), per unit area of the true surface; at a node on the axis that area is small
    (2 pi h^2 / 6 for an edge of length h) and the pressure correspondingly less accurate than
-   elsewhere; a node whose contact edges all lie on the axis reports 0. */
+   elsewhere; a node whose contact edges all lie on the axis reports 0. With quadratic cells in
+   body 1: the method's own pressure field, continuous and piecewise linear on the corner nodes
+   (the multipliers, docs/theory.md section 2b), a middle getting the mean of its corners. */
 MC_API mc_status mc_get_contact_pressure(const mc_model *m, double *p);
 /* Normal contact forces f_j >= 0 on body 1 at those positions (total force, thickness
    included; axisymmetric: total over the node's ring), pushing body 1 along -n_j: the
    multiplier of the position's own constraint row, plus its share of a row at an end of
-   Gamma_c inside one of its edges. */
+   Gamma_c inside one of its edges. With quadratic cells in body 1: the consistent nodal
+   forces of the pressure field (1/6, 2/3, 1/6 of an edge's share for a uniform pressure); a
+   corner's can be slightly negative where the pressure varies fast. */
 MC_API mc_status mc_get_contact_force(const mc_model *m, double *f);
 /* Discrete gap after the solve: g0_j - (u1_j - pi(u2)_j).n_j >= 0 (the row of the cone K_h);
    +infinity for positions that see no mortar surface. */
