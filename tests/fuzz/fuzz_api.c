@@ -309,7 +309,7 @@ enum {
   OP_NEW_MODEL,      /* -                                                           */
   OP_INDEX_BASE,     /* byte: base = byte % 4 - 1                                   */
   OP_PLANE,          /* byte: plane = byte % 3 - (byte >= 128); real: thickness     */
-  OP_GRID_MESH,      /* body, byte npc (3 + b&1), byte nx, byte ny, real x0, y0, lx, ly,
+  OP_GRID_MESH,      /* body, byte kind (b % 7: npc 3, 4, 4, 6, 4, 8, 9), byte nx, byte ny, real x0, y0, lx, ly,
                         byte distortion, real bow, byte corrupt [, corruption operands] */
   OP_RAW_MESH,       /* body, count n_nodes, 2n reals, count n_cells, byte npc (2..5), ids, byte nulls */
   OP_MATERIAL,       /* body, real young, real poisson                              */
@@ -335,44 +335,61 @@ enum {
   OP_COUNT
 };
 
+/* A structured grid of any cell kind: the lattice of corners (order 1) or of corners and
+   mid-edge points (order 2, (2 nx + 1) x (2 ny + 1) points, a Q8 grid without the squares'
+   centres), bowed and distorted as one, sides as corner pairs. */
 static void op_grid_mesh(harness *h, stream *s) {
+  static const int kinds[7] = {3, 4, 4, 6, 4, 8, 9};
   mc_model *m = h->m;
-  int body = read_body(s), npc = 3 + (read_u8(s) & 1), nx = 1 + read_u8(s) % MAX_NX, ny = 1 + read_u8(s) % MAX_NY;
+  int body = read_body(s), npc = kinds[read_u8(s) % 7], nx = 1 + read_u8(s) % MAX_NX, ny = 1 + read_u8(s) % MAX_NY;
   double x0 = read_real(s), y0 = read_real(s), lx = read_real(s), ly = read_real(s);
   double distortion = (read_u8(s) % 32) / 128.0, bow = read_real(s);
   int corrupt = read_u8(s) % 4; /* 0 none, 1 one coordinate, 2 one cell id, 3 swap two ids of a cell */
-  mc_int n_nodes = (nx + 1) * (ny + 1), n_cells = npc == 4 ? nx * ny : 2 * nx * ny;
-  double xy[2 * (MAX_NX + 1) * (MAX_NY + 1)];
-  mc_int cells[6 * MAX_NX * MAX_NY]; /* P1: 2 triangles of 3 nodes per square */
+  const int o = npc > 4 ? 2 : 1, quad = npc == 4 || npc == 8 || npc == 9, nI = o * nx + 1, nJ = o * ny + 1;
+  mc_int n_cells = quad ? nx * ny : 2 * nx * ny, n_nodes = 0;
+  double xy[2 * (2 * MAX_NX + 1) * (2 * MAX_NY + 1)];
+  mc_int cells[12 * MAX_NX * MAX_NY], id[(2 * MAX_NX + 1) * (2 * MAX_NY + 1)]; /* T6: 2 x 6 per square */
   int i, j, k;
   unsigned state = 12345u;
   if (lx == 0) lx = 1;
   if (ly == 0) ly = 1;
-  for (j = 0; j <= ny; ++j)
-    for (i = 0; i <= nx; ++i) {
-      int id = j * (nx + 1) + i;
-      double t = 2.0 * i / nx - 1;
-      xy[2 * id] = x0 + lx * i / nx;
-      xy[2 * id + 1] = y0 + ly * j / ny + bow * t * t * (1.0 - (double)j / ny);
-      if (i > 0 && j > 0 && i < nx && j < ny && distortion > 0) {
-        state = state * 1103515245u + 12345u;
-        xy[2 * id] += distortion * lx / nx * (((state >> 8) & 0xffff) / 65536.0 - 0.5);
-        state = state * 1103515245u + 12345u;
-        xy[2 * id + 1] += distortion * ly / ny * (((state >> 8) & 0xffff) / 65536.0 - 0.5);
-      }
-    }
   k = 0;
   for (j = 0; j < ny; ++j)
     for (i = 0; i < nx; ++i) {
-      mc_int a = j * (nx + 1) + i, b = a + 1, c = b + nx + 1, d = a + nx + 1;
-      if (npc == 4) {
+      const int I = o * i, J = o * j;
+      const mc_int a = J * nI + I, b = a + o, c = b + o * nI, d = a + o * nI;
+      if (quad) {
         cells[k++] = a, cells[k++] = b, cells[k++] = c, cells[k++] = d;
+        if (o == 2) {
+          cells[k++] = a + 1, cells[k++] = b + nI, cells[k++] = d + 1, cells[k++] = a + nI;
+          if (npc == 9) cells[k++] = a + nI + 1;
+        }
       } else {
         cells[k++] = a, cells[k++] = b, cells[k++] = c;
+        if (o == 2) cells[k++] = a + 1, cells[k++] = b + nI, cells[k++] = a + nI + 1;
         cells[k++] = a, cells[k++] = c, cells[k++] = d;
+        if (o == 2) cells[k++] = a + nI + 1, cells[k++] = d + 1, cells[k++] = a + nI;
       }
     }
-  for (k = 0; k < npc * n_cells; ++k) cells[k] += h->base;
+  for (k = 0; k < nI * nJ; ++k) id[k] = -1;
+  for (k = 0; k < npc * n_cells; ++k) id[cells[k]] = 0;
+  for (k = 0; k < nI * nJ; ++k)
+    if (id[k] == 0) id[k] = n_nodes++;
+  for (j = 0; j < nJ; ++j)
+    for (i = 0; i < nI; ++i) {
+      const int n = id[j * nI + i];
+      if (n < 0) continue;
+      double t = 2.0 * i / (nI - 1) - 1;
+      xy[2 * n] = x0 + lx * i / (nI - 1);
+      xy[2 * n + 1] = y0 + ly * j / (nJ - 1) + bow * t * t * (1.0 - (double)j / (nJ - 1));
+      if (i > 0 && j > 0 && i < nI - 1 && j < nJ - 1 && distortion > 0) {
+        state = state * 1103515245u + 12345u;
+        xy[2 * n] += distortion * lx / nx * (((state >> 8) & 0xffff) / 65536.0 - 0.5);
+        state = state * 1103515245u + 12345u;
+        xy[2 * n + 1] += distortion * ly / ny * (((state >> 8) & 0xffff) / 65536.0 - 0.5);
+      }
+    }
+  for (k = 0; k < npc * n_cells; ++k) cells[k] = id[cells[k]] + h->base;
   if (corrupt == 1) {
     xy[read_u8(s) % (2 * n_nodes)] = read_real(s);
   } else if (corrupt == 2) {
@@ -385,16 +402,18 @@ static void op_grid_mesh(harness *h, stream *s) {
   }
   if (CALL(mc_set_mesh(m, body, n_nodes, xy, n_cells, npc, cells)) == MC_OK) {
     body_state *b = tracked(h, body);
+#define C(I, J) id[(J) * nI + (I)]
     memset(b, 0, sizeof *b);
     b->meshed = 1, b->n_nodes = n_nodes, b->n_cells = n_cells, b->grid = 1;
-    for (i = 0; i < nx; ++i) { /* bottom, left to right; top, right to left */
-      b->side[0][2 * i] = i, b->side[0][2 * i + 1] = i + 1;
-      b->side[2][2 * i] = ny * (nx + 1) + nx - i, b->side[2][2 * i + 1] = ny * (nx + 1) + nx - i - 1;
+    for (i = 0; i < nx; ++i) { /* bottom, left to right; top, right to left (corner pairs) */
+      b->side[0][2 * i] = C(o * i, 0), b->side[0][2 * i + 1] = C(o * (i + 1), 0);
+      b->side[2][2 * i] = C(o * (nx - i), nJ - 1), b->side[2][2 * i + 1] = C(o * (nx - i - 1), nJ - 1);
     }
     for (j = 0; j < ny; ++j) { /* right, bottom to top; left, top to bottom */
-      b->side[1][2 * j] = j * (nx + 1) + nx, b->side[1][2 * j + 1] = (j + 1) * (nx + 1) + nx;
-      b->side[3][2 * j] = (ny - j) * (nx + 1), b->side[3][2 * j + 1] = (ny - j - 1) * (nx + 1);
+      b->side[1][2 * j] = C(nI - 1, o * j), b->side[1][2 * j + 1] = C(nI - 1, o * (j + 1));
+      b->side[3][2 * j] = C(0, o * (ny - j)), b->side[3][2 * j + 1] = C(0, o * (ny - j - 1));
     }
+#undef C
     b->n_side[0] = b->n_side[2] = nx;
     b->n_side[1] = b->n_side[3] = ny;
   }

@@ -54,6 +54,7 @@ def count(n):
 
 
 def grid(b, npc, nx, ny, x0, y0, lx, ly, distortion=0, bow=0.0, corrupt=b"\x00"):
+    # the kind byte: b % 7 picks npc from (3, 4, 4, 6, 4, 8, 9), so npc - 3 gives npc
     return (op("GRID_MESH") + body(b) + u8(npc - 3) + u8(nx - 1) + u8(ny - 1) + real(x0) + real(y0)
             + real(lx) + real(ly) + u8(distortion) + real(bow) + corrupt)
 
@@ -168,6 +169,18 @@ SEEDS = {
     "interface_solver": stack() + option_int(11, 2) + solve() + traction_side(1, TOP, 0.5, -2) + solve()
     + option_int(11, 1) + solve() + option_int(11, 3) + option_int(11, -1) + option_real(11, 1.0)
     + option_int(11, 0) + solve() + op("QUERY"),
+    # quadratic cells (issue 21): T6 pressed on Q8, then Q9 on P1 with a curved (bowed) body 1,
+    # dual mortar (refused on a quadratic body 1), node-to-segment, both interface solvers, and a
+    # corrupted Q9 grid (a swapped mid-edge node folds its cell)
+    "quadratic_contact": grid(1, 6, 4, 2, 0, 0, 1, 0.5) + grid(2, 8, 5, 2, 0, -0.5, 1, 0.5)
+    + material(1, 100.0, 0.3) + material(2, 200.0, 0.3) + fix_side(2, BOTTOM, 3) + fix_side(1, LEFT, 1)
+    + fix_side(2, LEFT, 1) + pressure_side(1, TOP, 1.0) + contact_side(1, BOTTOM) + contact_side(2, TOP) + solve()
+    + option_int(1, 1) + solve() + option_int(1, 2) + solve() + option_int(1, 0) + option_int(11, 2) + solve()
+    + op("QUERY") + op("WRITE_VTU") + u8(0)
+    + grid(1, 9, 4, 2, -0.5, 0, 1, 0.5, bow=0.125) + grid(2, 3, 6, 2, -1, -0.5, 2, 0.5)
+    + material(1, 1.0, 0.3) + material(2, 1.0, 0.3) + fix_side(2, BOTTOM, 3)
+    + fix_side(1, TOP, 3, (0.0, -0.0625)) + contact_side(1, BOTTOM) + contact_side(2, TOP) + solve()
+    + grid(1, 9, 2, 2, 0, 0, 1, 1, corrupt=u8(3) + u8(0) + u8(4) + u8(0)),
     "fully_supported_and_overflow": grid(2, 4, 1, 1, 0, -1, 2, 1) + material(2, 1.0, 0.3)
     + fix_side(2, BOTTOM, 3) + fix_side(2, TOP, 3) + solve()
     + grid(1, 4, 2, 2, 0, 0, 1, 1) + material(1, 1.0, 0.3) + fix_side(1, TOP, 3, (0.0, -0.125))
