@@ -21,6 +21,7 @@
  *        each solve's nonzero nodal pressures against x)
  */
 #include "mortarcontact.h"
+#include "scenes.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -28,69 +29,11 @@
 
 #define PI 3.14159265358979323846
 
-typedef struct mesh {
-  int npc, n_nodes, n_cells, nI, nJ;
-  double *xy;
-  mc_int *cells, *lattice; /* lattice point (I, J) -> node or -1 */
-} mesh;
-
-/* The rectangle lattice [-1, 1] x [0, 1] with 2n x ny squares of kind npc (as tests/scenes.c,
-   sc_mesh_cells), then mapped by map(xi, eta). */
-static void build(mesh *m, int npc, int n2, int ny, int criss, void (*map)(double, double, double *, double *, void *),
-                  void *ctx) {
-  const int o = npc > 4 ? 2 : 1, quad = npc == 4 || npc == 8 || npc == 9;
-  m->npc = npc, m->nI = o * n2 + 1, m->nJ = o * ny + 1;
-  m->n_cells = quad ? n2 * ny : 2 * n2 * ny;
-  m->cells = malloc(sizeof(mc_int) * (size_t)npc * (size_t)m->n_cells);
-  m->lattice = malloc(sizeof(mc_int) * (size_t)m->nI * (size_t)m->nJ);
-  mc_int *c = m->cells;
-  const int row = m->nI;
-#define L(I, J) ((mc_int)((J) * row + (I)))
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < n2; ++i) {
-      const int I = o * i, J = o * j;
-      const mc_int a = L(I, J), b = L(I + o, J), cc = L(I + o, J + o), d = L(I, J + o);
-      if (quad) {
-        c[0] = a, c[1] = b, c[2] = cc, c[3] = d;
-        if (o == 2) {
-          c[4] = L(I + 1, J), c[5] = L(I + 2, J + 1), c[6] = L(I + 1, J + 2), c[7] = L(I, J + 1);
-          if (npc == 9) c[8] = L(I + 1, J + 1);
-        }
-        c += npc;
-      } else if (!criss || (i + j) % 2 == 0) {
-        c[0] = a, c[1] = b, c[2] = cc;
-        if (o == 2) c[3] = L(I + 1, J), c[4] = L(I + 2, J + 1), c[5] = L(I + 1, J + 1);
-        c += npc;
-        c[0] = a, c[1] = cc, c[2] = d;
-        if (o == 2) c[3] = L(I + 1, J + 1), c[4] = L(I + 1, J + 2), c[5] = L(I, J + 1);
-        c += npc;
-      } else {
-        c[0] = a, c[1] = b, c[2] = d;
-        if (o == 2) c[3] = L(I + 1, J), c[4] = L(I + 1, J + 1), c[5] = L(I, J + 1);
-        c += npc;
-        c[0] = b, c[1] = cc, c[2] = d;
-        if (o == 2) c[3] = L(I + 2, J + 1), c[4] = L(I + 1, J + 2), c[5] = L(I + 1, J + 1);
-        c += npc;
-      }
-    }
-#undef L
-  for (int k = 0; k < m->nI * m->nJ; ++k) m->lattice[k] = -1;
-  for (int k = 0; k < m->n_cells * npc; ++k) m->lattice[m->cells[k]] = 0;
-  m->n_nodes = 0;
-  for (int k = 0; k < m->nI * m->nJ; ++k)
-    if (m->lattice[k] == 0) m->lattice[k] = m->n_nodes++;
-  for (int k = 0; k < m->n_cells * npc; ++k) m->cells[k] = m->lattice[m->cells[k]];
-  m->xy = malloc(sizeof(double) * 2 * (size_t)m->n_nodes);
-  for (int J = 0; J < m->nJ; ++J)
-    for (int I = 0; I < m->nI; ++I) {
-      const mc_int id = m->lattice[J * m->nI + I];
-      if (id < 0) continue;
-      const double xi = I == (m->nI - 1) / 2 ? 0 : -1 + 2.0 * I / (m->nI - 1), eta = (double)J / (m->nJ - 1);
-      map(xi, eta, &m->xy[2 * id], &m->xy[2 * id + 1], ctx);
-    }
+/* Node of lattice point (I, J) of a mesh from sc_mesh_cells (tests/scenes.h). */
+static mc_int node_at(const sc_mesh *m, int I, int J) {
+  const int order = m->npc > 4 ? 2 : 1;
+  return m->lattice[J * (order * m->nx + 1) + I];
 }
-
-static mc_int node_at(const mesh *m, int I, int J) { return m->lattice[J * m->nI + I]; }
 
 typedef struct shape {
   double radius, half_width, height, beta, gamma;
@@ -100,8 +43,9 @@ typedef struct shape {
 /* x = W (beta xi + (1 - beta) xi^3): spacing W beta / n at the contact point, growing outwards;
    body 1: y from its arc (eta = 0) up to the height, body 2: from -height (eta = 0) up to its arc;
    psi grades the spacing towards the arc (gamma: the first step's fraction of a uniform one). */
-static void shape_map(double xi, double eta, double *x, double *y, void *ctx) {
+static void shape_map(double *x, double *y, void *ctx) {
   const shape *s = ctx;
+  const double xi = *x, eta = *y;
   const double X = xi == 0 ? 0 : s->half_width * (s->beta * xi + (1 - s->beta) * xi * xi * xi);
   const double r = s->radius;
   *x = X;
@@ -127,12 +71,17 @@ typedef struct outcome {
 static outcome solve(int npc, int criss, double h, int coarse) {
   const int n_half = coarse ? 20 : 40, ny = coarse ? 12 : 24;
   if (coarse) h *= 2;
-  mesh b[2];
   shape s1 = {1, 0.6, 0.6, 0, 0, 1}, s2 = {3, 1.5, 1.5, 0, 0, 0};
   s1.beta = h * n_half / s1.half_width, s2.beta = h * n_half / s2.half_width;
   s1.gamma = h * ny / s1.height, s2.gamma = h * ny / s2.height;
-  build(&b[0], npc, 2 * n_half, ny, criss, shape_map, &s1);
-  build(&b[1], npc, 2 * n_half, ny, criss, shape_map, &s2);
+  sc_mesh b[2]; /* the rectangle [-1, 1] x [0, 1] mapped by shape_map */
+  if (sc_mesh_cells(&b[0], npc, 2 * n_half, ny, -1, 0, 2, 1, criss) || sc_mesh_cells(&b[1], npc, 2 * n_half, ny, -1, 0, 2, 1, criss)) {
+    fprintf(stderr, "mesh generation failed\n");
+    exit(1);
+  }
+  sc_mesh_map(&b[0], shape_map, &s1);
+  sc_mesh_map(&b[1], shape_map, &s2);
+  const int nI = (npc > 4 ? 2 : 1) * 2 * n_half + 1, nJ = (npc > 4 ? 2 : 1) * ny + 1;
   mc_model *m = NULL;
   mc_create(&m);
   const int o = npc > 4 ? 2 : 1;
@@ -144,12 +93,12 @@ static outcome solve(int npc, int criss, double h, int coarse) {
     mc_set_material(m, k + 1, 1, 0.3);
   }
   /* body 1: u_x = 0 on its axis (lattice column nI / 2); load on its top; contact on its arc */
-  mc_int *ids = malloc(sizeof(mc_int) * (size_t)(b[0].nJ + b[1].nI + 2 * b[0].nI));
+  mc_int *ids = malloc(sizeof(mc_int) * (size_t)(nJ + nI + 2 * nI));
   int n = 0;
-  for (int J = 0; J < b[0].nJ; ++J) ids[n++] = node_at(&b[0], b[0].nI / 2, J);
+  for (int J = 0; J < nJ; ++J) ids[n++] = node_at(&b[0], nI / 2, J);
   mc_fix(m, 1, n, ids, MC_X, NULL);
   n = 0;
-  for (int I = 0; I < b[1].nI; ++I) ids[n++] = node_at(&b[1], I, 0);
+  for (int I = 0; I < nI; ++I) ids[n++] = node_at(&b[1], I, 0);
   mc_fix(m, 2, n, ids, MC_XY, NULL);
   const int cells_across = 2 * n_half;
   mc_int *top = malloc(sizeof(mc_int) * 2 * (size_t)cells_across), *arc1 = malloc(sizeof(mc_int) * 2 * (size_t)cells_across),
@@ -158,9 +107,9 @@ static outcome solve(int npc, int criss, double h, int coarse) {
   const double P = 0.01, width = 2 * s1.half_width;
   for (int i = 0; i < cells_across; ++i) {
     /* top of body 1, right to left; arc of body 1 left to right; arc of body 2 right to left */
-    top[2 * i] = node_at(&b[0], o * (cells_across - i), b[0].nJ - 1), top[2 * i + 1] = node_at(&b[0], o * (cells_across - i - 1), b[0].nJ - 1);
+    top[2 * i] = node_at(&b[0], o * (cells_across - i), nJ - 1), top[2 * i + 1] = node_at(&b[0], o * (cells_across - i - 1), nJ - 1);
     arc1[2 * i] = node_at(&b[0], o * i, 0), arc1[2 * i + 1] = node_at(&b[0], o * (i + 1), 0);
-    arc2[2 * i] = node_at(&b[1], o * (cells_across - i), b[1].nJ - 1), arc2[2 * i + 1] = node_at(&b[1], o * (cells_across - i - 1), b[1].nJ - 1);
+    arc2[2 * i] = node_at(&b[1], o * (cells_across - i), nJ - 1), arc2[2 * i + 1] = node_at(&b[1], o * (cells_across - i - 1), nJ - 1);
     traction[2 * i] = 0, traction[2 * i + 1] = -P / width;
   }
   mc_add_traction(m, 1, cells_across, top, traction);
@@ -194,7 +143,7 @@ static outcome solve(int npc, int criss, double h, int coarse) {
     out.ripple = fmax(out.ripple, fabs(p[j] - 0.5 * (p[j - 1] + p[j + 1])) / out.p0);
   }
   free(nodes), free(p), free(ids), free(top), free(arc1), free(arc2), free(traction);
-  for (int k = 0; k < 2; ++k) free(b[k].xy), free(b[k].cells), free(b[k].lattice);
+  sc_mesh_free(&b[0]), sc_mesh_free(&b[1]);
   mc_destroy(m);
   return out;
 }
