@@ -132,11 +132,16 @@ NodalContact nodal_contact(const Model &model) {
   const ContactGeometry &g = model.contact()->geometry;
   // A corner node is a contact position in each of its two faces: its pressure is its total
   // normal force over its total tributary measure, its gaps the smaller one.
+  // (With the weak rows of a quadratic body 1 the pressure is the multiplier field, not the
+  // lumped force: there a corner in two faces gets the mean of its two pressures, weighted by
+  // their tributary measures.)
+  const bool field = !model.contact()->rows.pressure_of_position.empty();
   std::vector<double> force(n, 0.0), tributary(n, 0.0);
   for (size_t pos = 0; pos < g.nodes.size(); ++pos) {
     const int node = g.nodes[pos];
     const bool sees_body2 = std::isfinite(model.contact_gap[pos]);
-    force[node] += model.contact_force[pos], tributary[node] += g.tributary[pos];
+    force[node] += field ? model.contact_pressure[pos] * g.tributary[pos] : model.contact_force[pos];
+    tributary[node] += g.tributary[pos];
     if (sees_body2) {
       const double gap = model.contact_gap[pos], initial = model.initial_gap(pos);
       c.gap[node] = c.constrained[node] ? std::min(c.gap[node], gap) : gap;
