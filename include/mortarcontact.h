@@ -173,6 +173,12 @@ enum {
   MC_SURFACE_FACETED = 1 /* the straight mesh edges, nodal normals the mean of the edge normals (0.1) */
 };
 
+/* Storage of a host body's stiffness entries (mc_add_stiffness). */
+enum {
+  MC_MATRIX_FULL = 1,    /* both triangles given (summed duplicates must be symmetric to round-off) */
+  MC_MATRIX_TRIANGLE = 2 /* one triangle, either, each off-diagonal pair once */
+};
+
 /* Values of MC_OPTION_ORDERING. */
 enum { MC_ORDERING_AUTO = 0, MC_ORDERING_AMD = 1, MC_ORDERING_METIS = 2 };
 
@@ -296,6 +302,8 @@ MC_API mc_status mc_clear_loads(mc_model *m, int body);
 /* Candidate contact surface of a body: boundary edges, 2 node ids each. Body 1 is the
    non-mortar side (the paper's Omega^1: its trace carries the constraint and the
    multipliers); body 2 is the mortar side. Both bodies need one for a contact solve.
+   A host body (mc_set_host_body) has no cells: its edges run with the body on their left, and
+   each node needs an equation in x or y.
    The surface may be open chains or closed loops; consecutive edges that turn by more than
    175 degrees (a chain folding back on itself) are an MC_ERROR_CONTACT naming the node.
    Gamma_c is the part of body 1's surface whose normal lines meet body 2's surface: it may end
@@ -310,6 +318,66 @@ MC_API mc_status mc_set_contact(mc_model *m, int body, mc_int n_edges, const mc_
    are an MC_ERROR_ARGUMENT; before mc_set_contact of body 1, MC_ERROR_STATE. Like loads,
    changing offsets keeps the factorizations and the interface operator for the next solve. */
 MC_API mc_status mc_set_gap_offset(mc_model *m, mc_int n, const mc_int *nodes, const double *offset);
+
+/* ---- host bodies: a legacy program's own matrices (docs/tutorial_legacy.md) ---------------
+
+   A host body has no cells: the host hands over what its own element library and assembly
+   built, in its own equation numbering (Smith and Griffiths' nf/g steering, MUMPS's input):
+   the stiffness, the load vector, and the nodes and edges of the contact surface. The solver
+   treats it like a mesh body (every method, both interface paths, floating bodies, threads,
+   re-solves); the results come back in the host's numbering. Every equation number counts from
+   the index base (mc_set_index_base) like every id; a number below the base means "no equation"
+   (a restrained or absent freedom) and is skipped wherever it appears.
+   What a host body refuses, with a message that says why (MC_ERROR_STATE): materials and cell
+   laws (its stiffness is the host's), mc_fix (its supports are its restrained freedoms: give them
+   no equation), tractions, pressures and body forces (use mc_set_load_vector), and the results
+   that need cells: mc_get_stress, mc_get_nodal_stress, mc_get_reaction. mc_add_nodal_force adds
+   to the load of the node's equations; mc_get_displacement gives 2 per node (0 where a freedom
+   has no equation); mc_write_vtu writes mesh bodies only. */
+
+/* Makes body a host body, replacing what it was (as mc_set_mesh does). n_nodes >= 1 nodes at
+   xy (2 per node): the nodes the contact surface uses, and, for a body that only contact holds,
+   every node of the host's model, whose coordinates give the rigid modes (translations and the
+   rotation; axisymmetric: the axial translation). equations: 2 per node (x then y), the host's
+   equation number of that freedom, or a number below the base for none. n_equations >= 1: the
+   size of the host's system. Each equation number is at most n_equations - 1 + base and belongs
+   to one freedom (MC_ERROR_ARGUMENT naming both nodes otherwise). Equations no node names are
+   fine (freedoms of nodes not given, rotations, internal modes), but a floating body needs all
+   its freedoms on given nodes. */
+MC_API mc_status mc_set_host_body(mc_model *m, int body, mc_int n_nodes, const double *xy, const mc_int *equations,
+                                  mc_int n_equations);
+/* Adds coordinate entries to a host body's stiffness: entry k is values[k] at (rows[k], cols[k]),
+   equation numbers from the index base; duplicates are summed; an entry naming a number below
+   the base is skipped. storage: MC_MATRIX_FULL (both triangles; the entries of one call, summed,
+   must be symmetric to 1e-12 of their largest, else MC_ERROR_ARGUMENT naming the entry) or
+   MC_MATRIX_TRIANGLE (one triangle, either, the same for every off-diagonal entry of the call;
+   the other is its mirror). Repeated calls add. A non-finite value or a number above the system
+   is MC_ERROR_ARGUMENT naming k; a call that fails adds nothing. */
+MC_API mc_status mc_add_stiffness(mc_model *m, int body, mc_int n_entries, const mc_int *rows, const mc_int *cols,
+                                  const double *values, int storage);
+/* Adds element matrices to a host body's stiffness (MUMPS's elemental input, Smith and
+   Griffiths' g and storkm): element e's equations are eltvar[eltptr[e] - base .. eltptr[e+1] -
+   base) (eltptr has n_elements + 1 entries counted from the base: MUMPS's ELTPTR(1) = 1 with base
+   1), its square matrix, full and column by column, follows the previous element's in a_elt.
+   An equation below the base (restrained) skips its row and column. Each element matrix must be
+   symmetric to 1e-12 of its largest entry. A call that fails adds nothing. */
+MC_API mc_status mc_add_element_matrices(mc_model *m, int body, mc_int n_elements, const mc_int *eltptr,
+                                         const mc_int *eltvar, const double *a_elt);
+/* The load of a host body, n_equations values in equation order (replaces the previous one;
+   mc_clear_loads zeroes it). */
+MC_API mc_status mc_set_load_vector(mc_model *m, int body, mc_int n_equations, const double *f);
+/* After a solve: the displacements in equation order (n_equations values) of a host body, or
+   (2 per node) of a mesh body. */
+MC_API mc_status mc_get_equation_solution(const mc_model *m, int body, double *u);
+/* After a solve: the contact forces on the body as a load vector in its equation order
+   (n_equations values for a host body, 2 per node for a mesh body): what a host adds to its
+   residual or its reaction output; K u = f + r on the free equations. */
+MC_API mc_status mc_get_contact_load(const mc_model *m, int body, double *r);
+/* Candidate contact surface of quadratic edges, 3 node ids per edge: end, end, middle (the
+   3-node line of Gmsh and VTK). For a host body the edges run with the body on their left (a
+   boundary walked counter-clockwise); for a mesh body each must be a boundary edge of a cell with
+   that middle node. Otherwise as mc_set_contact. */
+MC_API mc_status mc_set_contact_curved(mc_model *m, int body, mc_int n_edges, const mc_int *edges);
 
 /* ---- options and solving ------------------------------------------------ */
 
