@@ -2,62 +2,18 @@
 // and the boundary no C++ exception crosses. Every entry point follows one pattern: run the
 // body inside guard(), which turns an mc::Error (or any other exception) into a status and
 // the model's message.
+#include "capi_support.hpp"
 #include "cell_shapes.hpp"
-#include "error.hpp"
-#include "model.hpp"
 #include "plane_vectors.hpp"
-#include "mortarcontact.h"
 #include "vtu_writer.hpp"
 #include <cfloat>
-#include <cmath>
 #include <cstring>
-#include <new>
-#include <string>
 
-struct mc_model {
-  mc::Model model;
-  std::string message;
-};
+using namespace mc::capi;
 
 namespace {
 
-// Consecutive contact edges turning by more than this fold back on themselves (mc_set_contact).
-constexpr double kFoldAngleDegrees = 175;
-
 using mc::fail;
-
-template <class F>
-mc_status guard(mc_model *m, F &&body) {
-  if (!m) return MC_ERROR_ARGUMENT;
-  try {
-    body(m->model);
-    m->message.clear();
-    return MC_OK;
-  } catch (const mc::Error &e) {
-    m->message = e.what();
-    return e.status();
-  } catch (const std::bad_alloc &) {
-    m->message = "out of memory";
-    return MC_ERROR_MEMORY;
-  } catch (const std::exception &e) {
-    m->message = std::string("internal error: ") + e.what();
-    return MC_ERROR_INTERNAL;
-  } catch (...) {
-    m->message = "internal error: unknown exception";
-    return MC_ERROR_INTERNAL;
-  }
-}
-
-// Getters take a const model but still record their error message.
-template <class F>
-mc_status guard_const(const mc_model *m, F &&body) {
-  return guard(const_cast<mc_model *>(m), [&](mc::Model &model) { body(static_cast<const mc::Model &>(model)); });
-}
-
-int body_index(int body) {
-  if (body != 1 && body != 2) fail(MC_ERROR_ARGUMENT, "body = %d: must be 1 or 2", body);
-  return body - 1;
-}
 
 // In an axisymmetric model x is the radius: no node may lie left of the axis.
 void require_radii(const mc::Mesh &mesh, int body, int base, const char *what) {
@@ -66,41 +22,6 @@ void require_radii(const mc::Mesh &mesh, int body, int base, const char *what) {
     fail(MC_ERROR_MESH,
          "xy[%d] = %g (node %d of body %d): a radius must be >= 0, and %s is axisymmetric (x = r, the axis x = 0)",
          2 * i, mesh.node(i).x, i + base, body, what);
-}
-
-mc::Body &meshed_body(mc::Model &model, int body) {
-  mc::Body &b = model.body[body_index(body)];
-  if (!b.has_mesh) fail(MC_ERROR_STATE, "body %d has no mesh: call mc_set_mesh first", body);
-  return b;
-}
-
-const mc::Body &solved_body(const mc::Model &model, int body) {
-  const mc::Body &b = model.body[body_index(body)];
-  if (!b.has_mesh) fail(MC_ERROR_STATE, "body %d has no mesh: call mc_set_mesh first", body);
-  if (!model.solved) fail(MC_ERROR_STATE, "no solution: call mc_solve first (or again, after changing the scene)");
-  return b;
-}
-
-void require_pointer(const void *p, const char *name) {
-  if (!p) fail(MC_ERROR_ARGUMENT, "%s is NULL", name);
-}
-
-void require_count(mc_int n, const char *name) {
-  if (n < 0) fail(MC_ERROR_ARGUMENT, "%s = %d: must not be negative", name, int(n));
-}
-
-void require_finite(const double *values, size_t count, const char *name) {
-  for (size_t i = 0; i < count; ++i)
-    if (!std::isfinite(values[i])) fail(MC_ERROR_ARGUMENT, "%s[%zu] is not finite", name, i);
-}
-
-// A node id given by the caller, checked and made 0-based.
-int node_id(const mc::Model &model, const mc::Mesh &mesh, mc_int id, const char *name, size_t index) {
-  const long long local = (long long)id - model.index_base;  // no int overflow for id = INT_MIN
-  if (local < 0 || local >= mesh.n_nodes())
-    fail(MC_ERROR_ARGUMENT, "%s[%zu] = %d: node id out of range [%d, %d] (index base %d)", name, index, int(id),
-         model.index_base, mesh.n_nodes() - 1 + model.index_base, model.index_base);
-  return int(local);
 }
 
 // Edges for loads: boundary edges, returned oriented as their cells.
@@ -271,7 +192,7 @@ mc_status mc_set_mesh(mc_model *m, int body, mc_int n_nodes, const double *xy, m
 
 mc_status mc_set_material(mc_model *m, int body, double young, double poisson) {
   return guard(m, [&](mc::Model &model) {
-    mc::Body &b = meshed_body(model, body);
+    mc::Body &b = cell_body(model, body, "mc_set_material", "its stiffness is the host's own (mc_add_stiffness)");
     if (!(young > 0) || !std::isfinite(young))
       fail(MC_ERROR_MATERIAL, "young = %g (body %d): Young's modulus must be positive and finite", young, body);
     if (!(poisson > -1 && poisson < 0.5))
@@ -284,7 +205,7 @@ mc_status mc_set_material(mc_model *m, int body, double young, double poisson) {
 
 mc_status mc_set_cell_elasticity(mc_model *m, int body, const double *d) {
   return guard(m, [&](mc::Model &model) {
-    mc::Body &b = meshed_body(model, body);
+    mc::Body &b = cell_body(model, body, "mc_set_cell_elasticity", "its stiffness is the host's own (mc_add_stiffness)");
     require_pointer(d, "d");
     const size_t n = 9 * size_t(b.mesh.n_cells());
     require_finite(d, n, "d");
@@ -300,7 +221,8 @@ mc_status mc_set_cell_elasticity(mc_model *m, int body, const double *d) {
 
 mc_status mc_fix(mc_model *m, int body, mc_int n, const mc_int *nodes, int components, const double *values) {
   return guard(m, [&](mc::Model &model) {
-    mc::Body &b = meshed_body(model, body);
+    mc::Body &b = cell_body(model, body, "mc_fix",
+                            "its supports are its restrained freedoms: give them no equation in mc_set_host_body");
     require_count(n, "n");
     if (n > 0) require_pointer(nodes, "nodes");
     if (components < MC_X || components > MC_XY)
@@ -327,7 +249,7 @@ mc_status mc_fix(mc_model *m, int body, mc_int n, const mc_int *nodes, int compo
 
 mc_status mc_add_traction(mc_model *m, int body, mc_int n_edges, const mc_int *edges, const double *traction) {
   return guard(m, [&](mc::Model &model) {
-    mc::Body &b = meshed_body(model, body);
+    mc::Body &b = cell_body(model, body, "mc_add_traction", "its loads are the host's load vector (mc_set_load_vector)");
     require_count(n_edges, "n_edges");
     if (n_edges > 0) require_pointer(edges, "edges"), require_pointer(traction, "traction");
     if (n_edges > 0) require_finite(traction, 2 * size_t(n_edges), "traction");
@@ -340,7 +262,7 @@ mc_status mc_add_traction(mc_model *m, int body, mc_int n_edges, const mc_int *e
 
 mc_status mc_add_pressure(mc_model *m, int body, mc_int n_edges, const mc_int *edges, const double *pressure) {
   return guard(m, [&](mc::Model &model) {
-    mc::Body &b = meshed_body(model, body);
+    mc::Body &b = cell_body(model, body, "mc_add_pressure", "its loads are the host's load vector (mc_set_load_vector)");
     require_count(n_edges, "n_edges");
     if (n_edges > 0) require_pointer(edges, "edges"), require_pointer(pressure, "pressure");
     if (n_edges > 0) require_finite(pressure, size_t(n_edges), "pressure");
@@ -359,14 +281,17 @@ mc_status mc_add_nodal_force(mc_model *m, int body, mc_int n, const mc_int *node
     std::vector<int> local(n);
     for (mc_int i = 0; i < n; ++i) local[i] = node_id(model, b.mesh, nodes[i], "nodes", size_t(i));
     for (mc_int i = 0; i < n; ++i)
-      b.nodal_force[2 * local[i]] += force[2 * i], b.nodal_force[2 * local[i] + 1] += force[2 * i + 1];
+      for (int c = 0; c < 2; ++c) {
+        const int dof = model.dof_of(body - 1, local[i], c);  // a host body's restrained freedom: none
+        if (dof >= 0) b.nodal_force[dof] += force[2 * i + c];
+      }
     model.values_changed();
   });
 }
 
 mc_status mc_set_body_force(mc_model *m, int body, double fx, double fy) {
   return guard(m, [&](mc::Model &model) {
-    mc::Body &b = meshed_body(model, body);
+    mc::Body &b = cell_body(model, body, "mc_set_body_force", "its loads are the host's load vector (mc_set_load_vector)");
     if (!std::isfinite(fx)) fail(MC_ERROR_ARGUMENT, "fx = %g: must be finite", fx);
     if (!std::isfinite(fy)) fail(MC_ERROR_ARGUMENT, "fy = %g: must be finite", fy);
     b.body_force[0] = fx, b.body_force[1] = fy;
@@ -378,83 +303,9 @@ mc_status mc_clear_loads(mc_model *m, int body) {
   return guard(m, [&](mc::Model &model) {
     mc::Body &b = meshed_body(model, body);
     std::fill(b.nodal_force.begin(), b.nodal_force.end(), 0.0);
+    std::fill(b.host_data.load.begin(), b.host_data.load.end(), 0.0);
     b.edge_loads.clear();
     b.body_force[0] = b.body_force[1] = 0;
-    model.values_changed();
-  });
-}
-
-mc_status mc_set_contact(mc_model *m, int body, mc_int n_edges, const mc_int *edges) {
-  return guard(m, [&](mc::Model &model) {
-    mc::Body &b = meshed_body(model, body);
-    if (n_edges < 1) fail(MC_ERROR_ARGUMENT, "n_edges = %d: a contact surface needs at least one edge", int(n_edges));
-    require_pointer(edges, "edges");
-    std::vector<int> local(2 * size_t(n_edges));
-    for (size_t k = 0; k < local.size(); ++k) {
-      const long long id = (long long)edges[k] - model.index_base;  // no int overflow for INT_MIN
-      const size_t e = k / 2;
-      if (id < 0 || id >= b.mesh.n_nodes())
-        fail(MC_ERROR_ARGUMENT, "edges[%zu..%zu] = (%d, %d): edges[%zu] = %d: node id out of range [%d, %d] (index base %d)",
-             2 * e, 2 * e + 1, int(edges[2 * e]), int(edges[2 * e + 1]), k, int(edges[k]), model.index_base,
-             b.mesh.n_nodes() - 1 + model.index_base, model.index_base);
-      local[k] = int(id);
-    }
-    std::vector<mc::SurfaceSegment> surface = mc::oriented_surface(b.mesh, local.data(), n_edges, model.index_base);
-    // Simple chains and loops only: at most one surface edge leaves and one arrives at a node.
-    // Two would mean cells meeting at that node alone (a pinch), where the surface has no
-    // normal and its chains no order.
-    std::vector<int> leaving(b.mesh.n_nodes(), -1), arriving(b.mesh.n_nodes(), -1);
-    for (mc_int e = 0; e < n_edges; ++e) {
-      const mc::SurfaceSegment &seg = surface[e];
-      const int other = leaving[seg.a] >= 0 ? leaving[seg.a] : arriving[seg.b];
-      if (other >= 0)
-        fail(MC_ERROR_CONTACT, "edges[%d..%d] = (%d, %d) and edges[%d..%d] = (%d, %d) both %s node %d: cells meet "
-             "only at that node, a contact surface must be simple chains or loops", 2 * int(e), 2 * int(e) + 1,
-             int(edges[2 * size_t(e)]), int(edges[2 * size_t(e) + 1]), 2 * other, 2 * other + 1,
-             int(edges[2 * size_t(other)]), int(edges[2 * size_t(other) + 1]),
-             leaving[seg.a] >= 0 ? "leave" : "arrive at", (leaving[seg.a] >= 0 ? seg.a : seg.b) + model.index_base);
-      leaving[seg.a] = arriving[seg.b] = int(e);
-    }
-    // A chain that folds back on itself (consecutive edges turning by nearly 180 degrees) has no
-    // normal where it turns and its two faces overlap: no contact surface.
-    for (int node = 0; node < b.mesh.n_nodes(); ++node) {
-      const int in = arriving[node], out = leaving[node];
-      if (in < 0 || out < 0) continue;
-      const double turn = mc::turn_angle(b.mesh.node(surface[in].a), b.mesh.node(node), b.mesh.node(surface[out].b)) *
-                          180 / 3.14159265358979323846;
-      if (std::fabs(turn) > kFoldAngleDegrees)
-        fail(MC_ERROR_CONTACT, "edges[%d..%d] = (%d, %d) and edges[%d..%d] = (%d, %d) fold back at node %d: the surface "
-             "turns by %.1f degrees there (more than %.0f): a contact surface must not fold back on itself",
-             2 * in, 2 * in + 1, int(edges[2 * size_t(in)]), int(edges[2 * size_t(in) + 1]), 2 * out, 2 * out + 1,
-             int(edges[2 * size_t(out)]), int(edges[2 * size_t(out) + 1]), node + model.index_base, turn,
-             kFoldAngleDegrees);
-    }
-    b.contact = std::move(surface);
-    b.has_contact = true;
-    model.structure_changed();
-  });
-}
-
-mc_status mc_set_gap_offset(mc_model *m, mc_int n, const mc_int *nodes, const double *offset) {
-  return guard(m, [&](mc::Model &model) {
-    mc::Body &b = meshed_body(model, 1);
-    if (!b.has_contact) fail(MC_ERROR_STATE, "body 1 has no contact surface: call mc_set_contact first");
-    require_count(n, "n");
-    if (n > 0) require_pointer(nodes, "nodes"), require_pointer(offset, "offset");
-    if (n > 0) require_finite(offset, size_t(n), "offset");
-    std::vector<char> on_surface(b.mesh.n_nodes(), 0);
-    for (const mc::SurfaceSegment &s : b.contact) {
-      on_surface[s.a] = on_surface[s.b] = 1;
-      if (s.mid >= 0) on_surface[s.mid] = 1;
-    }
-    std::vector<int> local(n);
-    for (mc_int i = 0; i < n; ++i) {
-      local[i] = node_id(model, b.mesh, nodes[i], "nodes", size_t(i));
-      if (!on_surface[local[i]])
-        fail(MC_ERROR_ARGUMENT, "nodes[%d] = %d is not on body 1's contact surface", int(i), int(nodes[i]));
-    }
-    if (b.gap_offset.empty()) b.gap_offset.assign(b.mesh.n_nodes(), 0.0);
-    for (mc_int i = 0; i < n; ++i) b.gap_offset[local[i]] = offset[i];
     model.values_changed();
   });
 }
@@ -607,15 +458,17 @@ mc_status mc_get_info_real(const mc_model *m, int info, double *value) {
 
 mc_status mc_get_displacement(const mc_model *m, int body, double *u) {
   return guard_const(m, [&](const mc::Model &model) {
-    const mc::Body &b = solved_body(model, body);
+    solved_body(model, body);
     require_pointer(u, "u");
-    std::memcpy(u, b.u.data(), b.u.size() * sizeof(double));
+    const std::vector<double> nodal = model.nodal_displacement(body - 1);  // (a host body's: from its equations)
+    std::memcpy(u, nodal.data(), nodal.size() * sizeof(double));
   });
 }
 
 mc_status mc_get_stress(const mc_model *m, int body, double *sigma) {
   return guard_const(m, [&](const mc::Model &model) {
     const mc::Body &b = solved_body(model, body);
+    refuse_host(b, body, "mc_get_stress", "a host body has no cells: the host computes its stresses from mc_get_equation_solution");
     require_pointer(sigma, "sigma");
     std::memcpy(sigma, b.stress.data(), b.stress.size() * sizeof(double));
   });
@@ -624,6 +477,7 @@ mc_status mc_get_stress(const mc_model *m, int body, double *sigma) {
 mc_status mc_get_nodal_stress(const mc_model *m, int body, double *sigma) {
   return guard_const(m, [&](const mc::Model &model) {
     const mc::Body &b = solved_body(model, body);
+    refuse_host(b, body, "mc_get_nodal_stress", "a host body has no cells: the host computes its stresses from mc_get_equation_solution");
     require_pointer(sigma, "sigma");
     std::memcpy(sigma, b.nodal_stress.data(), b.nodal_stress.size() * sizeof(double));
   });
@@ -632,6 +486,7 @@ mc_status mc_get_nodal_stress(const mc_model *m, int body, double *sigma) {
 mc_status mc_get_reaction(const mc_model *m, int body, double *r) {
   return guard_const(m, [&](const mc::Model &model) {
     const mc::Body &b = solved_body(model, body);
+    refuse_host(b, body, "mc_get_reaction", "its supports are the host's restrained freedoms: the host computes their reactions (mc_get_contact_load gives the contact forces)");
     require_pointer(r, "r");
     std::memcpy(r, b.reaction.data(), b.reaction.size() * sizeof(double));
   });
@@ -639,67 +494,7 @@ mc_status mc_get_reaction(const mc_model *m, int body, double *r) {
 
 }  // extern "C"
 
-namespace {
-
-const mc::ContactGeometry &solved_contact(const mc::Model &model) {
-  if (!model.contact_active()) fail(MC_ERROR_STATE, "no contact surfaces: call mc_set_contact on both bodies");
-  if (!model.solved || !model.contact())
-    fail(MC_ERROR_STATE, "no solution: call mc_solve first (or again, after changing the scene)");
-  return model.contact()->geometry;
-}
-
-template <class F>
-mc_status contact_array(const mc_model *m, void *out, const char *name, F &&copy) {
-  return guard_const(m, [&](const mc::Model &model) {
-    const mc::ContactGeometry &g = solved_contact(model);
-    require_pointer(out, name);
-    copy(model, g);
-  });
-}
-
-}  // namespace
-
 extern "C" {
-
-mc_status mc_get_contact_count(const mc_model *m, mc_int *n) {
-  return contact_array(m, n, "n", [&](const mc::Model &, const mc::ContactGeometry &g) { *n = mc_int(g.nodes.size()); });
-}
-
-mc_status mc_get_contact_nodes(const mc_model *m, mc_int *nodes) {
-  return contact_array(m, nodes, "nodes", [&](const mc::Model &model, const mc::ContactGeometry &g) {
-    for (size_t j = 0; j < g.nodes.size(); ++j) nodes[j] = mc_int(g.nodes[j] + model.index_base);
-  });
-}
-
-mc_status mc_get_contact_pressure(const mc_model *m, double *p) {
-  return contact_array(m, p, "p", [&](const mc::Model &model, const mc::ContactGeometry &) {
-    std::memcpy(p, model.contact_pressure.data(), model.contact_pressure.size() * sizeof(double));
-  });
-}
-
-mc_status mc_get_contact_force(const mc_model *m, double *f) {
-  return contact_array(m, f, "f", [&](const mc::Model &model, const mc::ContactGeometry &) {
-    std::memcpy(f, model.contact_force.data(), model.contact_force.size() * sizeof(double));
-  });
-}
-
-mc_status mc_get_contact_gap(const mc_model *m, double *g) {
-  return contact_array(m, g, "g", [&](const mc::Model &model, const mc::ContactGeometry &) {
-    std::memcpy(g, model.contact_gap.data(), model.contact_gap.size() * sizeof(double));
-  });
-}
-
-mc_status mc_get_contact_initial_gap(const mc_model *m, double *g0) {
-  return contact_array(m, g0, "g0", [&](const mc::Model &model, const mc::ContactGeometry &g) {
-    for (size_t j = 0; j < g.gap0.size(); ++j) g0[j] = model.initial_gap(j);
-  });
-}
-
-mc_status mc_get_contact_normal(const mc_model *m, double *n) {
-  return contact_array(m, n, "n", [&](const mc::Model &, const mc::ContactGeometry &g) {
-    for (size_t j = 0; j < g.normals.size(); ++j) n[2 * j] = g.normals[j].x, n[2 * j + 1] = g.normals[j].y;
-  });
-}
 
 mc_status mc_write_vtu(const mc_model *m, const char *path) {
   return guard_const(m, [&](const mc::Model &model) {

@@ -283,7 +283,9 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
   // Positions: the nodes of each face of body 1, with the face's nodal normals (on a quadratic
   // face each node followed by its edge's middle, with the curve's normal there).
   std::vector<int> first_position;
-  g.quadratic_nonmortar = body1.quadratic();
+  // (A surface is quadratic when its edges have middles: a quadratic mesh's, or a host's 3-node edges.)
+  g.quadratic_nonmortar = !surface1.empty() && surface1.front().mid >= 0;
+  const bool quadratic_mortar = !surface2.empty() && surface2.front().mid >= 0;
   const int stride = g.quadratic_nonmortar ? 2 : 1;
   for (const SurfaceFace &face : curve1.faces()) {
     first_position.push_back(int(g.nodes.size()));
@@ -306,7 +308,7 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
   if (normal_choice == MC_NORMAL_MORTAR)
     for (size_t j = 0; j < n; ++j) {
       Point p = body1.node(g.nodes[j]);
-      if (!curve2.smooth() && !body2.quadratic()) {
+      if (!curve2.smooth() && !quadratic_mortar) {
         g.normals[j] = mortar_side_normal(p, g.normals[j], body2, surface2);
         continue;
       }
@@ -367,7 +369,7 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
     // Quadratic traces (either side): 5 points, exact to degree 9 on straight pieces (the
     // products of a linear multiplier, a quadratic trace and the weight 2 pi r are of degree 4);
     // linear ones keep the 3 points (degree 5) that are exact for theirs.
-    context.points = body1.quadratic() || body2.quadratic() ? 5 : 3;
+    context.points = g.quadratic_nonmortar || quadratic_mortar ? 5 : 3;
     std::vector<CoveredPiece> pieces;
     for (int k = 0; k < sf.edges(); ++k) {
       const int seg = curve1.segment_of(face, k);

@@ -59,6 +59,23 @@ Mesh::Mesh(int n_nodes, const double *xy, int n_cells, int nodes_per_cell, const
   derive_boundary(base);
 }
 
+Mesh Mesh::points(int n_nodes, const double *xy) {
+  Mesh mesh;
+  if (n_nodes < 1) fail(MC_ERROR_ARGUMENT, "n_nodes = %d: a host body needs at least 1 node", n_nodes);
+  if (!xy) fail(MC_ERROR_ARGUMENT, "xy is NULL");
+  mesh.n_nodes_ = n_nodes;
+  mesh.xy_.assign(xy, xy + 2 * size_t(n_nodes));
+  double xmin = xy[0], xmax = xy[0], ymin = xy[1], ymax = xy[1];
+  for (size_t i = 0; i < mesh.xy_.size(); ++i) {
+    if (!std::isfinite(mesh.xy_[i])) fail(MC_ERROR_ARGUMENT, "xy[%zu] (node %zu) is not finite", i, i / 2);
+    if (i % 2 == 0) xmin = std::min(xmin, mesh.xy_[i]), xmax = std::max(xmax, mesh.xy_[i]);
+    else ymin = std::min(ymin, mesh.xy_[i]), ymax = std::max(ymax, mesh.xy_[i]);
+  }
+  mesh.length_scale_ = std::max(xmax - xmin, ymax - ymin);
+  if (!(mesh.length_scale_ > 0)) mesh.length_scale_ = 1;  // one node, or all at one point
+  return mesh;
+}
+
 // Cells must be counter-clockwise and non-degenerate; a quadrilateral must also be convex
 // (its bilinear map then has a positive Jacobian everywhere). The tolerance is relative to
 // the cell's own size, so the check does not depend on units.

@@ -28,6 +28,9 @@ public:
   // Throws mc::Error naming the argument and index on bad input.
   Mesh(int n_nodes, const double *xy, int n_cells, int nodes_per_cell, const int *cells, int base = 0);
   Mesh() = default;
+  // Nodes without cells: a host body's (mc_set_host_body). No boundary is derived; its contact
+  // edges come oriented from the host.
+  static Mesh points(int n_nodes, const double *xy);
 
   int n_nodes() const { return n_nodes_; }
   int n_cells() const { return n_cells_; }

@@ -58,6 +58,25 @@ int first_node_left_of_axis(const Mesh &mesh) {
   return -1;
 }
 
+int Model::dof_count(int b) const {
+  return body[b].host ? body[b].host_data.n_equations : 2 * body[b].mesh.n_nodes();
+}
+
+int Model::dof_of(int b, int node, int component) const {
+  return body[b].host ? body[b].host_data.equation(node, component) : 2 * node + component;
+}
+
+std::vector<double> Model::nodal_displacement(int b) const {
+  if (!body[b].host) return body[b].u;
+  std::vector<double> u(2 * size_t(body[b].mesh.n_nodes()), 0.0);
+  for (int i = 0; i < body[b].mesh.n_nodes(); ++i)
+    for (int c = 0; c < 2; ++c) {
+      const int dof = dof_of(b, i, c);
+      if (dof >= 0) u[2 * size_t(i) + c] = body[b].u[dof];
+    }
+  return u;
+}
+
 // A body of revolution: a node on the axis stays there (u_r = 0), whatever its loads, or its
 // meridian would tear open along the axis. The host's value of a prescribed u_r there is
 // overridden by 0.
@@ -65,7 +84,7 @@ void Model::effective_supports() {
   for (int b = 0; b < 2; ++b) {
     fixed_[b] = body[b].prescribed;
     fixed_value_[b] = body[b].prescribed_value;
-    if (!axisymmetric || !body[b].has_mesh) continue;
+    if (!axisymmetric || !body[b].has_mesh || body[b].host) continue;  // a host restrains its own axis
     const Mesh &mesh = body[b].mesh;
     for (int i = 0; i < mesh.n_nodes(); ++i)
       if (std::fabs(mesh.node(i).x) <= axis_tolerance(mesh)) fixed_[b][2 * i] = 1, fixed_value_[b][2 * i] = 0;
@@ -75,7 +94,7 @@ void Model::effective_supports() {
 int Model::body_threads() const {
   if (!body[0].has_mesh || !body[1].has_mesh || options.threads == 1) return 1;
   if (options.threads >= 2) return 2;  // asked for: at most that many, and two bodies use two
-  const long smaller = 2L * std::min(body[0].mesh.n_nodes(), body[1].mesh.n_nodes());
+  const long smaller = std::min(dof_count(0), dof_count(1));
   return available_cores() >= 2 && smaller >= kParallelMinBodyDofs ? 2 : 1;
 }
 
@@ -125,6 +144,10 @@ std::vector<double> Model::load_vector(int b) const {
   const Body &body_ = body[b];
   const Mesh &mesh = body_.mesh;
   std::vector<double> f(body_.nodal_force);
+  if (body_.host) {  // the host's load vector, plus nodal forces on its nodes' equations
+    for (int e = 0; e < body_.host_data.n_equations; ++e) f[e] += body_.host_data.load[e];
+    return f;
+  }
   f.resize(2 * size_t(mesh.n_nodes()), 0.0);
   double fe[2 * kMaxCellNodes];
   for (const EdgeLoad &load : body_.edge_loads) {
@@ -192,6 +215,28 @@ std::unique_ptr<BodySystem> Model::assemble_body(int b, BodyWork &work) const {
   if (!body_.has_mesh) return nullptr;
   auto sys = std::make_unique<BodySystem>();
   const double t_assembly = now();
+  if (body_.host) {
+    {
+      Stopwatch watch(work.infos.t_assembly);
+      sys->stiffness = assemble_host_stiffness(body_.host_data, b + 1, index_base);
+      // The rigid modes from the coordinates of every unknown, when every one is a given node's
+      // freedom: the motions the host's matrix does not resist.
+      const HostBody &h = body_.host_data;
+      if (std::all_of(h.node_of_equation.begin(), h.node_of_equation.end(), [](int node) { return node >= 0; })) {
+        std::vector<Point> point(h.n_equations);
+        for (int e = 0; e < h.n_equations; ++e) point[e] = body_.mesh.node(h.node_of_equation[e]);
+        sys->rigid = kernel_rigid_modes(point, h.component_of_equation, sys->stiffness, axisymmetric);
+      }
+    }
+    work.log(MC_LOG_PHASE, "assembly: body %d, host body of %d equations, %zu stiffness entries, %.3g s", b + 1,
+             body_.host_data.n_equations, body_.host_data.entry_value.size(), now() - t_assembly);
+    if (sys->rigid.count > 0 && !contact_active())
+      fail(MC_ERROR_SINGULAR,
+           "body %d is not held: the host's stiffness leaves %s free; restrain freedoms (give them no equation), or "
+           "give both bodies contact surfaces so that contact can hold it",
+           b + 1, sys->rigid.description.c_str());
+    return sys;
+  }
   {
     Stopwatch watch(work.infos.t_assembly);
     if (!body_.cell_elasticity.empty()) {
@@ -261,6 +306,15 @@ void Model::factorize_body(int b, BodyWork &work) {
       sys->cholesky.factorize(sys->reduced);
     } catch (const Error &e) {
       if (e.status() != MC_ERROR_SINGULAR) throw;
+      const int failed = sys->cholesky.failed_unknown();
+      if (body[b].host && failed >= 0 && failed < int(sys->solve_dofs.size())) {
+        const int equation = sys->solve_dofs[failed];
+        fail(MC_ERROR_SINGULAR,
+             "body %d: the host's stiffness is not positive definite: the factorization fails at its equation %d "
+             "(a part of the body moves without resistance, beyond %s, or the matrix is not a stiffness)",
+             b + 1, equation + index_base,
+             sys->rigid.count > 0 ? "the rigid modes found from the coordinates" : "any rigid mode");
+      }
       fail(MC_ERROR_SINGULAR, "body %d: %s", b + 1, e.what());
     }
   }
@@ -291,18 +345,17 @@ void Model::build_structure(const std::function<void(int, BodyWork &)> &then) {
     for (int r = 0; r < rows.size(); ++r) {
       const Point n = rows.normal[r];
       const bool vectors = !rows.vector1.empty();  // each entry with its own direction
-      for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p) {
-        const int node = cs->geometry.nodes[rows.position1[p]];
-        const Point v = vectors ? rows.vector1[p] : scaled(n, rows.weight1[p]);
-        cs->b_dof[0].insert(cs->b_dof[0].end(), {2 * node, 2 * node + 1});
-        cs->b_value[0].insert(cs->b_value[0].end(), {v.x, v.y});
-      }
-      for (int p = rows.start2[r]; p < rows.start2[r + 1]; ++p) {
-        const int l = rows.body2_node[p];
-        const Point v = vectors ? rows.vector2[p] : scaled(n, rows.weight2[p]);
-        cs->b_dof[1].insert(cs->b_dof[1].end(), {2 * l, 2 * l + 1});
-        cs->b_value[1].insert(cs->b_value[1].end(), {-v.x, -v.y});
-      }
+      // (A host body's freedom without an equation is restrained: it adds nothing to B.)
+      auto add = [&](int b, int node, Point v) {
+        for (int c = 0; c < 2; ++c) {
+          const int dof = dof_of(b, node, c);
+          if (dof >= 0) cs->b_dof[b].push_back(dof), cs->b_value[b].push_back(c == 0 ? v.x : v.y);
+        }
+      };
+      for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p)
+        add(0, cs->geometry.nodes[rows.position1[p]], vectors ? rows.vector1[p] : scaled(n, rows.weight1[p]));
+      for (int p = rows.start2[r]; p < rows.start2[r + 1]; ++p)
+        add(1, rows.body2_node[p], scaled(vectors ? rows.vector2[p] : scaled(n, rows.weight2[p]), -1));
       for (int b = 0; b < 2; ++b) cs->b_start[b].push_back(int(cs->b_dof[b].size()));
     }
     // B holds the body-2 weights from here on: the rows' own copy goes (on a long interface each
@@ -373,9 +426,13 @@ double Model::pointwise_gap(size_t pos) const {
   double shape[3], ds[3];
   line_shapes(c.quadratic() ? 3 : 2, g.projection[pos].eta, shape, ds);
   const int node2[3] = {c.a, c.b, c.mid}, node1 = g.nodes[pos];
-  double ux = body[0].u[2 * size_t(node1)], uy = body[0].u[2 * size_t(node1) + 1];
+  auto u = [&](int b, int node, int component) {
+    const int dof = dof_of(b, node, component);
+    return dof >= 0 ? body[b].u[dof] : 0.0;
+  };
+  double ux = u(0, node1, 0), uy = u(0, node1, 1);
   for (int a = 0; a < (c.quadratic() ? 3 : 2); ++a)
-    ux -= shape[a] * body[1].u[2 * size_t(node2[a])], uy -= shape[a] * body[1].u[2 * size_t(node2[a]) + 1];
+    ux -= shape[a] * u(1, node2[a], 0), uy -= shape[a] * u(1, node2[a], 1);
   return initial_gap(pos) - (ux * g.normals[pos].x + uy * g.normals[pos].y);
 }
 
@@ -457,7 +514,10 @@ void Model::solve() {
   solved = false;
   if (!body[0].has_mesh && !body[1].has_mesh) fail(MC_ERROR_STATE, "no mesh: call mc_set_mesh first");
   for (int b = 0; b < 2; ++b) {
-    if (body[b].has_mesh && !body[b].has_material)
+    if (body[b].host && body[b].host_data.entry_value.empty())
+      fail(MC_ERROR_STATE, "body %d is a host body without stiffness: call mc_add_stiffness or mc_add_element_matrices",
+           b + 1);
+    if (body[b].has_mesh && !body[b].host && !body[b].has_material)
       fail(MC_ERROR_STATE, "body %d has no material: call mc_set_material or mc_set_cell_elasticity", b + 1);
     // Checked here, before any work, so that this error comes first whatever else is wrong
     // (the contact geometry is built before the bodies are assembled).
@@ -564,7 +624,8 @@ void Model::solve() {
       else residual_norm2[b] += r * r, f_norm2[b] += loads[b].lifted[i] * loads[b].lifted[i] + contact_force[i] * contact_force[i];
     }
     energy[b] = 0.5 * dot(elastic, ku);
-    cell_and_nodal_stresses(b, sys.laws);
+    body_.contact_load = contact_force;
+    if (!body_.host) cell_and_nodal_stresses(b, sys.laws);
   };
   for_each_body(recover);
   if (contact_) {

@@ -5,6 +5,7 @@
 #include "assembly.hpp"
 #include "contact_geometry.hpp"
 #include "dual_qp.hpp"
+#include "host_body.hpp"
 #include "mesh.hpp"
 #include "mortar_operators.hpp"
 #include "progress_log.hpp"
@@ -32,11 +33,14 @@ struct EdgeLoad {
 };
 
 struct Body {
-  bool has_mesh = false;
+  bool has_mesh = false;  // a mesh body, or a host body (whose mesh holds nodes only)
   Mesh mesh;
+  bool host = false;      // mc_set_host_body: the stiffness and load are the host's (host_body.hpp)
+  HostBody host_data;
   bool has_material = false;
   double young = 0, poisson = 0;
   std::vector<double> cell_elasticity;  // 9 per cell when given
+  // Per DOF: 2 per node (x, y) for a mesh body, one per host equation for a host body.
   std::vector<char> prescribed;         // per DOF
   std::vector<double> prescribed_value;
   std::vector<double> nodal_force;      // per DOF
@@ -46,7 +50,8 @@ struct Body {
   std::vector<SurfaceSegment> contact;
   std::vector<double> gap_offset;       // per node (body 1 only), added to g0; empty: none
   // results
-  std::vector<double> u, reaction, stress, nodal_stress;
+  std::vector<double> u, reaction, stress, nodal_stress;  // u, reaction: per DOF
+  std::vector<double> contact_load;     // per DOF: the contact forces on the body (K u = f + contact_load)
 };
 
 // What a solve keeps for the next one when only loads or prescribed values change.
@@ -155,6 +160,12 @@ public:
   void solve();
 
   bool contact_active() const { return body[0].has_contact && body[1].has_contact; }
+  // The body's unknowns before supports: 2 per node (mesh body) or the host's equations.
+  int dof_count(int b) const;
+  // The unknown of a node's component (0: x, 1: y), or -1 if a host body has none for it.
+  int dof_of(int b, int node, int component) const;
+  // Displacements 2 per node (0 where a host body's freedom has no equation).
+  std::vector<double> nodal_displacement(int b) const;
   // The weight of every integral: the thickness, or 2 pi r (line_measure.hpp).
   LineMeasure measure() const { return LineMeasure{axisymmetric, thickness}; }
   const ContactSystem *contact() const { return contact_.get(); }

@@ -1,6 +1,7 @@
 #include "rigid_modes.hpp"
 #include "error.hpp"
 #include "lapack.hpp"
+#include <algorithm>
 #include <cmath>
 
 namespace mc {
@@ -27,6 +28,49 @@ std::string describe(const double *basis, int count) {
     text += (c ? " and " : "") + one;
   }
   return text;
+}
+
+// Orthonormalizes the mode columns (Gram-Schmidt) and picks the pinned unknowns: greedy
+// pivoting on the rows of the mode matrix. Each step takes the unknown where the remaining modes
+// move most (far from the centre for a rotation), then removes that direction, so the k pinned
+// rows are well conditioned.
+void orthonormalize_and_pin(RigidModes &result, int ndof, const std::vector<char> &prescribed) {
+  const int k = result.count;
+  for (int c = 0; c < k; ++c) {
+    double *col = &result.modes[size_t(c) * ndof];
+    for (int b = 0; b < c; ++b) {
+      const double *other = &result.modes[size_t(b) * ndof];
+      double dot = 0;
+      for (int i = 0; i < ndof; ++i) dot += col[i] * other[i];
+      for (int i = 0; i < ndof; ++i) col[i] -= dot * other[i];
+    }
+    double norm = 0;
+    for (int i = 0; i < ndof; ++i) norm += col[i] * col[i];
+    norm = std::sqrt(norm);
+    for (int i = 0; i < ndof; ++i) col[i] /= norm;
+  }
+  std::vector<double> rows(size_t(ndof) * k);
+  for (int i = 0; i < ndof; ++i)
+    for (int c = 0; c < k; ++c) rows[size_t(i) * k + c] = result.modes[size_t(c) * ndof + i];
+  for (int step = 0; step < k; ++step) {
+    int best = -1;
+    double best_norm = 0;
+    for (int i = 0; i < ndof; ++i) {
+      if (!prescribed.empty() && prescribed[i]) continue;
+      double s = 0;
+      for (int c = 0; c < k; ++c) s += rows[size_t(i) * k + c] * rows[size_t(i) * k + c];
+      if (s > best_norm * (1 + 1e-12)) best_norm = s, best = i;
+    }
+    if (best < 0) fail(MC_ERROR_INTERNAL, "no unknown left to pin a rigid mode");
+    result.pinned_dofs.push_back(best);
+    double v[3], norm = std::sqrt(best_norm);
+    for (int c = 0; c < k; ++c) v[c] = rows[size_t(best) * k + c] / norm;
+    for (int i = 0; i < ndof; ++i) {
+      double dot = 0;
+      for (int c = 0; c < k; ++c) dot += rows[size_t(i) * k + c] * v[c];
+      for (int c = 0; c < k; ++c) rows[size_t(i) * k + c] -= dot * v[c];
+    }
+  }
 }
 
 }  // namespace
@@ -73,44 +117,7 @@ RigidModes free_rigid_modes(const Mesh &mesh, const std::vector<char> &prescribe
       result.modes[size_t(c) * 2 * n + 2 * i + 1] = prescribed[2 * i + 1] ? 0 : ry[0] * v[0] + ry[1] * v[1] + ry[2] * v[2];
     }
   }
-  for (int c = 0; c < k; ++c) {
-    double *col = &result.modes[size_t(c) * 2 * n];
-    for (int b = 0; b < c; ++b) {
-      const double *other = &result.modes[size_t(b) * 2 * n];
-      double dot = 0;
-      for (int i = 0; i < 2 * n; ++i) dot += col[i] * other[i];
-      for (int i = 0; i < 2 * n; ++i) col[i] -= dot * other[i];
-    }
-    double norm = 0;
-    for (int i = 0; i < 2 * n; ++i) norm += col[i] * col[i];
-    norm = std::sqrt(norm);
-    for (int i = 0; i < 2 * n; ++i) col[i] /= norm;
-  }
-  // Pinned unknowns: greedy pivoting on the rows of the mode matrix. Each step takes the
-  // unknown where the remaining modes move most (far from the centre for a rotation), then
-  // removes that direction, so the k pinned rows are well conditioned.
-  std::vector<double> rows(size_t(2 * n) * k);
-  for (int i = 0; i < 2 * n; ++i)
-    for (int c = 0; c < k; ++c) rows[size_t(i) * k + c] = result.modes[size_t(c) * 2 * n + i];
-  for (int step = 0; step < k; ++step) {
-    int best = -1;
-    double best_norm = 0;
-    for (int i = 0; i < 2 * n; ++i) {
-      if (prescribed[i]) continue;
-      double s = 0;
-      for (int c = 0; c < k; ++c) s += rows[size_t(i) * k + c] * rows[size_t(i) * k + c];
-      if (s > best_norm * (1 + 1e-12)) best_norm = s, best = i;
-    }
-    if (best < 0) fail(MC_ERROR_INTERNAL, "no unknown left to pin a rigid mode");
-    result.pinned_dofs.push_back(best);
-    double v[3], norm = std::sqrt(best_norm);
-    for (int c = 0; c < k; ++c) v[c] = rows[size_t(best) * k + c] / norm;
-    for (int i = 0; i < 2 * n; ++i) {
-      double dot = 0;
-      for (int c = 0; c < k; ++c) dot += rows[size_t(i) * k + c] * v[c];
-      for (int c = 0; c < k; ++c) rows[size_t(i) * k + c] -= dot * v[c];
-    }
-  }
+  orthonormalize_and_pin(result, 2 * n, prescribed);
   return result;
 }
 
@@ -124,6 +131,68 @@ RigidModes free_axial_translation(const Mesh &mesh, const std::vector<char> &pre
   result.modes.assign(size_t(2 * n), 0.0);
   for (int i = 0; i < n; ++i) result.modes[2 * size_t(i) + 1] = 1 / std::sqrt(double(n));
   result.pinned_dofs.push_back(1);  // any axial unknown defines K^+: node 0's
+  return result;
+}
+
+// A host body's rigid modes: the rigid motions (in the coordinates of each unknown's point and
+// component) that its own stiffness does not resist. Solves (K R)^T (K R) v = mu R^T R v over
+// the candidate motions R (translations and rotation; axisymmetric: the axial translation); a
+// mode is free when |K R v| <= 1e-9 max|K_ij| |R v|: round-off for a rigid motion, while a body
+// held by one restrained freedom resists it with about max|K_ij| / sqrt(unknowns) (1e-3 of it at
+// 10^6 unknowns).
+RigidModes kernel_rigid_modes(const std::vector<Point> &point, const std::vector<int> &component,
+                              const SymmetricCsc &k, bool axisymmetric) {
+  RigidModes result;
+  const int ndof = k.n;
+  if (ndof == 0) return result;
+  Point centre{0, 0};
+  double xmin = point[0].x, xmax = xmin, ymin = point[0].y, ymax = ymin;
+  for (const Point &p : point) {
+    centre.x += p.x / ndof, centre.y += p.y / ndof;
+    xmin = std::min(xmin, p.x), xmax = std::max(xmax, p.x), ymin = std::min(ymin, p.y), ymax = std::max(ymax, p.y);
+  }
+  const double length = std::max({xmax - xmin, ymax - ymin, 1e-300});
+  const int candidates = axisymmetric ? 1 : 3;
+  std::vector<double> r(size_t(ndof) * 3, 0.0), kr(size_t(ndof) * 3, 0.0);
+  for (int i = 0; i < ndof; ++i) {
+    double rx[3], ry[3];
+    rigid_rows(point[i], centre, length, rx, ry);
+    const double *row = component[i] == 0 ? rx : ry;
+    if (axisymmetric) r[i] = component[i] == 1 ? 1 : 0;
+    else
+      for (int c = 0; c < 3; ++c) r[size_t(c) * ndof + i] = row[c];
+  }
+  for (int c = 0; c < candidates; ++c) k.multiply(&r[size_t(c) * ndof], &kr[size_t(c) * ndof]);
+  double g[9] = {0}, m[9] = {0}, kmax = 0;
+  for (double v : k.values) kmax = std::max(kmax, std::fabs(v));
+  for (int a = 0; a < candidates; ++a)
+    for (int b = 0; b < candidates; ++b) {
+      double sg = 0, sm = 0;
+      for (int i = 0; i < ndof; ++i)
+        sg += kr[size_t(a) * ndof + i] * kr[size_t(b) * ndof + i], sm += r[size_t(a) * ndof + i] * r[size_t(b) * ndof + i];
+      g[3 * a + b] = sg, m[3 * a + b] = sm;
+    }
+  int itype = 1, n = candidates, lwork = 32, info = 0;
+  double mu[3], work[32];
+  dsygv_(&itype, "V", "U", &n, g, &n, m, &n, mu, work, &lwork, &info);
+  if (info != 0) fail(MC_ERROR_INTERNAL, "dsygv failed (%d) in the rigid-mode analysis of a host body", info);
+  // mu = |K R v|^2 for R v of unit norm; a held body's least is about (kmax / sqrt(ndof))^2.
+  const double threshold = 1e-18 * kmax * kmax;
+  while (result.count < candidates && mu[result.count] <= threshold) ++result.count;
+  if (result.count == 0) return result;
+  const int count = result.count;
+  if (axisymmetric) result.description = "translation along the axis (y)";
+  else {
+    double basis[9] = {0};
+    for (int c = 0; c < count; ++c)
+      for (int a = 0; a < 3; ++a) basis[3 * c + a] = g[3 * c + a];
+    result.description = describe(basis, count);
+  }
+  result.modes.assign(size_t(ndof) * count, 0.0);
+  for (int c = 0; c < count; ++c)
+    for (int a = 0; a < candidates; ++a)
+      for (int i = 0; i < ndof; ++i) result.modes[size_t(c) * ndof + i] += g[3 * c + a] * r[size_t(a) * ndof + i];
+  orthonormalize_and_pin(result, ndof, {});
   return result;
 }
 

@@ -4,6 +4,7 @@
 // inverse K^+ from fixing as many well-chosen unknowns as there are free modes, plus the
 // equilibrium condition R^T (f - B^T lambda) = 0 on the contact forces.
 #pragma once
+#include "assembly.hpp"
 #include "mesh.hpp"
 #include <string>
 #include <vector>
@@ -23,5 +24,9 @@ RigidModes free_rigid_modes(const Mesh &mesh, const std::vector<char> &prescribe
 // translation along the axis (y); a radial "translation" or a rotation of the meridian strains
 // the hoop fibres, so the stiffness already resists them.
 RigidModes free_axial_translation(const Mesh &mesh, const std::vector<char> &prescribed);
+// A host body's (mc_set_host_body): unknown i is component[i] (0: x, 1: y) of the motion of
+// point[i]; the rigid motions that k does not resist (k R = 0 to round-off) are free.
+RigidModes kernel_rigid_modes(const std::vector<Point> &point, const std::vector<int> &component,
+                              const SymmetricCsc &k, bool axisymmetric);
 
 }  // namespace mc

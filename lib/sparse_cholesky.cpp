@@ -172,6 +172,7 @@ void SparseCholesky::release() {
 
 void SparseCholesky::factorize(const SymmetricCsc &a) {
   Impl &d = *impl_;
+  failed_unknown_ = -1;
   if (n_ == 0) return;
   if (!d.factor) fail(MC_ERROR_INTERNAL, "factorize before analyze");
   cholmod_sparse s = d.view(a);
@@ -185,6 +186,11 @@ void SparseCholesky::factorize(const SymmetricCsc &a) {
       populate_pages(d.factor->x, d.factor->xsize * sizeof(double));
     }
     cholmod_factorize(&s, d.factor, &d.common);
+  }
+  if (d.common.status == CHOLMOD_NOT_POSDEF) {
+    const int *perm = static_cast<const int *>(d.factor->Perm);
+    const int minor = int(d.factor->minor);
+    failed_unknown_ = perm && minor < a.n ? perm[minor] : minor;
   }
   if (d.common.status == CHOLMOD_NOT_POSDEF)
     fail(MC_ERROR_SINGULAR,

@@ -39,6 +39,8 @@ public:
   // the factor's k-th interface unknown.
   std::vector<double> interface_factor(std::vector<int> &order) const;
 
+  // After factorize threw MC_ERROR_SINGULAR: the unknown (in a's numbering) whose pivot failed.
+  int failed_unknown() const { return failed_unknown_; }
   long factor_nnz() const;
   // CHOLMOD's count of the numeric factorization's floating-point operations, from the analysis.
   double analysis_flops() const;
@@ -49,6 +51,7 @@ private:
   std::unique_ptr<Impl> impl_;
   int n_ = 0;
   bool analyzed_ = false;
+  int failed_unknown_ = -1;
 };
 
 }  // namespace mc

@@ -245,7 +245,8 @@ void Model::build_sparse_structure() {
       for (int p = rows.aux_d_start[a]; p < rows.aux_d_start[a + 1]; ++p)
         entries.emplace_back(cs.aux_offset + 2 * rows.aux_d_point[p] + c, rows.aux_d[p]);
       for (int p = rows.aux_r_start[a]; p < rows.aux_r_start[a + 1]; ++p) {
-        const int k = body2.solve_index[2 * rows.aux_r_node[p] + c];
+        const int dof = dof_of(1, rows.aux_r_node[p], c);  // (a host body's restrained freedom: none)
+        const int k = dof >= 0 ? body2.solve_index[dof] : -1;
         if (k >= 0) entries.emplace_back(cs.column_offset[1] + k, -rows.aux_r[p]);
       }
       add_row(false);
@@ -298,8 +299,8 @@ bool Model::solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::v
     for (int c = 0; c < 2; ++c) {
       double t = 0;
       for (int p = rows.aux_r_start[a]; p < rows.aux_r_start[a + 1]; ++p) {
-        const int dof = 2 * rows.aux_r_node[p] + c;
-        if (fixed_[1][dof]) t += rows.aux_r[p] * fixed_value_[1][dof];
+        const int dof = dof_of(1, rows.aux_r_node[p], c);
+        if (dof >= 0 && fixed_[1][dof]) t += rows.aux_r[p] * fixed_value_[1][dof];
       }
       target[q + 2 * a + c] = t;
     }

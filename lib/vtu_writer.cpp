@@ -301,7 +301,8 @@ void write_vtu(const Model &model, const std::string &path) {
   if (!model.solved) fail(MC_ERROR_STATE, "no solution: call mc_solve first (or again, after changing the scene)");
   std::vector<int> bodies;
   for (int b = 0; b < 2; ++b)
-    if (model.body[b].has_mesh) bodies.push_back(b);
+    if (model.body[b].has_mesh && !model.body[b].host) bodies.push_back(b);  // a host body has no cells to draw
+  if (bodies.empty()) fail(MC_ERROR_STATE, "no mesh body to write: host bodies (mc_set_host_body) have no cells");
   if (!ends_with(path, ".pvd")) {
     write_unstructured_grid(path, model, bodies);
     return;

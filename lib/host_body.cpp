@@ -1,0 +1,213 @@
+#include "host_body.hpp"
+#include "error.hpp"
+#include "mortarcontact.h"
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+
+namespace mc {
+
+HostBody make_host_body(int n_nodes, const int *equations, int n_equations, int base) {
+  if (n_equations < 1) fail(MC_ERROR_ARGUMENT, "n_equations = %d: a host body needs at least 1 equation", n_equations);
+  if (!equations) fail(MC_ERROR_ARGUMENT, "equations is NULL");
+  HostBody host;
+  host.n_equations = n_equations;
+  host.equations.assign(2 * size_t(n_nodes), -1);
+  host.node_of_equation.assign(n_equations, -1);
+  host.component_of_equation.assign(n_equations, -1);
+  for (size_t k = 0; k < 2 * size_t(n_nodes); ++k) {
+    const long long e = (long long)equations[k] - base;
+    if (e < 0) continue;  // no equation: restrained or absent
+    if (e >= n_equations)
+      fail(MC_ERROR_ARGUMENT, "equations[%zu] = %d (node %zu, %s): equation number above the system, whose last is %d",
+           k, equations[k], k / 2 + base, k % 2 ? "y" : "x", n_equations - 1 + base);
+    const int other = host.node_of_equation[e];
+    if (other >= 0)
+      fail(MC_ERROR_ARGUMENT, "equations[%zu] = %d: node %zu's %s and node %d's %s share equation %d: each freedom "
+           "needs its own", k, equations[k], k / 2 + base, k % 2 ? "y" : "x", other + base,
+           host.component_of_equation[e] ? "y" : "x", equations[k]);
+    host.equations[k] = int(e);
+    host.node_of_equation[e] = int(k / 2), host.component_of_equation[e] = int(k % 2);
+  }
+  host.load.assign(n_equations, 0.0);
+  return host;
+}
+
+namespace {
+
+// An equation number given by the host, made 0-based; -1 below the base (skipped). name[index]
+// in messages.
+int host_equation(const HostBody &host, int id, const char *name, size_t index, int base) {
+  const long long e = (long long)id - base;
+  if (e < 0) return -1;
+  if (e >= host.n_equations)
+    fail(MC_ERROR_ARGUMENT, "%s[%zu] = %d: equation number above the system, whose last is %d", name, index, id,
+         host.n_equations - 1 + base);
+  return int(e);
+}
+
+}  // namespace
+
+void add_coordinate_entries(HostBody &host, int n, const int *rows, const int *cols, const double *values, int storage,
+                            int base) {
+  if (n < 0) fail(MC_ERROR_ARGUMENT, "n_entries = %d: must not be negative", n);
+  if (storage != MC_MATRIX_FULL && storage != MC_MATRIX_TRIANGLE)
+    fail(MC_ERROR_ARGUMENT, "storage = %d: must be MC_MATRIX_FULL (1) or MC_MATRIX_TRIANGLE (2)", storage);
+  if (n == 0) return;
+  if (!rows) fail(MC_ERROR_ARGUMENT, "rows is NULL");
+  if (!cols) fail(MC_ERROR_ARGUMENT, "cols is NULL");
+  if (!values) fail(MC_ERROR_ARGUMENT, "values is NULL");
+  struct Entry {
+    int row, col;
+    double value;
+    size_t index;
+  };
+  std::vector<Entry> kept;
+  kept.reserve(size_t(n));
+  int triangle = 0;  // +1 upper (row < col), -1 lower, 0 not yet seen
+  double largest = 0;
+  for (size_t k = 0; k < size_t(n); ++k) {
+    if (!std::isfinite(values[k])) fail(MC_ERROR_ARGUMENT, "values[%zu] is not finite", k);
+    const int r = host_equation(host, rows[k], "rows", k, base), c = host_equation(host, cols[k], "cols", k, base);
+    if (r < 0 || c < 0) continue;  // a restrained freedom's row or column
+    if (storage == MC_MATRIX_TRIANGLE && r != c) {
+      const int side = r < c ? 1 : -1;
+      if (triangle != 0 && side != triangle)
+        fail(MC_ERROR_ARGUMENT,
+             "rows[%zu], cols[%zu] = (%d, %d) is in the %s triangle, earlier entries of this call in the %s: "
+             "MC_MATRIX_TRIANGLE takes one triangle (each off-diagonal pair once); give both with MC_MATRIX_FULL",
+             k, k, rows[k], cols[k], side > 0 ? "upper" : "lower", side > 0 ? "lower" : "upper");
+      triangle = side;
+    }
+    largest = std::max(largest, std::fabs(values[k]));
+    kept.push_back({r, c, values[k], k});
+  }
+  if (storage == MC_MATRIX_FULL) {
+    // Both triangles: the summed (r, c) and (c, r) must agree. Sorted by (min, max, r > c), the
+    // two halves of each pair are adjacent runs.
+    std::vector<Entry> sorted(kept);
+    std::sort(sorted.begin(), sorted.end(), [](const Entry &a, const Entry &b) {
+      const int a0 = std::min(a.row, a.col), a1 = std::max(a.row, a.col), b0 = std::min(b.row, b.col),
+                b1 = std::max(b.row, b.col);
+      if (a0 != b0) return a0 < b0;
+      if (a1 != b1) return a1 < b1;
+      return a.row < b.row;
+    });
+    for (size_t i = 0; i < sorted.size();) {
+      size_t j = i;
+      double upper = 0, lower = 0;
+      size_t named = sorted[i].index;
+      const int lo = std::min(sorted[i].row, sorted[i].col), hi = std::max(sorted[i].row, sorted[i].col);
+      for (; j < sorted.size() && std::min(sorted[j].row, sorted[j].col) == lo && std::max(sorted[j].row, sorted[j].col) == hi; ++j)
+        (sorted[j].row < sorted[j].col ? upper : lower) += sorted[j].value, named = std::max(named, sorted[j].index);
+      if (lo != hi && std::fabs(upper - lower) > 1e-12 * largest)
+        fail(MC_ERROR_ARGUMENT,
+             "rows[%zu], cols[%zu] = (%d, %d): the entries of this call at (%d, %d) sum to %.17g and at (%d, %d) to "
+             "%.17g: an MC_MATRIX_FULL matrix must be symmetric (give one triangle with MC_MATRIX_TRIANGLE)",
+             named, named, rows[named], cols[named], lo + base, hi + base, upper, hi + base, lo + base, lower);
+      i = j;
+    }
+  }
+  const double share = storage == MC_MATRIX_FULL ? 0.5 : 1.0;  // FULL: each triangle holds the whole
+  host.entry_row.reserve(host.entry_row.size() + kept.size());
+  for (const Entry &e : kept) {
+    const double v = e.row == e.col ? e.value : share * e.value;
+    host.entry_row.push_back(std::min(e.row, e.col)), host.entry_col.push_back(std::max(e.row, e.col));
+    host.entry_value.push_back(v);
+  }
+}
+
+void add_element_matrices(HostBody &host, int n_elements, const int *eltptr, const int *eltvar, const double *a_elt,
+                          int base) {
+  if (n_elements < 0) fail(MC_ERROR_ARGUMENT, "n_elements = %d: must not be negative", n_elements);
+  if (n_elements == 0) return;
+  if (!eltptr) fail(MC_ERROR_ARGUMENT, "eltptr is NULL");
+  if (!eltvar) fail(MC_ERROR_ARGUMENT, "eltvar is NULL");
+  if (!a_elt) fail(MC_ERROR_ARGUMENT, "a_elt is NULL");
+  if (eltptr[0] != base)
+    fail(MC_ERROR_ARGUMENT, "eltptr[0] = %d: the first element's equations start at eltvar's first entry, %d (the "
+         "index base)", eltptr[0], base);
+  for (int e = 0; e < n_elements; ++e)
+    if (eltptr[e + 1] < eltptr[e])
+      fail(MC_ERROR_ARGUMENT, "eltptr[%d] = %d is less than eltptr[%d] = %d: element %d would have a negative number of "
+           "equations", e + 1, eltptr[e + 1], e, eltptr[e], e + base);
+  // The matrices first, so that a bad one adds nothing.
+  std::vector<int> row, col;
+  std::vector<double> value;
+  size_t offset = 0;  // into a_elt
+  for (int e = 0; e < n_elements; ++e) {
+    const size_t first = size_t(eltptr[e] - base), size = size_t(eltptr[e + 1] - eltptr[e]);
+    std::vector<int> local(size);
+    for (size_t a = 0; a < size; ++a) local[a] = host_equation(host, eltvar[first + a], "eltvar", first + a, base);
+    const double *ke = a_elt + offset;
+    double largest = 0;
+    for (size_t k = 0; k < size * size; ++k) {
+      if (!std::isfinite(ke[k])) fail(MC_ERROR_ARGUMENT, "a_elt[%zu] (element %d) is not finite", offset + k, e + base);
+      largest = std::max(largest, std::fabs(ke[k]));
+    }
+    for (size_t j = 0; j < size; ++j)
+      for (size_t i = 0; i < j; ++i)
+        if (std::fabs(ke[j * size + i] - ke[i * size + j]) > 1e-12 * largest)
+          fail(MC_ERROR_ARGUMENT, "a_elt[%zu] (element %d, row %zu, column %zu) = %.17g but its mirror is %.17g: an "
+               "element matrix must be symmetric", offset + j * size + i, e + base, i + 1, j + 1, ke[j * size + i],
+               ke[i * size + j]);
+    for (size_t j = 0; j < size; ++j)
+      for (size_t i = 0; i <= j; ++i) {
+        const int r = local[i], c = local[j];
+        if (r < 0 || c < 0) continue;
+        // the mean of the two halves: exact for a symmetric matrix, and the lower triangle
+        // of an equation pair listed twice in one element lands in the upper too
+        const double v = i == j ? ke[j * size + i] : 0.5 * (ke[j * size + i] + ke[i * size + j]);
+        row.push_back(std::min(r, c)), col.push_back(std::max(r, c));
+        value.push_back(r == c && i != j ? 2 * v : v);
+      }
+    offset += size * size;
+  }
+  host.entry_row.insert(host.entry_row.end(), row.begin(), row.end());
+  host.entry_col.insert(host.entry_col.end(), col.begin(), col.end());
+  host.entry_value.insert(host.entry_value.end(), value.begin(), value.end());
+}
+
+SymmetricCsc assemble_host_stiffness(const HostBody &host, int body, int base) {
+  const int n = host.n_equations;
+  const size_t count = host.entry_row.size();
+  // Counting sort by column, then rows sorted and duplicates summed within each column.
+  std::vector<int> start(size_t(n) + 1, 0);
+  for (size_t k = 0; k < count; ++k) start[host.entry_col[k] + 1]++;
+  for (int j = 0; j < n; ++j) start[j + 1] += start[j];
+  std::vector<int> next(start.begin(), start.end() - 1), order(count);
+  for (size_t k = 0; k < count; ++k) order[size_t(next[host.entry_col[k]]++)] = int(k);
+  SymmetricCsc a;
+  a.n = n;
+  a.colptr.assign(size_t(n) + 1, 0);
+  a.rows.reserve(count), a.values.reserve(count);
+  std::vector<std::pair<int, double>> column;
+  for (int j = 0; j < n; ++j) {
+    column.clear();
+    for (int p = start[j]; p < start[j + 1]; ++p) column.emplace_back(host.entry_row[order[p]], host.entry_value[order[p]]);
+    std::sort(column.begin(), column.end(), [](const auto &x, const auto &y) { return x.first < y.first; });
+    bool diagonal = false;
+    for (size_t p = 0; p < column.size(); ++p) {
+      if (!a.rows.empty() && int(a.rows.size()) > a.colptr[j] && a.rows.back() == column[p].first)
+        a.values.back() += column[p].second;
+      else a.rows.push_back(column[p].first), a.values.push_back(column[p].second);
+    }
+    if (int(a.rows.size()) > a.colptr[j] && a.rows.back() == j) diagonal = a.values.back() > 0;
+    if (!diagonal) {
+      const double d = int(a.rows.size()) > a.colptr[j] && a.rows.back() == j ? a.values.back() : 0.0;
+      char whose[64] = "";
+      if (host.node_of_equation[j] >= 0)
+        std::snprintf(whose, sizeof whose, " (node %d, %s)", host.node_of_equation[j] + base,
+                      host.component_of_equation[j] ? "y" : "x");
+      fail(MC_ERROR_SINGULAR,
+           "body %d: the host's stiffness has diagonal %g at equation %d%s: a stiffness matrix has a positive "
+           "diagonal (an equation no entry reaches is a freedom nothing holds)",
+           body, d, j + base, whose);
+    }
+    a.colptr[j + 1] = int(a.rows.size());
+  }
+  return a;
+}
+
+}  // namespace mc
