@@ -58,64 +58,38 @@ void add_coordinate_entries(HostBody &host, int n, const int *rows, const int *c
   if (!rows) fail(MC_ERROR_ARGUMENT, "rows is NULL");
   if (!cols) fail(MC_ERROR_ARGUMENT, "cols is NULL");
   if (!values) fail(MC_ERROR_ARGUMENT, "values is NULL");
-  struct Entry {
-    int row, col;
-    double value;
-    size_t index;
-  };
-  std::vector<Entry> kept;
-  kept.reserve(size_t(n));
+  // Appended after the entries so far (reserved: no zero-filled copy first), and cut back if an
+  // entry is bad.
+  const size_t old = host.entry_row.size();
+  host.entry_row.reserve(old + size_t(n)), host.entry_col.reserve(old + size_t(n));
+  host.entry_value.reserve(old + size_t(n)), host.entry_half.reserve(old + size_t(n));
+  const bool full = storage == MC_MATRIX_FULL;
   int triangle = 0;  // +1 upper (row < col), -1 lower, 0 not yet seen
   double largest = 0;
-  for (size_t k = 0; k < size_t(n); ++k) {
-    if (!std::isfinite(values[k])) fail(MC_ERROR_ARGUMENT, "values[%zu] is not finite", k);
-    const int r = host_equation(host, rows[k], "rows", k, base), c = host_equation(host, cols[k], "cols", k, base);
-    if (r < 0 || c < 0) continue;  // a restrained freedom's row or column
-    if (storage == MC_MATRIX_TRIANGLE && r != c) {
-      const int side = r < c ? 1 : -1;
-      if (triangle != 0 && side != triangle)
-        fail(MC_ERROR_ARGUMENT,
-             "rows[%zu], cols[%zu] = (%d, %d) is in the %s triangle, earlier entries of this call in the %s: "
-             "MC_MATRIX_TRIANGLE takes one triangle (each off-diagonal pair once); give both with MC_MATRIX_FULL",
-             k, k, rows[k], cols[k], side > 0 ? "upper" : "lower", side > 0 ? "lower" : "upper");
-      triangle = side;
+  try {
+    for (size_t k = 0; k < size_t(n); ++k) {
+      if (!std::isfinite(values[k])) fail(MC_ERROR_ARGUMENT, "values[%zu] is not finite", k);
+      const int r = host_equation(host, rows[k], "rows", k, base), c = host_equation(host, cols[k], "cols", k, base);
+      if (r < 0 || c < 0) continue;  // a restrained freedom's row or column
+      if (!full && r != c) {
+        const int side = r < c ? 1 : -1;
+        if (triangle != 0 && side != triangle)
+          fail(MC_ERROR_ARGUMENT,
+               "rows[%zu], cols[%zu] = (%d, %d) is in the %s triangle, earlier entries of this call in the %s: "
+               "MC_MATRIX_TRIANGLE takes one triangle (each off-diagonal pair once); give both with MC_MATRIX_FULL",
+               k, k, rows[k], cols[k], side > 0 ? "upper" : "lower", side > 0 ? "lower" : "upper");
+        triangle = side;
+      }
+      if (full) largest = std::max(largest, std::fabs(values[k]));
+      host.entry_row.push_back(std::min(r, c)), host.entry_col.push_back(std::max(r, c));
+      host.entry_value.push_back(values[k]);
+      host.entry_half.push_back(full && r != c ? (r < c ? 1 : 2) : 0);
     }
-    largest = std::max(largest, std::fabs(values[k]));
-    kept.push_back({r, c, values[k], k});
+  } catch (...) {
+    host.entry_row.resize(old), host.entry_col.resize(old), host.entry_value.resize(old), host.entry_half.resize(old);
+    throw;
   }
-  if (storage == MC_MATRIX_FULL) {
-    // Both triangles: the summed (r, c) and (c, r) must agree. Sorted by (min, max, r > c), the
-    // two halves of each pair are adjacent runs.
-    std::vector<Entry> sorted(kept);
-    std::sort(sorted.begin(), sorted.end(), [](const Entry &a, const Entry &b) {
-      const int a0 = std::min(a.row, a.col), a1 = std::max(a.row, a.col), b0 = std::min(b.row, b.col),
-                b1 = std::max(b.row, b.col);
-      if (a0 != b0) return a0 < b0;
-      if (a1 != b1) return a1 < b1;
-      return a.row < b.row;
-    });
-    for (size_t i = 0; i < sorted.size();) {
-      size_t j = i;
-      double upper = 0, lower = 0;
-      size_t named = sorted[i].index;
-      const int lo = std::min(sorted[i].row, sorted[i].col), hi = std::max(sorted[i].row, sorted[i].col);
-      for (; j < sorted.size() && std::min(sorted[j].row, sorted[j].col) == lo && std::max(sorted[j].row, sorted[j].col) == hi; ++j)
-        (sorted[j].row < sorted[j].col ? upper : lower) += sorted[j].value, named = std::max(named, sorted[j].index);
-      if (lo != hi && std::fabs(upper - lower) > 1e-12 * largest)
-        fail(MC_ERROR_ARGUMENT,
-             "rows[%zu], cols[%zu] = (%d, %d): the entries of this call at (%d, %d) sum to %.17g and at (%d, %d) to "
-             "%.17g: an MC_MATRIX_FULL matrix must be symmetric (give one triangle with MC_MATRIX_TRIANGLE)",
-             named, named, rows[named], cols[named], lo + base, hi + base, upper, hi + base, lo + base, lower);
-      i = j;
-    }
-  }
-  const double share = storage == MC_MATRIX_FULL ? 0.5 : 1.0;  // FULL: each triangle holds the whole
-  host.entry_row.reserve(host.entry_row.size() + kept.size());
-  for (const Entry &e : kept) {
-    const double v = e.row == e.col ? e.value : share * e.value;
-    host.entry_row.push_back(std::min(e.row, e.col)), host.entry_col.push_back(std::max(e.row, e.col));
-    host.entry_value.push_back(v);
-  }
+  host.full_largest = std::max(host.full_largest, largest);
 }
 
 void add_element_matrices(HostBody &host, int n_elements, const int *eltptr, const int *eltvar, const double *a_elt,
@@ -167,12 +141,14 @@ void add_element_matrices(HostBody &host, int n_elements, const int *eltptr, con
   host.entry_row.insert(host.entry_row.end(), row.begin(), row.end());
   host.entry_col.insert(host.entry_col.end(), col.begin(), col.end());
   host.entry_value.insert(host.entry_value.end(), value.begin(), value.end());
+  host.entry_half.resize(host.entry_row.size(), 0);
 }
 
 SymmetricCsc assemble_host_stiffness(const HostBody &host, int body, int base) {
   const int n = host.n_equations;
   const size_t count = host.entry_row.size();
-  // Counting sort by column, then rows sorted and duplicates summed within each column.
+  // Counting sort by column, then rows sorted and duplicates summed within each column; an
+  // MC_MATRIX_FULL pair's two triangles are summed apart and must agree.
   std::vector<int> start(size_t(n) + 1, 0);
   for (size_t k = 0; k < count; ++k) start[host.entry_col[k] + 1]++;
   for (int j = 0; j < n; ++j) start[j + 1] += start[j];
@@ -182,20 +158,32 @@ SymmetricCsc assemble_host_stiffness(const HostBody &host, int body, int base) {
   a.n = n;
   a.colptr.assign(size_t(n) + 1, 0);
   a.rows.reserve(count), a.values.reserve(count);
-  std::vector<std::pair<int, double>> column;
+  struct Sum {
+    int row;
+    double whole, upper, lower;
+  };
+  std::vector<std::pair<int, int>> column;  // (row, entry)
   for (int j = 0; j < n; ++j) {
     column.clear();
-    for (int p = start[j]; p < start[j + 1]; ++p) column.emplace_back(host.entry_row[order[p]], host.entry_value[order[p]]);
-    std::sort(column.begin(), column.end(), [](const auto &x, const auto &y) { return x.first < y.first; });
-    bool diagonal = false;
-    for (size_t p = 0; p < column.size(); ++p) {
-      if (!a.rows.empty() && int(a.rows.size()) > a.colptr[j] && a.rows.back() == column[p].first)
-        a.values.back() += column[p].second;
-      else a.rows.push_back(column[p].first), a.values.push_back(column[p].second);
+    for (int p = start[j]; p < start[j + 1]; ++p) column.emplace_back(host.entry_row[order[p]], order[p]);
+    std::sort(column.begin(), column.end());
+    for (size_t p = 0; p < column.size();) {
+      Sum sum{column[p].first, 0, 0, 0};
+      for (; p < column.size() && column[p].first == sum.row; ++p) {
+        const int k = column[p].second;
+        const double v = host.entry_value[k];
+        (host.entry_half[k] == 1 ? sum.upper : host.entry_half[k] == 2 ? sum.lower : sum.whole) += v;
+      }
+      if (std::fabs(sum.upper - sum.lower) > 1e-12 * host.full_largest)
+        fail(MC_ERROR_ARGUMENT,
+             "body %d: the MC_MATRIX_FULL entries at (%d, %d) sum to %.17g and at (%d, %d) to %.17g: a matrix given "
+             "in both triangles must be symmetric (or give one triangle with MC_MATRIX_TRIANGLE)",
+             body, sum.row + base, j + base, sum.upper, j + base, sum.row + base, sum.lower);
+      a.rows.push_back(sum.row), a.values.push_back(sum.whole + 0.5 * (sum.upper + sum.lower));
     }
-    if (int(a.rows.size()) > a.colptr[j] && a.rows.back() == j) diagonal = a.values.back() > 0;
-    if (!diagonal) {
-      const double d = int(a.rows.size()) > a.colptr[j] && a.rows.back() == j ? a.values.back() : 0.0;
+    const bool has_diagonal = int(a.rows.size()) > a.colptr[j] && a.rows.back() == j;
+    if (!has_diagonal || !(a.values.back() > 0)) {
+      const double d = has_diagonal ? a.values.back() : 0.0;
       char whose[64] = "";
       if (host.node_of_equation[j] >= 0)
         std::snprintf(whose, sizeof whose, " (node %d, %s)", host.node_of_equation[j] + base,
