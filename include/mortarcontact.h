@@ -348,11 +348,15 @@ MC_API mc_status mc_set_host_body(mc_model *m, int body, mc_int n_nodes, const d
                                   mc_int n_equations);
 /* Adds coordinate entries to a host body's stiffness: entry k is values[k] at (rows[k], cols[k]),
    equation numbers from the index base; duplicates are summed; an entry naming a number below
-   the base is skipped. storage: MC_MATRIX_FULL (both triangles; the entries of one call, summed,
-   must be symmetric to 1e-12 of their largest, else MC_ERROR_ARGUMENT naming the entry) or
-   MC_MATRIX_TRIANGLE (one triangle, either, the same for every off-diagonal entry of the call;
-   the other is its mirror). Repeated calls add. A non-finite value or a number above the system
-   is MC_ERROR_ARGUMENT naming k; a call that fails adds nothing. */
+   the base is skipped. storage: MC_MATRIX_FULL (both triangles) or MC_MATRIX_TRIANGLE (one
+   triangle, either, the same for every off-diagonal entry of the call; the other is its
+   mirror). Repeated calls add. A non-finite value, a number above the system, or a TRIANGLE call
+   with entries in both triangles is MC_ERROR_ARGUMENT naming k; a call that fails adds nothing.
+   The call costs one pass over its arrays (no sort): whether the MC_MATRIX_FULL entries, summed
+   over all calls, are symmetric (to 1e-12 of their largest) is checked by mc_solve when it
+   assembles the matrix, an MC_ERROR_ARGUMENT naming the two equations of the first pair that is
+   not (start again with mc_set_host_body). mc_solve also refuses (MC_ERROR_SINGULAR, naming the
+   equation) a diagonal that is not positive, and a matrix singular beyond the rigid modes. */
 MC_API mc_status mc_add_stiffness(mc_model *m, int body, mc_int n_entries, const mc_int *rows, const mc_int *cols,
                                   const double *values, int storage);
 /* Adds element matrices to a host body's stiffness (MUMPS's elemental input, Smith and

@@ -21,8 +21,10 @@
  * library's message (mc_errmsg). Arrays whose size does not fit the call (an odd number of
  * coordinates, ...) throw Error with Status::error_argument before the C call.
  *
- * Getters returning vectors size them from the counts this Model passed to set_mesh (the C API
- * has no node-count getter): a mesh set through the raw handle get() is unknown to them.
+ * Getters returning vectors size them from the counts this Model passed to set_mesh or
+ * set_host_body (the C API has no node-count getter): a body set through the raw handle get() is
+ * unknown to them. The Model also remembers the index base it set (set_index_base), which the
+ * vector overload of add_element_matrices needs to check its arrays.
  */
 #ifndef MORTARCONTACT_HPP
 #define MORTARCONTACT_HPP
@@ -125,6 +127,12 @@ enum class Info : int {
 };
 
 enum class LogLevel : int { phase = MC_LOG_PHASE, iteration = MC_LOG_ITERATION };
+
+/// The storage argument of Model::add_stiffness.
+enum class MatrixStorage : int {
+  full = MC_MATRIX_FULL,         ///< both triangles given (summed duplicates symmetric to round-off)
+  triangle = MC_MATRIX_TRIANGLE  ///< one triangle, either, each off-diagonal pair once
+};
 
 /// The header's version (the library's own: version_string(), version_number()).
 constexpr int header_version_major = MC_VERSION_MAJOR;
@@ -237,7 +245,10 @@ class Model {
 
   // ---- the scene ----
 
-  void set_index_base(int base) { check(::mc_set_index_base(get(), base)); }
+  void set_index_base(int base) {
+    check(::mc_set_index_base(get(), base));
+    base_ = base;
+  }
   void set_plane(Plane plane, double thickness = 1.0) {
     check(::mc_set_plane(get(), static_cast<int>(plane), thickness));
   }
@@ -246,7 +257,7 @@ class Model {
   void set_mesh(int body, mc_int n_nodes, const double *xy, mc_int n_cells, int nodes_per_cell,
                 const mc_int *cells) {
     check(::mc_set_mesh(get(), body, n_nodes, xy, n_cells, nodes_per_cell, cells));
-    mesh_of(body) = MeshSize{n_nodes, n_cells};
+    mesh_of(body) = MeshSize{n_nodes, n_cells, 0};
   }
   void set_mesh(int body, const std::vector<double> &xy, const std::vector<mc_int> &cells, int nodes_per_cell) {
     if (nodes_per_cell <= 0) throw Error(Status::error_argument, "set_mesh: nodes_per_cell must be 3, 4, 6, 8 or 9");
@@ -322,6 +333,88 @@ class Model {
     set_gap_offset(detail::paired_count(nodes, 1, offset, 1, "set_gap_offset"), nodes.data(), offset.data());
   }
 
+  // ---- host bodies: a legacy program's own matrices ----
+
+  /// A body with no cells: xy 2 per node, equations 2 per node (x then y; a number below the
+  /// index base: no equation), n_equations the size of the host's system.
+  void set_host_body(int body, mc_int n_nodes, const double *xy, const mc_int *equations, mc_int n_equations) {
+    check(::mc_set_host_body(get(), body, n_nodes, xy, equations, n_equations));
+    mesh_of(body) = MeshSize{n_nodes, 0, n_equations};
+  }
+  void set_host_body(int body, const std::vector<double> &xy, const std::vector<mc_int> &equations,
+                     mc_int n_equations) {
+    const mc_int n_nodes = detail::item_count(xy.size(), 2, "set_host_body: xy");
+    if (equations.size() != xy.size())
+      throw Error(Status::error_argument, "set_host_body: " + std::to_string(equations.size()) +
+                                              " equation numbers for " + std::to_string(n_nodes) +
+                                              " nodes, expected 2 per node");
+    set_host_body(body, n_nodes, xy.data(), equations.data(), n_equations);
+  }
+
+  /// Coordinate entries (values[k] at rows[k], cols[k], host equation numbers), duplicates summed.
+  void add_stiffness(int body, mc_int n_entries, const mc_int *rows, const mc_int *cols, const double *values,
+                     MatrixStorage storage = MatrixStorage::full) {
+    check(::mc_add_stiffness(get(), body, n_entries, rows, cols, values, static_cast<int>(storage)));
+  }
+  void add_stiffness(int body, const std::vector<mc_int> &rows, const std::vector<mc_int> &cols,
+                     const std::vector<double> &values, MatrixStorage storage = MatrixStorage::full) {
+    const mc_int n = detail::paired_count(rows, 1, values, 1, "add_stiffness: rows and values");
+    if (cols.size() != rows.size())
+      throw Error(Status::error_argument, "add_stiffness: " + std::to_string(cols.size()) + " cols for " +
+                                              std::to_string(rows.size()) + " rows");
+    add_stiffness(body, n, rows.data(), cols.data(), values.data(), storage);
+  }
+
+  /// Element matrices (MUMPS's elemental input): element e's equations are
+  /// eltvar[eltptr[e] - base .. eltptr[e + 1] - base), its square matrix column by column in a_elt.
+  void add_element_matrices(int body, mc_int n_elements, const mc_int *eltptr, const mc_int *eltvar,
+                            const double *a_elt) {
+    check(::mc_add_element_matrices(get(), body, n_elements, eltptr, eltvar, a_elt));
+  }
+  /// eltptr: n_elements + 1 entries counted from the index base; eltvar and a_elt exactly as long
+  /// as eltptr says (checked before the C call, which has no length for them).
+  void add_element_matrices(int body, const std::vector<mc_int> &eltptr, const std::vector<mc_int> &eltvar,
+                            const std::vector<double> &a_elt) {
+    const mc_int n_elements = detail::item_count(eltptr.size(), 1, "add_element_matrices: eltptr") - 1;
+    if (n_elements < 0) throw Error(Status::error_argument, "add_element_matrices: eltptr needs n_elements + 1 entries");
+    if (eltptr.front() != base_)
+      throw Error(Status::error_argument, "add_element_matrices: eltptr[0] = " + std::to_string(eltptr.front()) +
+                                              ", expected the index base " + std::to_string(base_));
+    std::size_t n_values = 0;
+    for (mc_int e = 0; e < n_elements; ++e) {
+      const std::size_t i = static_cast<std::size_t>(e);
+      if (eltptr[i + 1] < eltptr[i])
+        throw Error(Status::error_argument, "add_element_matrices: eltptr[" + std::to_string(e + 1) + "] = " +
+                                                std::to_string(eltptr[i + 1]) + " is below eltptr[" +
+                                                std::to_string(e) + "] = " + std::to_string(eltptr[i]));
+      const auto size = static_cast<std::size_t>(static_cast<std::int64_t>(eltptr[i + 1]) - eltptr[i]);
+      n_values += size * size;
+    }
+    const auto n_vars = static_cast<std::size_t>(static_cast<std::int64_t>(eltptr.back()) - base_);
+    if (eltvar.size() != n_vars || a_elt.size() != n_values)
+      throw Error(Status::error_argument, "add_element_matrices: eltptr gives " + std::to_string(n_vars) +
+                                              " equations and " + std::to_string(n_values) + " matrix values, got " +
+                                              std::to_string(eltvar.size()) + " and " + std::to_string(a_elt.size()));
+    add_element_matrices(body, n_elements, eltptr.data(), detail::data_or_null(eltvar),
+                         detail::data_or_null(a_elt));
+  }
+
+  /// The load of a host body in equation order (replaces the previous one).
+  void set_load_vector(int body, mc_int n_equations, const double *f) {
+    check(::mc_set_load_vector(get(), body, n_equations, f));
+  }
+  void set_load_vector(int body, const std::vector<double> &f) {
+    set_load_vector(body, detail::item_count(f.size(), 1, "set_load_vector: f"), f.data());
+  }
+
+  /// Candidate contact surface of quadratic edges: 3 ids each (end, end, middle).
+  void set_contact_curved(int body, mc_int n_edges, const mc_int *edges) {
+    check(::mc_set_contact_curved(get(), body, n_edges, edges));
+  }
+  void set_contact_curved(int body, const std::vector<mc_int> &edges) {
+    set_contact_curved(body, detail::item_count(edges.size(), 3, "set_contact_curved: edges"), edges.data());
+  }
+
   // ---- options and solving ----
 
   void set_option_int(Option option, std::int64_t value) {
@@ -383,6 +476,17 @@ class Model {
   void get_reaction(int body, double *r) const { check(::mc_get_reaction(get(), body, r)); }
   std::vector<double> get_reaction(int body) const { return per_node(body, 2, ::mc_get_reaction); }
 
+  /// The displacements in equation order: n_equations of a host body, 2 per node of a mesh body.
+  void get_equation_solution(int body, double *u) const { check(::mc_get_equation_solution(get(), body, u)); }
+  std::vector<double> get_equation_solution(int body) const {
+    return body_values(body, equation_count(body), 1, ::mc_get_equation_solution);
+  }
+  /// The contact forces on the body as a load vector in its equation order (sized as above).
+  void get_contact_load(int body, double *r) const { check(::mc_get_contact_load(get(), body, r)); }
+  std::vector<double> get_contact_load(int body) const {
+    return body_values(body, equation_count(body), 1, ::mc_get_contact_load);
+  }
+
   /// Number of body-1 contact nodes: the length of the contact arrays.
   mc_int get_contact_count() const {
     mc_int n = 0;
@@ -415,7 +519,8 @@ class Model {
   };
   struct MeshSize {
     mc_int n_nodes = 0;
-    mc_int n_cells = 0;
+    mc_int n_cells = 0;      // 0 for a host body
+    mc_int n_equations = 0;  // a host body's system size; 0 for a mesh body
     bool known() const { return n_nodes > 0; }
   };
 
@@ -429,8 +534,13 @@ class Model {
     const MeshSize mesh = (body == 1 || body == 2) ? meshes_[static_cast<std::size_t>(body - 1)] : MeshSize{};
     if (!mesh.known())
       throw Error(Status::error_state, "body " + std::to_string(body) +
-                                           " has no mesh set through this Model: the array size is unknown");
+                                           " has no mesh or host body set through this Model: the array size is unknown");
     return mesh;
+  }
+  /// The length of a body's equation vectors: n_equations (host body) or 2 n_nodes (mesh body).
+  mc_int equation_count(int body) const {
+    const MeshSize mesh = known_mesh(body);
+    return mesh.n_equations > 0 ? mesh.n_equations : 2 * mesh.n_nodes;
   }
 
   using BodyGetter = mc_status (*)(const mc_model *, int, double *);
@@ -440,7 +550,8 @@ class Model {
   /// A C getter's values, `per_item` for each of `count` items, in a new vector.
   std::vector<double> body_values(int body, mc_int count, std::size_t per_item, BodyGetter c_getter) const {
     std::vector<double> values(per_item * static_cast<std::size_t>(count));
-    check(c_getter(get(), body, values.data()));
+    double none = 0;  // no values (a host body has no cells): still a pointer, the C call says why
+    check(c_getter(get(), body, values.empty() ? &none : values.data()));
     return values;
   }
   std::vector<double> per_node(int body, std::size_t per_item, BodyGetter c_getter) const {
@@ -458,6 +569,7 @@ class Model {
 
   std::unique_ptr<mc_model, Destroy> handle_;
   std::array<MeshSize, 2> meshes_{};
+  int base_ = 0;  // the index base set through this Model
   std::unique_ptr<detail::LogRelay> log_;
 };
 

@@ -176,8 +176,12 @@ RigidModes kernel_rigid_modes(const std::vector<Point> &point, const std::vector
   double mu[3], work[32];
   dsygv_(&itype, "V", "U", &n, g, &n, m, &n, mu, work, &lwork, &info);
   if (info != 0) fail(MC_ERROR_INTERNAL, "dsygv failed (%d) in the rigid-mode analysis of a host body", info);
-  // mu = |K R v|^2 for R v of unit norm; a held body's least is about (kmax / sqrt(ndof))^2.
-  const double threshold = 1e-18 * kmax * kmax;
+  // mu = |K R v|^2 for R v of unit norm. A free mode's is round-off: dsygv's eigenvalues are
+  // accurate to eps times the largest (measured: 3.8e-16 for a free translation of a Q9 body
+  // whose held modes had 0.39 and 1.39), while a body held by one restrained freedom resists
+  // with about (kmax / sqrt(unknowns))^2 (1e-6 kmax^2 at 10^6 unknowns). Free: below 1e-10 of
+  // the largest, or below (1e-9 kmax)^2 when all are free.
+  const double threshold = 1e-18 * kmax * kmax + 1e-10 * mu[candidates - 1];
   while (result.count < candidates && mu[result.count] <= threshold) ++result.count;
   if (result.count == 0) return result;
   const int count = result.count;
