@@ -3,6 +3,13 @@
  *
  *   build/bench/axisymmetric_hertz [speed] [h ...]   (default h: 0.04 0.02 0.01 0.007 0.005;
  *                                                      "speed": the speed table only)
+ *   build/bench/axisymmetric_hertz cells KIND:h,h,... [KIND:h,...]   (KIND: P1 Q1 T6 Q8 Q9)
+ *
+ * "cells": the cell kinds side by side (mortar, sphere_on_flat_solve_cells; h a cell's size):
+ * DOFs, p0 and a fitted against Hertz, the larger of the two errors, and for each kind other
+ * than P1 the DOFs P1 needs for that larger error (log-log interpolated between the two P1
+ * sizes where P1's error, from that size on, gets there), docs/benchmarks.md "Axisymmetric:
+ * quadratic cells".
  *
  * For each spacing h (both bodies' fine spacing near the contact, examples/scenes) and each
  * of P1/Q1 x mortar/dual: DOFs, p0 and a fitted to the pressure profile against Hertz, a from
@@ -12,10 +19,94 @@
  */
 #include "mortarcontact.h"
 #include "sphere_on_flat.h"
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+
+typedef struct kind_row {
+  int npc;
+  double h;
+  sphere_result r;
+  double err; /* max(|p0 error|, |a error|) */
+} kind_row;
+
+static const char *kind_name(int npc) {
+  return npc == 3 ? "P1" : npc == 4 ? "Q1" : npc == 6 ? "T6" : npc == 8 ? "Q8" : npc == 9 ? "Q9" : "?";
+}
+
+/* The cell kinds side by side: see the file header. */
+static int compare_kinds(int argc, char **argv) {
+  static kind_row rows[128];
+  int n = 0;
+  for (int i = 0; i < argc; ++i) {
+    const char *colon = strchr(argv[i], ':');
+    int npc = 0;
+    for (int k = 3; k <= 9; ++k)
+      if (colon && colon - argv[i] == 2 && !strncmp(argv[i], kind_name(k), 2)) npc = k;
+    if (!npc) {
+      fprintf(stderr, "cells: expected KIND:h,h,... (KIND: P1 Q1 T6 Q8 Q9), got %s\n", argv[i]);
+      return 2;
+    }
+    for (const char *q = colon + 1; *q && n < 128;) {
+      char *end;
+      double h = strtod(q, &end);
+      if (end == q || !(h > 0)) {
+        fprintf(stderr, "cells: bad size in %s\n", argv[i]);
+        return 2;
+      }
+      rows[n].npc = npc, rows[n++].h = h;
+      q = *end == ',' ? end + 1 : end;
+    }
+  }
+  printf("| cells | h | DOFs | p0 fitted | error | a fitted | error | larger error | solve s (library) | P1 DOFs at that "
+         "error | DOFs / P1's |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (int i = 0; i < n; ++i) {
+    kind_row *w = &rows[i];
+    int st = sphere_on_flat_solve_cells(w->h, w->npc, MC_METHOD_MORTAR, MC_NORMAL_MORTAR, MC_AXISYMMETRIC, &w->r);
+    if (st) {
+      printf("| %s | %g | failed (%d) |\n", kind_name(w->npc), w->h, st);
+      return 1;
+    }
+    w->err = fmax(fabs(w->r.p0 / w->r.p0_hertz - 1), fabs(w->r.a / w->r.a_hertz - 1));
+  }
+  /* P1's envelope: from each P1 size on (by DOFs), the largest error */
+  int p1[128], m = 0;
+  for (int i = 0; i < n; ++i)
+    if (rows[i].npc == 3) p1[m++] = i;
+  for (int i = 1; i < m; ++i)
+    for (int k = i; k > 0 && rows[p1[k - 1]].r.dofs > rows[p1[k]].r.dofs; --k) {
+      int t = p1[k];
+      p1[k] = p1[k - 1], p1[k - 1] = t;
+    }
+  double env[128];
+  for (int k = m - 1; k >= 0; --k) env[k] = fmax(rows[p1[k]].err, k + 1 < m ? env[k + 1] : 0);
+  for (int i = 0; i < n; ++i) {
+    const kind_row *w = &rows[i];
+    printf("| %s | %g | %ld | %.5g | %+.2f %% | %.5g | %+.2f %% | %.2f %% | %.3f |", kind_name(w->npc), w->h, w->r.dofs,
+           w->r.p0, 100 * (w->r.p0 / w->r.p0_hertz - 1), w->r.a, 100 * (w->r.a / w->r.a_hertz - 1), 100 * w->err,
+           w->r.seconds);
+    double dofs = NAN;
+    const char *prefix = "";
+    if (w->npc != 3 && m > 0) {
+      if (env[0] <= w->err) dofs = (double)rows[p1[0]].r.dofs, prefix = "<= ";
+      for (int k = 1; k < m && !isfinite(dofs); ++k)
+        if (env[k] <= w->err) {
+          double t = env[k] > 0 ? log(w->err / env[k - 1]) / log(env[k] / env[k - 1]) : 1;
+          double lo = log((double)rows[p1[k - 1]].r.dofs), hi = log((double)rows[p1[k]].r.dofs);
+          dofs = exp(lo + t * (hi - lo));
+        }
+    }
+    if (w->npc == 3 || !isfinite(w->err)) printf(" - | - |\n");
+    else if (!isfinite(dofs)) printf(" beyond P1's finest | - |\n");
+    else printf(" %s%.0f | %.2f |\n", prefix, dofs, w->r.dofs / dofs);
+    fflush(stdout);
+  }
+  return 0;
+}
 
 int main(int argc, char **argv) {
+  if (argc > 1 && !strcmp(argv[1], "cells")) return compare_kinds(argc - 2, argv + 2);
   double default_h[] = {0.04, 0.02, 0.01, 0.007, 0.005}, h[16];
   int n = 0, k, quads, method, speed_only = argc > 1 && argv[1][0] == 's';
   for (k = 1 + speed_only; k < argc && n < 16; ++k) h[n++] = atof(argv[k]);

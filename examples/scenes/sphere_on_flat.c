@@ -29,12 +29,12 @@ static void fit_profile(int n, const double *r, const double *p, double *p0, dou
   *a = sqrt(-intercept / slope);
 }
 
-int sphere_on_flat_solve(double h, int quads, int method, int normal, int plane, sphere_result *res) {
+int sphere_on_flat_solve_cells(double h, int nodes_per_cell, int method, int normal, int plane, sphere_result *res) {
   hertz_scene s;
   mc_model *m = NULL;
   int st, b, j;
   memset(res, 0, sizeof *res);
-  if (hertz_scene_axisymmetric(&s, h, SPHERE_H2_RATIO * h, quads)) return -1;
+  if (hertz_scene_axisymmetric_cells(&s, h, SPHERE_H2_RATIO * h, nodes_per_cell)) return -1;
   if (mc_create(&m) != MC_OK) {
     hertz_scene_free(&s);
     return MC_ERROR_MEMORY;
@@ -85,19 +85,25 @@ int sphere_on_flat_solve(double h, int quads, int method, int normal, int plane,
     mc_get_contact_pressure(m, p);
     mc_get_contact_force(m, f);
     mc_get_contact_normal(m, normals);
-    double r_last = 0, r_next = INFINITY;
+    /* a quadratic body 1: the profile on the corners (the multiplier's nodes) only */
+    char *corner = calloc((size_t)s.body[0].n_nodes, 1);
+    for (j = 0; j < 2 * s.n_contact_edges[0]; ++j) corner[s.contact_edges[0][j]] = 1;
+    double r_last = 0, r_next = INFINITY, *rc = malloc(sizeof(double) * (size_t)n), *pc = malloc(sizeof(double) * (size_t)n);
+    int nc = 0;
     for (j = 0; j < n; ++j) {
       r[j] = s.body[0].xy[2 * nodes[j]];
       res->total_force -= f[j] * normals[2 * j + 1]; /* axial share; the normals point down */
       if (p[j] > res->p_max) res->p_max = p[j];
+      if (!corner[nodes[j]]) continue;
+      rc[nc] = r[j], pc[nc++] = p[j];
       if (r[j] == 0.0) res->axis_pressure = p[j];
       if (p[j] > 0 && r[j] > r_last) r_last = r[j];
     }
-    for (j = 0; j < n; ++j)
-      if (r[j] > r_last && r[j] < r_next) r_next = r[j];
+    for (j = 0; j < nc; ++j)
+      if (rc[j] > r_last && rc[j] < r_next) r_next = rc[j];
     res->a_nodes = 0.5 * (r_last + r_next);
-    fit_profile(n, r, p, &res->p0, &res->a);
-    free(nodes), free(p), free(f), free(normals), free(r);
+    fit_profile(nc, rc, pc, &res->p0, &res->a);
+    free(nodes), free(p), free(f), free(normals), free(r), free(corner), free(rc), free(pc);
   }
 done:
 #undef TRY
@@ -105,6 +111,14 @@ done:
   mc_destroy(m);
   hertz_scene_free(&s);
   return st;
+}
+
+int sphere_on_flat_solve(double h, int quads, int method, int normal, int plane, sphere_result *r) {
+  if (quads != 0 && quads != 1) {
+    memset(r, 0, sizeof *r);
+    return -1;
+  }
+  return sphere_on_flat_solve_cells(h, quads ? 4 : 3, method, normal, plane, r);
 }
 
 int sphere_on_flat(double h, int quads, int method, sphere_result *r) {
