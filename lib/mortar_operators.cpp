@@ -395,7 +395,7 @@ void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, Constrain
     const int mid = g.segment_positions[qa.segment1][2];
     if (mid < 0 || qb.xi1 == qa.xi1 || qb.segment1 != qa.segment1) continue;
     const double s_mid = qa.s + (0.5 - qa.xi1) * (qb.s - qa.s) / (qb.xi1 - qa.xi1);
-    if (s_mid < -1e-12 || s_mid > 1 + 1e-12) continue;
+    if (s_mid <= 1e-9 || s_mid >= 1 - 1e-9) continue;  // outside, or a trace point of its own (the loop below)
     Coefficients &out = rows.pressure_of_position[mid];
     for (auto &[r, v] : c0) out.emplace_back(r, (1 - s_mid) * v);
     for (auto &[r, v] : c1) out.emplace_back(r, s_mid * v);
