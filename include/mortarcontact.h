@@ -98,8 +98,10 @@ enum {
   MC_OPTION_FEATURE_ANGLE = 9,   /* real, degrees in (0, 180): a contact chain is split into separately
                                     smoothed faces where adjacent edges turn by more than this; default 40 */
   MC_OPTION_THREADS = 10,       /* int: threads for the two bodies' work; default 0 (see below) */
-  MC_OPTION_INTERFACE_SOLVER = 11 /* int: MC_INTERFACE_*; how the contact problem is solved; default
+  MC_OPTION_INTERFACE_SOLVER = 11, /* int: MC_INTERFACE_*; how the contact problem is solved; default
                                      MC_INTERFACE_AUTO (see below) */
+  MC_OPTION_ERROR_ESTIMATE = 12  /* int: 1 (default) every solve estimates its error (MC_INFO_ERROR_ESTIMATE,
+                                    mc_get_error_indicator); 0 skips it */
 };
 
 /* Values of MC_OPTION_INTERFACE_SOLVER, and of MC_INFO_INTERFACE_SOLVER (which one ran).
@@ -209,7 +211,7 @@ enum {
   MC_INFO_COMPLEMENTARITY = 27,    /* real: largest relative violation of lambda>=0, gap>=0, lambda*gap=0 */
   MC_INFO_EQUILIBRIUM = 28,        /* real: ||K u + B^T lambda - f|| / ||f - K u_prescribed, B^T lambda||
                                       on the free unknowns (u without its rigid-mode part) */
-  MC_INFO_GAP_RESIDUAL = 29        /* real: the gaps of the returned displacements: largest |gap| of a row
+  MC_INFO_GAP_RESIDUAL = 29,       /* real: the gaps of the returned displacements: largest |gap| of a row
                                       with lambda > 0, or penetration of one with lambda = 0, as a length
                                       (the row's weighted gap over its weights), relative to the largest
                                       displacement or initial gap; 0 without contact. Above 1e-13 the
@@ -217,6 +219,14 @@ enum {
                                       on the full problem's residuals) and reports the value after;
                                       MC_INFO_COMPLEMENTARITY, the condensed problem's, cannot show
                                       what the condensation lost (docs/robustness.md) */
+  MC_INFO_ERROR_ESTIMATE = 30      /* real: the estimated relative error of the solution in the energy norm
+                                      of both bodies, eta / sqrt(||u_h||^2 + eta^2) with ||u_h||^2 =
+                                      u^T K u (twice MC_INFO_STRAIN_ENERGY): Zienkiewicz-Zhu recovery in
+                                      each cell plus, on body 1's contact edges, the misfit between the
+                                      recovered normal stress and the contact pressure and the
+                                      complementarity of pressure and gap (docs/theory.md, "Error
+                                      estimate"); 0 when MC_OPTION_ERROR_ESTIMATE is 0. Host bodies
+                                      (no cells) add nothing to it. */
 };
 
 /* ---- lifecycle, errors, version ---------------------------------------- */
@@ -429,6 +439,10 @@ MC_API mc_status mc_get_stress(const mc_model *m, int body, double *sigma);
    state with every cell kind. On the axis of an axisymmetric model the hoop strain u_r / r is
    taken as its limit du_r/dr. */
 MC_API mc_status mc_get_nodal_stress(const mc_model *m, int body, double *sigma);
+/* The error indicators of a body's cells: n_cells values, relative like MC_INFO_ERROR_ESTIMATE,
+   whose squares over both bodies add up to its square: refine where they are large.
+   MC_ERROR_STATE before a solve, for a host body, or when MC_OPTION_ERROR_ESTIMATE is 0. */
+MC_API mc_status mc_get_error_indicator(const mc_model *m, int body, double *eta);
 /* Support reactions of a body: 2 per node; the force the supports exert on the body at
    prescribed components, 0 at the others. Reactions + applied loads + contact forces = 0. */
 MC_API mc_status mc_get_reaction(const mc_model *m, int body, double *r);

@@ -197,6 +197,14 @@ const T *data_or_null(const std::vector<T> &v) {
   return v.empty() ? nullptr : v.data();
 }
 
+/// A vector's data, or a valid pointer to nothing when it is empty (an empty std::vector may give
+/// nullptr, which the C API refuses even for zero entries).
+template <class T>
+const T *data_or_empty(const std::vector<T> &v) {
+  static const T none{};
+  return v.empty() ? &none : v.data();
+}
+
 /// The log callback's state. Heap-allocated so that its address, the C callback's user data,
 /// survives moving the Model.
 struct LogRelay {
@@ -362,7 +370,8 @@ class Model {
     if (cols.size() != rows.size())
       throw Error(Status::error_argument, "add_stiffness: " + std::to_string(cols.size()) + " cols for " +
                                               std::to_string(rows.size()) + " rows");
-    add_stiffness(body, n, rows.data(), cols.data(), values.data(), storage);
+    add_stiffness(body, n, detail::data_or_empty(rows), detail::data_or_empty(cols), detail::data_or_empty(values),
+                  storage);
   }
 
   /// Element matrices (MUMPS's elemental input): element e's equations are
@@ -395,8 +404,7 @@ class Model {
       throw Error(Status::error_argument, "add_element_matrices: eltptr gives " + std::to_string(n_vars) +
                                               " equations and " + std::to_string(n_values) + " matrix values, got " +
                                               std::to_string(eltvar.size()) + " and " + std::to_string(a_elt.size()));
-    add_element_matrices(body, n_elements, eltptr.data(), detail::data_or_null(eltvar),
-                         detail::data_or_null(a_elt));
+    add_element_matrices(body, n_elements, eltptr.data(), detail::data_or_empty(eltvar), detail::data_or_empty(a_elt));
   }
 
   /// The load of a host body in equation order (replaces the previous one).

@@ -360,6 +360,12 @@ mc_status mc_set_option_int(mc_model *m, int option, int64_t value) {
                "threads, n up to 1024", (long long)value);
         model.options.threads = int(value);  // how, not what: the results and factorizations stay valid
         break;
+      case MC_OPTION_ERROR_ESTIMATE:
+        if (value != 0 && value != 1)
+          fail(MC_ERROR_ARGUMENT, "value = %lld: MC_OPTION_ERROR_ESTIMATE is 0 (off) or 1 (on)", (long long)value);
+        model.options.error_estimate = value == 1;
+        model.values_changed();
+        break;
       case MC_OPTION_INTERFACE_SOLVER:
         if (value < MC_INTERFACE_AUTO || value > MC_INTERFACE_SPARSE)
           fail(MC_ERROR_ARGUMENT, "value = %lld: MC_OPTION_INTERFACE_SOLVER takes MC_INTERFACE_AUTO (0), "
@@ -388,7 +394,8 @@ mc_status mc_set_option_real(mc_model *m, int option, double value) {
     if (option != MC_OPTION_TOLERANCE) {
       if (option == MC_OPTION_METHOD || option == MC_OPTION_MAX_ITERATIONS || option == MC_OPTION_ORDERING ||
           option == MC_OPTION_Q1_INTEGRATION || option == MC_OPTION_CONTACT_NORMAL ||
-          option == MC_OPTION_CONTACT_SURFACE || option == MC_OPTION_THREADS || option == MC_OPTION_INTERFACE_SOLVER)
+          option == MC_OPTION_CONTACT_SURFACE || option == MC_OPTION_THREADS || option == MC_OPTION_INTERFACE_SOLVER ||
+          option == MC_OPTION_ERROR_ESTIMATE)
         fail(MC_ERROR_ARGUMENT, "option = %d is integer-valued: use mc_set_option_int", option);
       fail(MC_ERROR_ARGUMENT, "option = %d: not a real option", option);
     }
@@ -426,7 +433,7 @@ mc_status mc_get_info_int(const mc_model *m, int info, int64_t *value) {
       case MC_INFO_FACTORIZATIONS: *value = i.factorizations; break;
       case MC_INFO_INTERFACE_SOLVER: *value = i.interface_solver; break;
       default:
-        if (info >= MC_INFO_TIME_ASSEMBLY && info <= MC_INFO_GAP_RESIDUAL)
+        if (info >= MC_INFO_TIME_ASSEMBLY && info <= MC_INFO_ERROR_ESTIMATE)
           fail(MC_ERROR_ARGUMENT, "info = %d is real-valued: use mc_get_info_real", info);
         fail(MC_ERROR_ARGUMENT, "info = %d: not an info", info);
     }
@@ -448,6 +455,7 @@ mc_status mc_get_info_real(const mc_model *m, int info, double *value) {
       case MC_INFO_COMPLEMENTARITY: *value = i.complementarity; break;
       case MC_INFO_EQUILIBRIUM: *value = i.equilibrium; break;
       case MC_INFO_GAP_RESIDUAL: *value = i.gap_residual; break;
+      case MC_INFO_ERROR_ESTIMATE: *value = i.error_estimate; break;
       default:
         if (info >= MC_INFO_DOFS && info <= MC_INFO_INTERFACE_SOLVER)
           fail(MC_ERROR_ARGUMENT, "info = %d is integer-valued: use mc_get_info_int", info);
@@ -480,6 +488,17 @@ mc_status mc_get_nodal_stress(const mc_model *m, int body, double *sigma) {
     refuse_host(b, body, "mc_get_nodal_stress", "a host body has no cells: the host computes its stresses from mc_get_equation_solution");
     require_pointer(sigma, "sigma");
     std::memcpy(sigma, b.nodal_stress.data(), b.nodal_stress.size() * sizeof(double));
+  });
+}
+
+mc_status mc_get_error_indicator(const mc_model *m, int body, double *eta) {
+  return guard_const(m, [&](const mc::Model &model) {
+    const mc::Body &b = solved_body(model, body);
+    refuse_host(b, body, "mc_get_error_indicator", "a host body has no cells to estimate on");
+    if (!model.options.error_estimate)
+      fail(MC_ERROR_STATE, "no error estimate: MC_OPTION_ERROR_ESTIMATE is 0 (set it to 1 and solve again)");
+    require_pointer(eta, "eta");
+    std::memcpy(eta, b.error_indicator.data(), b.error_indicator.size() * sizeof(double));
   });
 }
 

@@ -243,6 +243,93 @@ void cell_nodal_stresses(const Point *p, int npc, const PlaneLaw &law, const Lin
   }
 }
 
+namespace {
+
+// D^-1 of the law's n_strain x n_strain block (row-major, stride 4), by Gauss-Jordan with partial
+// pivoting; D is symmetric positive definite.
+void compliance(const PlaneLaw &law, double c[16]) {
+  const int n = law.n_strain;
+  double a[4][8];
+  for (int r = 0; r < n; ++r)
+    for (int k = 0; k < 2 * n; ++k) a[r][k] = k < n ? law.d[4 * r + k] : (k - n == r ? 1 : 0);
+  for (int col = 0; col < n; ++col) {
+    int pivot = col;
+    for (int r = col + 1; r < n; ++r)
+      if (std::fabs(a[r][col]) > std::fabs(a[pivot][col])) pivot = r;
+    for (int k = 0; k < 2 * n; ++k) std::swap(a[col][k], a[pivot][k]);
+    const double diagonal = a[col][col];
+    for (int k = 0; k < 2 * n; ++k) a[col][k] /= diagonal;
+    for (int r = 0; r < n; ++r) {
+      if (r == col) continue;
+      const double factor = a[r][col];
+      for (int k = 0; k < 2 * n; ++k) a[r][k] -= factor * a[col][k];
+    }
+  }
+  for (int r = 0; r < n; ++r)
+    for (int k = 0; k < n; ++k) c[4 * r + k] = a[r][n + k];
+}
+
+}  // namespace
+
+int cell_sampled_stresses(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar,
+                          const double *ue, Point *x, double *sigma) {
+  const int m = 2 * npc;
+  if (npc == 3 || npc == 4) {
+    BMatrix b[kMaxCellPoints];
+    double weight[kMaxCellPoints];
+    CellPoint q[kMaxCellPoints];
+    const int n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight);
+    cell_points(p, npc, measure, q);
+    for (int g = 0; g < n; ++g) x[g] = q[g].x, stress_at(b[g], m, law, ue, &sigma[4 * g]);
+    return n;
+  }
+  double xi[4], eta[4];
+  int n;
+  if (npc == 6) {
+    n = 3;
+    const double l[3][2] = {{1.0 / 6, 1.0 / 6}, {2.0 / 3, 1.0 / 6}, {1.0 / 6, 2.0 / 3}};
+    for (int g = 0; g < 3; ++g) xi[g] = l[g][0], eta[g] = l[g][1];
+  } else {
+    n = 4;
+    const double gauss = 0.57735026918962576451, sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+    for (int g = 0; g < 4; ++g) xi[g] = gauss * sx[g], eta[g] = gauss * sy[g];
+  }
+  for (int g = 0; g < n; ++g) {
+    const CellPoint cp = cell_point(p, npc, xi[g], eta[g]);
+    BMatrix b;
+    strain_displacement(npc, law.n_strain, cp, 0.0, b);
+    x[g] = cp.x;
+    stress_at(b, m, law, ue, &sigma[4 * g]);
+  }
+  return n;
+}
+
+double cell_recovery_error(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar,
+                           const double *ue, const double *nodal_sigma) {
+  BMatrix b[kMaxCellPoints];
+  double weight[kMaxCellPoints], c[16];
+  CellPoint q[kMaxCellPoints];
+  const int n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight), m = 2 * npc;
+  cell_points(p, npc, measure, q);
+  compliance(law, c);
+  // The components the energy sees: plane (xx, yy, xy), axisymmetric (rr, zz, rz, theta theta),
+  // in nodal_sigma's slots 0..3 as in the law's strain order.
+  const int k = law.n_strain;
+  double error = 0;
+  for (int g = 0; g < n; ++g) {
+    double own[4], recovered[4] = {0, 0, 0, 0}, d[4];
+    stress_at(b[g], m, law, ue, own);
+    for (int a = 0; a < npc; ++a)
+      for (int r = 0; r < k; ++r) recovered[r] += q[g].shape[a] * nodal_sigma[4 * a + r];
+    for (int r = 0; r < k; ++r) d[r] = recovered[r] - own[r];
+    double energy = 0;
+    for (int r = 0; r < k; ++r)
+      for (int s2 = 0; s2 < k; ++s2) energy += d[r] * c[4 * r + s2] * d[s2];
+    error += weight[g] * energy;
+  }
+  return error;
+}
+
 void cell_body_force(const Point *p, int npc, double bx, double by, const LineMeasure &measure, double *fe) {
   CellPoint q[kMaxCellPoints];
   const int n = cell_points(p, npc, measure, q);

@@ -38,6 +38,21 @@ void cell_stress(const Point *p, int npc, const PlaneLaw &law, const LineMeasure
 void cell_nodal_stresses(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar,
                          const double *ue, double *sigma);
 
+// The stresses of a cell at its sampling points, the points where they are most accurate
+// (stress_recovery.hpp): its quadrature points for P1 and Q1, the 3 interior points (2/3, 1/6,
+// 1/6) of a T6, the 2x2 Gauss points of a Q8 or Q9. Fills x (where) and sigma (4 per point);
+// returns the count (at most kMaxCellPoints).
+int cell_sampled_stresses(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar,
+                          const double *ue, Point *x, double *sigma);
+
+// The recovery (Zienkiewicz-Zhu) error of a cell: the integral over the cell of
+// (sigma* - sigma_h)^T D^-1 (sigma* - sigma_h) w, where sigma_h is the cell's own stress and
+// sigma* = sum_a N_a sigma_a interpolates the recovered stresses at its nodes (4 per node, as
+// cell_nodal_stresses; the plane models' fourth, sigma_zz, is not an independent component and
+// is left out). The energy of the stress error, in the units of the strain energy.
+double cell_recovery_error(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar,
+                           const double *ue, const double *nodal_sigma);
+
 // Consistent nodal forces of a uniform body force b (per unit volume): integral of N_a b w.
 void cell_body_force(const Point *p, int npc, double bx, double by, const LineMeasure &measure, double *fe);
 

@@ -677,6 +677,14 @@ void Model::solve() {
     }
   }
   progress(MC_LOG_PHASE, "recovery: displacements, reactions, stresses and contact results, %.3g s", now() - t_recovery);
+  if (options.error_estimate) {
+    const double t_estimate = now();
+    estimate_error();
+    infos.t_estimate = now() - t_estimate;
+    progress(MC_LOG_PHASE, "error estimate: %.3g (relative, energy norm), %.3g s", infos.error_estimate, infos.t_estimate);
+  } else {
+    estimate_error();  // clears the previous solve's
+  }
   infos.t_total = now() - start;
   progress(MC_LOG_PHASE, "solve: done, %ld unknowns, %ld active of %ld contact nodes, %.3g s", infos.dofs, infos.active,
            infos.contact_rows, infos.t_total);

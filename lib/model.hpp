@@ -52,6 +52,7 @@ struct Body {
   // results
   std::vector<double> u, reaction, stress, nodal_stress;  // u, reaction: per DOF
   std::vector<double> contact_load;     // per DOF: the contact forces on the body (K u = f + contact_load)
+  std::vector<double> error_indicator;  // per cell, relative (mc_get_error_indicator); empty: not estimated
 };
 
 // What a solve keeps for the next one when only loads or prescribed values change.
@@ -101,6 +102,7 @@ struct Options {
   double feature_angle = 40;  // degrees (docs/robustness.md: chosen by measurement)
   int threads = 0;  // MC_OPTION_THREADS: 0 automatic, 1 serial, n: at most n threads
   int interface_solver = MC_INTERFACE_AUTO;  // MC_OPTION_INTERFACE_SOLVER
+  bool error_estimate = true;                // MC_OPTION_ERROR_ESTIMATE
 };
 
 struct Infos {
@@ -110,6 +112,8 @@ struct Infos {
   double gap_residual = 0;  // MC_INFO_GAP_RESIDUAL: complementarity of the returned displacements' gaps
   int threads = 1;  // threads the last solve ran the bodies' work on (1 or 2)
   int interface_solver = 0;  // MC_INFO_INTERFACE_SOLVER: MC_INTERFACE_CONDENSED or _SPARSE; 0 without contact
+  double error_estimate = 0;  // MC_INFO_ERROR_ESTIMATE (error_estimate.cpp)
+  double t_estimate = 0;      // its time (part of MC_INFO_TIME_TOTAL)
 };
 
 // The smaller body's unknowns (2 x its nodes) from which MC_OPTION_THREADS = 0 (automatic)
@@ -216,6 +220,8 @@ private:
   void build_structure(const std::function<void(int, BodyWork &)> &then);
   void solve_loads(int b, BodyWork &work, LoadSolve &out) const;
   void cell_and_nodal_stresses(int b, const std::vector<PlaneLaw> &laws);
+  // MC_INFO_ERROR_ESTIMATE and the cells' indicators, after the recovery (error_estimate.cpp).
+  void estimate_error();
   std::vector<double> load_vector(int b) const;
   void effective_supports();
   // The supports a solve uses: the host's (mc_fix) and, in an axisymmetric model, u_r = 0 at

@@ -1,0 +1,167 @@
+#include "stress_recovery.hpp"
+#include "cell_shapes.hpp"
+#include "lapack.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace mc {
+
+namespace {
+
+// The monomials of the patch polynomial at (dx, dy) (coordinates relative to the patch's node,
+// divided by its size): 1, x, y (linear), then x^2, x y, y^2 (quadratic).
+int monomials(bool quadratic, double dx, double dy, double m[6]) {
+  m[0] = 1, m[1] = dx, m[2] = dy;
+  if (!quadratic) return 3;
+  m[3] = dx * dx, m[4] = dx * dy, m[5] = dy * dy;
+  return 6;
+}
+
+// A node's patch fit: the polynomial coefficients of each stress component (4 x terms), around
+// its node, in coordinates scaled by `size`.
+struct PatchFit {
+  Point centre{0, 0};
+  double size = 1;
+  int terms = 0;  // 0: no fit (then `mean` stands for the field near the node)
+  double coefficient[4][6] = {};
+  double mean[4] = {0, 0, 0, 0};
+
+  void evaluate(Point x, double sigma[4]) const {
+    if (terms == 0) {
+      for (int k = 0; k < 4; ++k) sigma[k] = mean[k];
+      return;
+    }
+    double m[6];
+    monomials(terms == 6, (x.x - centre.x) / size, (x.y - centre.y) / size, m);
+    for (int k = 0; k < 4; ++k) {
+      sigma[k] = 0;
+      for (int t = 0; t < terms; ++t) sigma[k] += coefficient[k][t] * m[t];
+    }
+  }
+};
+
+// Least squares over the sampling points (x, sigma): the normal equations, solved by a symmetric
+// indefinite factorization (dsysv) and checked for rank: a patch whose points lie on a line (a
+// corner of one cell) has no unique linear fit, and keeps its mean.
+PatchFit fit_patch(Point centre, bool quadratic, const std::vector<Point> &x, const std::vector<double> &sigma) {
+  PatchFit fit;
+  fit.centre = centre;
+  const size_t n = x.size();
+  double size = 0;
+  for (const Point &p : x) size = std::max(size, std::hypot(p.x - centre.x, p.y - centre.y));
+  fit.size = size > 0 ? size : 1;
+  for (size_t i = 0; i < n; ++i)
+    for (int k = 0; k < 4; ++k) fit.mean[k] += sigma[4 * i + k] / double(n);
+  const int terms = quadratic ? 6 : 3;
+  if (n < size_t(terms) + (quadratic ? 3 : 1)) return fit;
+  double a[36] = {0}, b[24] = {0}, m[6];
+  for (size_t i = 0; i < n; ++i) {
+    monomials(quadratic, (x[i].x - centre.x) / fit.size, (x[i].y - centre.y) / fit.size, m);
+    for (int r = 0; r < terms; ++r) {
+      for (int c = 0; c < terms; ++c) a[r * terms + c] += m[r] * m[c];
+      for (int k = 0; k < 4; ++k) b[k * terms + r] += m[r] * sigma[4 * i + k];
+    }
+  }
+  // Rank check: the smallest eigenvalue of the (scaled) normal matrix against its largest.
+  double eig_a[36], eig[6], work[64];
+  std::copy(a, a + terms * terms, eig_a);
+  int nt = terms, lwork = 64, info = 0;
+  dsyev_("N", "U", &nt, eig_a, &nt, eig, work, &lwork, &info);
+  if (info != 0 || !(eig[0] > 1e-10 * eig[terms - 1])) return fit;
+  int ipiv[6], four = 4;
+  dsysv_("U", &nt, &four, a, &nt, ipiv, b, &nt, work, &lwork, &info);
+  if (info != 0) return fit;
+  fit.terms = terms;
+  for (int k = 0; k < 4; ++k)
+    for (int t = 0; t < terms; ++t) fit.coefficient[k][t] = b[k * terms + t];
+  return fit;
+}
+
+}  // namespace
+
+std::vector<double> patch_recovered_stresses(const Mesh &mesh, const std::vector<PlaneLaw> &laws,
+                                             const LineMeasure &measure, bool bbar, const std::vector<double> &u) {
+  const int n_nodes = mesh.n_nodes(), n_cells = mesh.n_cells(), npc = mesh.nodes_per_cell();
+  const int corners = mesh.corners_per_cell();
+  const bool quadratic = mesh.quadratic();
+  // Each cell's sampled stresses, and the cells around each corner node (CSR).
+  std::vector<int> sample_start(size_t(n_cells) + 1, 0);
+  std::vector<Point> sample_x;
+  std::vector<double> sample_sigma;
+  sample_x.reserve(size_t(n_cells) * 4), sample_sigma.reserve(size_t(n_cells) * 16);
+  Point p[kMaxCellNodes], x[kMaxCellPoints];
+  double ue[2 * kMaxCellNodes], sigma[4 * kMaxCellPoints];
+  for (int c = 0; c < n_cells; ++c) {
+    const int *v = mesh.cell(c);
+    for (int a = 0; a < npc; ++a) p[a] = mesh.node(v[a]), ue[2 * a] = u[2 * size_t(v[a])], ue[2 * a + 1] = u[2 * size_t(v[a]) + 1];
+    const PlaneLaw &law = laws.size() == 1 ? laws[0] : laws[c];
+    const int n = cell_sampled_stresses(p, npc, law, measure, bbar, ue, x, sigma);
+    sample_x.insert(sample_x.end(), x, x + n);
+    sample_sigma.insert(sample_sigma.end(), sigma, sigma + 4 * n);
+    sample_start[c + 1] = int(sample_x.size());
+  }
+  std::vector<int> cell_start(size_t(n_nodes) + 1, 0), node_cells;
+  for (int c = 0; c < n_cells; ++c)
+    for (int a = 0; a < corners; ++a) cell_start[mesh.cell(c)[a] + 1]++;
+  for (int i = 0; i < n_nodes; ++i) cell_start[i + 1] += cell_start[i];
+  node_cells.resize(size_t(cell_start[n_nodes]));
+  {
+    std::vector<int> next(cell_start.begin(), cell_start.end() - 1);
+    for (int c = 0; c < n_cells; ++c)
+      for (int a = 0; a < corners; ++a) node_cells[size_t(next[mesh.cell(c)[a]]++)] = c;
+  }
+  // The fit of each corner node: its cells' samples; too few (a boundary node with one or two
+  // cells), then also the cells around those cells' corners.
+  const size_t wanted = quadratic ? 12 : 6;
+  std::vector<PatchFit> fits(n_nodes);
+  std::vector<int> patch, mark(n_cells, -1);
+  std::vector<Point> px;
+  std::vector<double> psigma;
+  for (int i = 0; i < n_nodes; ++i) {
+    if (cell_start[i] == cell_start[i + 1]) continue;  // not a corner (a middle, a centre)
+    patch.clear(), px.clear(), psigma.clear();
+    auto take = [&](int c) {
+      if (mark[c] == i) return;
+      mark[c] = i, patch.push_back(c);
+      for (int s = sample_start[c]; s < sample_start[c + 1]; ++s)
+        px.push_back(sample_x[s]), psigma.insert(psigma.end(), &sample_sigma[4 * size_t(s)], &sample_sigma[4 * size_t(s)] + 4);
+    };
+    for (int k = cell_start[i]; k < cell_start[i + 1]; ++k) take(node_cells[k]);
+    if (px.size() < wanted) {
+      const std::vector<int> first_ring(patch);
+      for (int c : first_ring)
+        for (int a = 0; a < corners; ++a) {
+          const int j = mesh.cell(c)[a];
+          for (int k = cell_start[j]; k < cell_start[j + 1]; ++k) take(node_cells[k]);
+        }
+    }
+    fits[i] = fit_patch(mesh.node(i), quadratic, px, psigma);
+  }
+  std::vector<double> out(4 * size_t(n_nodes), 0.0);
+  for (int i = 0; i < n_nodes; ++i)
+    if (cell_start[i] < cell_start[i + 1]) fits[i].evaluate(mesh.node(i), &out[4 * size_t(i)]);
+  if (!quadratic) return out;
+  // Middles and centres: the mean of their corners' polynomials there.
+  std::vector<char> done(n_nodes, 0);
+  for (int c = 0; c < n_cells; ++c) {
+    const int *v = mesh.cell(c);
+    for (int a = corners; a < npc; ++a) {
+      const int node = v[a];
+      if (done[node]) continue;
+      done[node] = 1;
+      const int k = a - corners;
+      const int ends[4] = {v[k % corners], v[(k + 1) % corners], v[2], v[3]};
+      const int count = a == 8 ? 4 : 2;  // a Q9 centre: all four corners
+      const int *which = a == 8 ? v : ends;
+      double sum[4] = {0, 0, 0, 0}, s[4];
+      for (int e = 0; e < count; ++e) {
+        fits[which[e]].evaluate(mesh.node(node), s);
+        for (int q = 0; q < 4; ++q) sum[q] += s[q] / count;
+      }
+      for (int q = 0; q < 4; ++q) out[4 * size_t(node) + q] = sum[q];
+    }
+  }
+  return out;
+}
+
+}  // namespace mc
