@@ -341,6 +341,19 @@ bool Model::solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::v
     result = cs.solver.solve(load, target, start_set, options.tolerance, options.max_iterations, hold_modes, observe);
   } catch (const Error &error) {
     if (error.status() != MC_ERROR_SINGULAR) throw;
+    // The unknown that failed, named in the body's terms: a host body's equation.
+    const int failed = cs.solver.failed_unknown();
+    for (int b = 0; b < 2 && failed >= 0; ++b) {
+      if (!system_[b] || !body[b].host) continue;
+      const int local = failed - cs.column_offset[b];
+      if (local >= 0 && local < int(system_[b]->solve_dofs.size()))
+        fail(MC_ERROR_SINGULAR,
+             "body %d: the host's stiffness is not positive definite: the sparse interface solver's factorization "
+             "fails at its equation %d (a part of the body moves without resistance, beyond %s, or the matrix is not "
+             "a stiffness)",
+             b + 1, system_[b]->solve_dofs[local] + index_base,
+             system_[b]->rigid.count > 0 ? "the rigid modes found from the coordinates" : "any rigid mode");
+    }
     fail(MC_ERROR_SINGULAR, "sparse interface solver: %s", error.what());
   }
   infos.iterations = result.iterations;

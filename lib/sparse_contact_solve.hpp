@@ -67,6 +67,8 @@ public:
   // CHOLMOD's estimates from the analysis, for the automatic choice of path.
   double factor_flops() const { return flops_; }
   long factor_nnz() const { return cholesky_.factor_nnz(); }
+  // After a factorization threw MC_ERROR_SINGULAR: the unknown whose pivot failed, or -1.
+  int failed_unknown() const { return cholesky_.failed_unknown(); }
   double analysis_seconds() const { return t_analysis_; }
 
   // Solves for loads F (n_unknowns) and right-hand sides t (one per row). start: the active

@@ -1,0 +1,6 @@
+# Host bodies (issue 22): bodies given by the host's own stiffness, load vector and equation
+# numbering, against the same scenes with mesh bodies; a layered orthotropic section; bad input
+# (tests/test_host_body.c). The host's matrices come from tests/host_assembly.c, an assembler
+# written independently of lib/.
+mc_add_check_test(test_host_body test_host_body.c host_assembly.c)
+target_link_libraries(test_host_body PRIVATE hertz_scene)
