@@ -106,42 +106,50 @@ void add_element_matrices(HostBody &host, int n_elements, const int *eltptr, con
     if (eltptr[e + 1] < eltptr[e])
       fail(MC_ERROR_ARGUMENT, "eltptr[%d] = %d is less than eltptr[%d] = %d: element %d would have a negative number of "
            "equations", e + 1, eltptr[e + 1], e, eltptr[e], e + base);
-  // The matrices first, so that a bad one adds nothing.
-  std::vector<int> row, col;
-  std::vector<double> value;
-  size_t offset = 0;  // into a_elt
+  // Appended in place (reserved first), and cut back if an element is bad: a call that fails
+  // adds nothing.
+  const size_t old = host.entry_row.size();
+  size_t upper = 0;
   for (int e = 0; e < n_elements; ++e) {
-    const size_t first = size_t(eltptr[e] - base), size = size_t(eltptr[e + 1] - eltptr[e]);
-    std::vector<int> local(size);
-    for (size_t a = 0; a < size; ++a) local[a] = host_equation(host, eltvar[first + a], "eltvar", first + a, base);
-    const double *ke = a_elt + offset;
-    double largest = 0;
-    for (size_t k = 0; k < size * size; ++k) {
-      if (!std::isfinite(ke[k])) fail(MC_ERROR_ARGUMENT, "a_elt[%zu] (element %d) is not finite", offset + k, e + base);
-      largest = std::max(largest, std::fabs(ke[k]));
-    }
-    for (size_t j = 0; j < size; ++j)
-      for (size_t i = 0; i < j; ++i)
-        if (std::fabs(ke[j * size + i] - ke[i * size + j]) > 1e-12 * largest)
-          fail(MC_ERROR_ARGUMENT, "a_elt[%zu] (element %d, row %zu, column %zu) = %.17g but its mirror is %.17g: an "
-               "element matrix must be symmetric", offset + j * size + i, e + base, i + 1, j + 1, ke[j * size + i],
-               ke[i * size + j]);
-    for (size_t j = 0; j < size; ++j)
-      for (size_t i = 0; i <= j; ++i) {
-        const int r = local[i], c = local[j];
-        if (r < 0 || c < 0) continue;
-        // the mean of the two halves: exact for a symmetric matrix, and the lower triangle
-        // of an equation pair listed twice in one element lands in the upper too
-        const double v = i == j ? ke[j * size + i] : 0.5 * (ke[j * size + i] + ke[i * size + j]);
-        row.push_back(std::min(r, c)), col.push_back(std::max(r, c));
-        value.push_back(r == c && i != j ? 2 * v : v);
-      }
-    offset += size * size;
+    const size_t size = size_t(eltptr[e + 1] - eltptr[e]);
+    upper += size * (size + 1) / 2;
   }
-  host.entry_row.insert(host.entry_row.end(), row.begin(), row.end());
-  host.entry_col.insert(host.entry_col.end(), col.begin(), col.end());
-  host.entry_value.insert(host.entry_value.end(), value.begin(), value.end());
-  host.entry_half.resize(host.entry_row.size(), 0);
+  host.entry_row.reserve(old + upper), host.entry_col.reserve(old + upper);
+  host.entry_value.reserve(old + upper), host.entry_half.reserve(old + upper);
+  std::vector<int> local;
+  size_t offset = 0;  // into a_elt
+  try {
+    for (int e = 0; e < n_elements; ++e) {
+      const size_t first = size_t(eltptr[e] - base), size = size_t(eltptr[e + 1] - eltptr[e]);
+      local.resize(size);
+      for (size_t a = 0; a < size; ++a) local[a] = host_equation(host, eltvar[first + a], "eltvar", first + a, base);
+      const double *ke = a_elt + offset;
+      double largest = 0;
+      for (size_t k = 0; k < size * size; ++k) {
+        if (!std::isfinite(ke[k])) fail(MC_ERROR_ARGUMENT, "a_elt[%zu] (element %d) is not finite", offset + k, e + base);
+        largest = std::max(largest, std::fabs(ke[k]));
+      }
+      for (size_t j = 0; j < size; ++j)
+        for (size_t i = 0; i <= j; ++i) {
+          const double upper_value = ke[j * size + i], lower_value = ke[i * size + j];
+          if (std::fabs(upper_value - lower_value) > 1e-12 * largest)
+            fail(MC_ERROR_ARGUMENT, "a_elt[%zu] (element %d, row %zu, column %zu) = %.17g but its mirror is %.17g: an "
+                 "element matrix must be symmetric", offset + j * size + i, e + base, i + 1, j + 1, upper_value,
+                 lower_value);
+          const int r = local[i], c = local[j];
+          if (r < 0 || c < 0) continue;  // a restrained freedom's row or column
+          // the mean of the two halves; an equation listed twice in one element gets both
+          // off-diagonal halves on its diagonal
+          const double v = i == j ? upper_value : (r == c ? upper_value + lower_value : 0.5 * (upper_value + lower_value));
+          host.entry_row.push_back(std::min(r, c)), host.entry_col.push_back(std::max(r, c));
+          host.entry_value.push_back(v), host.entry_half.push_back(0);
+        }
+      offset += size * size;
+    }
+  } catch (...) {
+    host.entry_row.resize(old), host.entry_col.resize(old), host.entry_value.resize(old), host.entry_half.resize(old);
+    throw;
+  }
 }
 
 SymmetricCsc assemble_host_stiffness(const HostBody &host, int body, int base) {
