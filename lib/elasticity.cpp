@@ -131,8 +131,9 @@ void replace_dilatation(double *b, int m, int n_strain, const double *mean) {
 // The B matrices of a cell's quadrature points; with bbar, Hughes' B-bar, and `mean` (if not
 // null) receives the cell's mean dilatation row.
 int cell_b_matrices(const Point *p, int npc, const LineMeasure &measure, int n_strain, bool bbar, BMatrix *b,
-                    double *weight, double *mean_out = nullptr) {
-  CellPoint q[kMaxCellPoints];
+                    double *weight, double *mean_out = nullptr, CellPoint *points_out = nullptr) {
+  CellPoint own[kMaxCellPoints];
+  CellPoint *q = points_out ? points_out : own;
   const int n = cell_points(p, npc, measure, q);
   const int m = 2 * npc;
   for (int g = 0; g < n; ++g) weight[g] = q[g].weight, strain_displacement(npc, n_strain, q[g], 0.0, b[g]);
@@ -243,11 +244,8 @@ void cell_nodal_stresses(const Point *p, int npc, const PlaneLaw &law, const Lin
   }
 }
 
-namespace {
-
-// D^-1 of the law's n_strain x n_strain block (row-major, stride 4), by Gauss-Jordan with partial
-// pivoting; D is symmetric positive definite.
-void compliance(const PlaneLaw &law, double c[16]) {
+// D^-1 by Gauss-Jordan with partial pivoting; D is symmetric positive definite.
+void law_compliance(const PlaneLaw &law, double c[16]) {
   const int n = law.n_strain;
   double a[4][8];
   for (int r = 0; r < n; ++r)
@@ -269,7 +267,6 @@ void compliance(const PlaneLaw &law, double c[16]) {
     for (int k = 0; k < n; ++k) c[4 * r + k] = a[r][n + k];
 }
 
-}  // namespace
 
 int cell_sampled_stresses(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar,
                           const double *ue, Point *x, double *sigma) {
@@ -278,8 +275,7 @@ int cell_sampled_stresses(const Point *p, int npc, const PlaneLaw &law, const Li
     BMatrix b[kMaxCellPoints];
     double weight[kMaxCellPoints];
     CellPoint q[kMaxCellPoints];
-    const int n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight);
-    cell_points(p, npc, measure, q);
+    const int n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight, nullptr, q);
     for (int g = 0; g < n; ++g) x[g] = q[g].x, stress_at(b[g], m, law, ue, &sigma[4 * g]);
     return n;
   }
@@ -304,14 +300,12 @@ int cell_sampled_stresses(const Point *p, int npc, const PlaneLaw &law, const Li
   return n;
 }
 
-double cell_recovery_error(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar,
-                           const double *ue, const double *nodal_sigma) {
+double cell_recovery_error(const Point *p, int npc, const PlaneLaw &law, const double c[16], const LineMeasure &measure,
+                           bool bbar, const double *ue, const double *nodal_sigma) {
   BMatrix b[kMaxCellPoints];
-  double weight[kMaxCellPoints], c[16];
+  double weight[kMaxCellPoints];
   CellPoint q[kMaxCellPoints];
-  const int n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight), m = 2 * npc;
-  cell_points(p, npc, measure, q);
-  compliance(law, c);
+  const int n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight, nullptr, q), m = 2 * npc;
   // The components the energy sees: plane (xx, yy, xy), axisymmetric (rr, zz, rz, theta theta),
   // in nodal_sigma's slots 0..3 as in the law's strain order.
   const int k = law.n_strain;

@@ -50,8 +50,11 @@ int cell_sampled_stresses(const Point *p, int npc, const PlaneLaw &law, const Li
 // sigma* = sum_a N_a sigma_a interpolates the recovered stresses at its nodes (4 per node, as
 // cell_nodal_stresses; the plane models' fourth, sigma_zz, is not an independent component and
 // is left out). The energy of the stress error, in the units of the strain energy.
-double cell_recovery_error(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar,
-                           const double *ue, const double *nodal_sigma);
+// compliance: D^-1 of the law (law_compliance), computed once per law by the caller.
+double cell_recovery_error(const Point *p, int npc, const PlaneLaw &law, const double compliance[16],
+                           const LineMeasure &measure, bool bbar, const double *ue, const double *nodal_sigma);
+// D^-1 of the law's n_strain x n_strain block (row-major, stride 4).
+void law_compliance(const PlaneLaw &law, double c[16]);
 
 // Consistent nodal forces of a uniform body force b (per unit volume): integral of N_a b w.
 void cell_body_force(const Point *p, int npc, double bx, double by, const LineMeasure &measure, double *fe);

@@ -18,6 +18,7 @@
 #include "cell_shapes.hpp"
 #include "model.hpp"
 #include "plane_vectors.hpp"
+#include "stopwatch.hpp"
 #include "stress_recovery.hpp"
 #include <cmath>
 
@@ -74,13 +75,17 @@ void Model::estimate_error() {
   if (!options.error_estimate) return;
   double eta2 = 0;
   std::vector<double> cell_eta2[2], recovered[2];
-  for (int b = 0; b < 2; ++b) {
+  // Each body on its own thread when the solve runs two (the recovery's phase does the same).
+  for_each_body([&](int b, BodyWork &work) {
     const Body &body_ = body[b];
-    if (!body_.has_mesh || body_.host || !system_[b]) continue;
+    if (!body_.has_mesh || body_.host || !system_[b]) return;
+    Stopwatch watch(work.infos.t_estimate);
     const Mesh &mesh = body_.mesh;
     const int npc = mesh.nodes_per_cell();
     const bool bbar = options.q1_integration == MC_Q1_BBAR && npc == 4;
     const std::vector<PlaneLaw> &laws = system_[b]->laws;
+    std::vector<double> compliance(16 * laws.size());
+    for (size_t l = 0; l < laws.size(); ++l) law_compliance(laws[l], &compliance[16 * l]);
     cell_eta2[b].assign(size_t(mesh.n_cells()), 0.0);
     recovered[b] = patch_recovered_stresses(mesh, laws, measure(), bbar, body_.u);
     Point p[kMaxCellNodes];
@@ -92,10 +97,10 @@ void Model::estimate_error() {
         ue[2 * a] = body_.u[2 * size_t(v[a])], ue[2 * a + 1] = body_.u[2 * size_t(v[a]) + 1];
         for (int k = 0; k < 4; ++k) nodal[4 * a + k] = recovered[b][4 * size_t(v[a]) + k];
       }
-      const PlaneLaw &law = laws.size() == 1 ? laws[0] : laws[c];
-      cell_eta2[b][c] = cell_recovery_error(p, npc, law, measure(), bbar, ue, nodal);
+      const size_t l = laws.size() == 1 ? 0 : size_t(c);
+      cell_eta2[b][c] = cell_recovery_error(p, npc, laws[l], &compliance[16 * l], measure(), bbar, ue, nodal);
     }
-  }
+  });
   if (contact_ && !body[0].host && !cell_eta2[0].empty()) {
     const ContactGeometry &g = contact_->geometry;
     std::vector<char> owns_row(g.nodes.size(), 0);  // the positions whose gap is their row's
