@@ -152,8 +152,11 @@ RigidModes kernel_rigid_modes(const std::vector<Point> &point, const std::vector
     xmin = std::min(xmin, p.x), xmax = std::max(xmax, p.x), ymin = std::min(ymin, p.y), ymax = std::max(ymax, p.y);
   }
   const double length = std::max({xmax - xmin, ymax - ymin, 1e-300});
+  // The candidates (translations, rotation; axisymmetric: the axial translation) on the
+  // unknowns there are, orthonormalized; one with no unknown to move (every x freedom
+  // restrained: no translation in x) or dependent on the others drops out.
   const int candidates = axisymmetric ? 1 : 3;
-  std::vector<double> r(size_t(ndof) * 3, 0.0), kr(size_t(ndof) * 3, 0.0);
+  std::vector<double> r(size_t(ndof) * 3, 0.0);
   for (int i = 0; i < ndof; ++i) {
     double rx[3], ry[3];
     rigid_rows(point[i], centre, length, rx, ry);
@@ -162,40 +165,78 @@ RigidModes kernel_rigid_modes(const std::vector<Point> &point, const std::vector
     else
       for (int c = 0; c < 3; ++c) r[size_t(c) * ndof + i] = row[c];
   }
-  for (int c = 0; c < candidates; ++c) k.multiply(&r[size_t(c) * ndof], &kr[size_t(c) * ndof]);
-  double g[9] = {0}, m[9] = {0}, kmax = 0;
-  for (double v : k.values) kmax = std::max(kmax, std::fabs(v));
-  for (int a = 0; a < candidates; ++a)
-    for (int b = 0; b < candidates; ++b) {
-      double sg = 0, sm = 0;
-      for (int i = 0; i < ndof; ++i)
-        sg += kr[size_t(a) * ndof + i] * kr[size_t(b) * ndof + i], sm += r[size_t(a) * ndof + i] * r[size_t(b) * ndof + i];
-      g[3 * a + b] = sg, m[3 * a + b] = sm;
+  std::vector<double> q;  // orthonormal columns
+  std::vector<int> kept;  // which candidate each column came from (for the description)
+  for (int c = 0; c < candidates; ++c) {
+    std::vector<double> v(r.begin() + size_t(c) * ndof, r.begin() + size_t(c + 1) * ndof);
+    double before = 0;
+    for (double x : v) before += x * x;
+    for (size_t b = 0; b < kept.size(); ++b) {
+      double dot = 0;
+      for (int i = 0; i < ndof; ++i) dot += v[i] * q[b * ndof + i];
+      for (int i = 0; i < ndof; ++i) v[i] -= dot * q[b * ndof + i];
     }
-  int itype = 1, n = candidates, lwork = 32, info = 0;
+    double after = 0;
+    for (double x : v) after += x * x;
+    if (!(after > 1e-20 * std::max(before, 1e-300)) || before == 0) continue;
+    for (double &x : v) x /= std::sqrt(after);
+    q.insert(q.end(), v.begin(), v.end());
+    kept.push_back(c);
+  }
+  const int n = int(kept.size());
+  if (n == 0) return result;
+  std::vector<double> kq(size_t(ndof) * n);
+  for (int c = 0; c < n; ++c) k.multiply(&q[size_t(c) * ndof], &kq[size_t(c) * ndof]);
+  double g[9] = {0}, kmax = 0;
+  for (double v : k.values) kmax = std::max(kmax, std::fabs(v));
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) {
+      double sum = 0;
+      for (int i = 0; i < ndof; ++i) sum += kq[size_t(a) * ndof + i] * kq[size_t(b) * ndof + i];
+      g[n * a + b] = sum;
+    }
+  int nn = n, lwork = 32, info = 0;
   double mu[3], work[32];
-  dsygv_(&itype, "V", "U", &n, g, &n, m, &n, mu, work, &lwork, &info);
-  if (info != 0) fail(MC_ERROR_INTERNAL, "dsygv failed (%d) in the rigid-mode analysis of a host body", info);
-  // mu = |K R v|^2 for R v of unit norm. A free mode's is round-off: dsygv's eigenvalues are
+  dsyev_("V", "U", &nn, g, &nn, mu, work, &lwork, &info);
+  if (info != 0) fail(MC_ERROR_INTERNAL, "dsyev failed (%d) in the rigid-mode analysis of a host body", info);
+  // mu = |K q v|^2 for q v of unit norm. A free mode's is round-off: the eigenvalues are
   // accurate to eps times the largest (measured: 3.8e-16 for a free translation of a Q9 body
   // whose held modes had 0.39 and 1.39), while a body held by one restrained freedom resists
   // with about (kmax / sqrt(unknowns))^2 (1e-6 kmax^2 at 10^6 unknowns). Free: below 1e-10 of
   // the largest, or below (1e-9 kmax)^2 when all are free.
-  const double threshold = 1e-18 * kmax * kmax + 1e-10 * mu[candidates - 1];
-  while (result.count < candidates && mu[result.count] <= threshold) ++result.count;
+  const double threshold = 1e-18 * kmax * kmax + 1e-10 * mu[n - 1];
+  while (result.count < n && mu[result.count] <= threshold) ++result.count;
   if (result.count == 0) return result;
   const int count = result.count;
-  if (axisymmetric) result.description = "translation along the axis (y)";
-  else {
-    double basis[9] = {0};
-    for (int c = 0; c < count; ++c)
-      for (int a = 0; a < 3; ++a) basis[3 * c + a] = g[3 * c + a];
-    result.description = describe(basis, count);
-  }
   result.modes.assign(size_t(ndof) * count, 0.0);
   for (int c = 0; c < count; ++c)
-    for (int a = 0; a < candidates; ++a)
-      for (int i = 0; i < ndof; ++i) result.modes[size_t(c) * ndof + i] += g[3 * c + a] * r[size_t(a) * ndof + i];
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < ndof; ++i) result.modes[size_t(c) * ndof + i] += g[n * c + a] * q[size_t(a) * ndof + i];
+  if (axisymmetric) {
+    result.description = "translation along the axis (y)";
+  } else {
+    // Each mode in the candidates' terms (tx, ty, rotation), for the message: least squares on
+    // the candidates that were kept.
+    double basis[9] = {0};
+    for (int c = 0; c < count; ++c) {
+      double a[9] = {0}, rhs[3] = {0};
+      for (int x = 0; x < n; ++x) {
+        const double *rx = &r[size_t(kept[x]) * ndof];
+        for (int i = 0; i < ndof; ++i) rhs[x] += rx[i] * result.modes[size_t(c) * ndof + i];
+        for (int y = 0; y < n; ++y) {
+          const double *ry = &r[size_t(kept[y]) * ndof];
+          double sum = 0;
+          for (int i = 0; i < ndof; ++i) sum += rx[i] * ry[i];
+          a[n * x + y] = sum;
+        }
+      }
+      int ipiv[3], one = 1, lw = 32;
+      double w2[32];
+      dsysv_("U", &nn, &one, a, &nn, ipiv, rhs, &nn, w2, &lw, &info);
+      for (int x = 0; x < n; ++x) basis[3 * c + kept[x]] = info == 0 ? rhs[x] : 0;
+    }
+    result.description = describe(basis, count);
+  }
   orthonormalize_and_pin(result, ndof, {});
   return result;
 }

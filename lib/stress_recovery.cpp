@@ -1,6 +1,5 @@
 #include "stress_recovery.hpp"
 #include "cell_shapes.hpp"
-#include "lapack.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -40,40 +39,56 @@ struct PatchFit {
   }
 };
 
-// Least squares over the sampling points (x, sigma): the normal equations, solved by a symmetric
-// indefinite factorization (dsysv) and checked for rank: a patch whose points lie on a line (a
-// corner of one cell) has no unique linear fit, and keeps its mean.
+// Least squares over the sampling points (x, sigma): the normal equations, solved by Cholesky
+// in place (3 or 6 unknowns, once per node: no library call). A pivot below 1e-10 of the largest
+// diagonal entry means the points do not determine the polynomial (a patch whose points lie on
+// a line, a corner with one cell): the node keeps the patch's mean.
 PatchFit fit_patch(Point centre, bool quadratic, const std::vector<Point> &x, const std::vector<double> &sigma) {
   PatchFit fit;
   fit.centre = centre;
   const size_t n = x.size();
   double size = 0;
-  for (const Point &p : x) size = std::max(size, std::hypot(p.x - centre.x, p.y - centre.y));
+  for (const Point &p : x) size = std::max(size, std::fabs(p.x - centre.x) + std::fabs(p.y - centre.y));
   fit.size = size > 0 ? size : 1;
   for (size_t i = 0; i < n; ++i)
     for (int k = 0; k < 4; ++k) fit.mean[k] += sigma[4 * i + k] / double(n);
   const int terms = quadratic ? 6 : 3;
   if (n < size_t(terms) + (quadratic ? 3 : 1)) return fit;
-  double a[36] = {0}, b[24] = {0}, m[6];
+  double a[6][6] = {}, b[4][6] = {}, m[6];
+  const double inverse_size = 1 / fit.size;
   for (size_t i = 0; i < n; ++i) {
-    monomials(quadratic, (x[i].x - centre.x) / fit.size, (x[i].y - centre.y) / fit.size, m);
+    monomials(quadratic, (x[i].x - centre.x) * inverse_size, (x[i].y - centre.y) * inverse_size, m);
     for (int r = 0; r < terms; ++r) {
-      for (int c = 0; c < terms; ++c) a[r * terms + c] += m[r] * m[c];
-      for (int k = 0; k < 4; ++k) b[k * terms + r] += m[r] * sigma[4 * i + k];
+      for (int c = 0; c <= r; ++c) a[r][c] += m[r] * m[c];
+      for (int k = 0; k < 4; ++k) b[k][r] += m[r] * sigma[4 * i + k];
     }
   }
-  // Rank check: the smallest eigenvalue of the (scaled) normal matrix against its largest.
-  double eig_a[36], eig[6], work[64];
-  std::copy(a, a + terms * terms, eig_a);
-  int nt = terms, lwork = 64, info = 0;
-  dsyev_("N", "U", &nt, eig_a, &nt, eig, work, &lwork, &info);
-  if (info != 0 || !(eig[0] > 1e-10 * eig[terms - 1])) return fit;
-  int ipiv[6], four = 4;
-  dsysv_("U", &nt, &four, a, &nt, ipiv, b, &nt, work, &lwork, &info);
-  if (info != 0) return fit;
+  double largest = 0;
+  for (int r = 0; r < terms; ++r) largest = std::max(largest, a[r][r]);
+  for (int c = 0; c < terms; ++c) {  // a = L L^T, L in the lower triangle
+    double d = a[c][c];
+    for (int k = 0; k < c; ++k) d -= a[c][k] * a[c][k];
+    if (!(d > 1e-10 * largest)) return fit;
+    a[c][c] = std::sqrt(d);
+    for (int r = c + 1; r < terms; ++r) {
+      double v = a[r][c];
+      for (int k = 0; k < c; ++k) v -= a[r][k] * a[c][k];
+      a[r][c] = v / a[c][c];
+    }
+  }
+  for (int k = 0; k < 4; ++k) {
+    double *y = b[k];
+    for (int r = 0; r < terms; ++r) {
+      for (int c = 0; c < r; ++c) y[r] -= a[r][c] * y[c];
+      y[r] /= a[r][r];
+    }
+    for (int r = terms - 1; r >= 0; --r) {
+      for (int c = r + 1; c < terms; ++c) y[r] -= a[c][r] * y[c];
+      y[r] /= a[r][r];
+    }
+    for (int t = 0; t < terms; ++t) fit.coefficient[k][t] = y[t];
+  }
   fit.terms = terms;
-  for (int k = 0; k < 4; ++k)
-    for (int t = 0; t < terms; ++t) fit.coefficient[k][t] = b[k * terms + t];
   return fit;
 }
 
