@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake pkg-config libsuitesparse-dev libopenblas-dev liblapacke-dev check
           gfortran python3 python3-numpy python3-venv python3-setuptools python3-wheel abigail-tools
-          nlohmann-json3-dev gmsh python3-matplotlib python3-meshio
+          nlohmann-json3-dev gmsh python3-matplotlib python3-meshio python3-scipy
           clang libclang-rt-14-dev valgrind)
 missing=()
 for p in "${packages[@]}"; do

@@ -1,11 +1,13 @@
 // Tests of include/mortarcontact.hpp: ownership (move-only, destroyed once: run under ASan and
 // valgrind as a memcheck test), errors as exceptions with the status and the message, the
 // vector and pointer overloads, the getters' sizes, options (the interface solver forced either
-// way, and which one ran), the log callback, and a contact solve (the README's scene: uniform
-// pressure 0.1 transmitted exactly).
+// way, and which one ran), the log callback, a contact solve (the README's scene: uniform
+// pressure 0.1 transmitted exactly), and the same scene with body 1 a host body (its stiffness
+// assembled here, given as coordinate entries in both storages and as element matrices).
 // Whether every C function and constant has its wrapper: check_cxx_wrapper.py (cxx_wrapper_coverage).
 #include <mortarcontact.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -288,6 +290,20 @@ void test_quadratic_cells() {
     for (std::size_t k = 0; k < nodal.size(); ++k) EXPECT(std::fabs(nodal[k] - cell[k % 4]) < 1e-12);
     EXPECT(near(cell[0], c.nodes_per_cell == 6 ? -0.1 : 0.0) && near(cell[1], -0.1) && near(cell[2], 0.0));
   }
+  // set_contact_curved names the middle too: a mesh body's edge must have that middle
+  for (const Case &c : cases) {
+    mc::Model m;
+    m.set_mesh(1, c.xy, c.cells, c.nodes_per_cell);
+    m.set_contact_curved(1, {c.bottom[0], c.bottom[2], c.bottom[1]});  // end, end, middle
+    EXPECT(m.errmsg().empty());
+    bool refused = false;
+    try {
+      m.set_contact_curved(1, {c.bottom[0], c.bottom[2], c.left[1]});  // another edge's middle
+    } catch (const mc::Error &) {
+      refused = true;
+    }
+    EXPECT(refused);
+  }
   mc::Model m;
   EXPECT_ERROR(mc::Status::error_argument, m.set_mesh(1, xy8, {0, 1, 2, 3, 4, 5, 6}, 8));  // 7 ids
   EXPECT_ERROR(mc::Status::error_argument, m.set_mesh(1, xy8, {0, 1, 2, 3, 4, 5, 6, 7}, 0));
@@ -308,6 +324,142 @@ void test_write_vtu() {
   EXPECT_ERROR(mc::Status::error_argument, m.write_vtu("/nonexistent-dir/x.vtu"));
 }
 
+
+// ---- host bodies -------------------------------------------------------------------------
+
+// The plane-strain stiffness (6x6, row-major, freedoms x0 y0 x1 y1 x2 y2) of a P1 triangle.
+std::vector<double> p1_stiffness(const double *xy, const mc_int *tri, double young, double poisson) {
+  const double x[3] = {xy[2 * tri[0]], xy[2 * tri[1]], xy[2 * tri[2]]};
+  const double y[3] = {xy[2 * tri[0] + 1], xy[2 * tri[1] + 1], xy[2 * tri[2] + 1]};
+  const double area = 0.5 * ((x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]));
+  double bm[3][6] = {};
+  for (int i = 0; i < 3; ++i) {
+    const double b = (y[(i + 1) % 3] - y[(i + 2) % 3]) / (2 * area), c = (x[(i + 2) % 3] - x[(i + 1) % 3]) / (2 * area);
+    bm[0][2 * i] = b, bm[1][2 * i + 1] = c, bm[2][2 * i] = c, bm[2][2 * i + 1] = b;
+  }
+  const double f = young / ((1 + poisson) * (1 - 2 * poisson));
+  const double d[3][3] = {{f * (1 - poisson), f * poisson, 0}, {f * poisson, f * (1 - poisson), 0},
+                          {0, 0, f * (1 - 2 * poisson) / 2}};
+  std::vector<double> k(36, 0.0);
+  for (int r = 0; r < 6; ++r)
+    for (int c = 0; c < 6; ++c)
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) k[static_cast<std::size_t>(6 * r + c)] += area * bm[a][r] * d[a][b] * bm[b][c];
+  return k;
+}
+
+// Body 1 of the README's scene in a host's own numbering: x of nodes 0 and 3 restrained (the
+// rollers: no equation), the six others shuffled.
+const std::vector<mc_int> kEquations{-1, 5, 0, 3, 4, 1, -1, 2};
+constexpr mc_int kNEquations = 6;
+constexpr std::size_t kNEq = kNEquations;
+
+enum class HostInput { full, triangle, elements };
+
+// The README's scene with body 1 given as a host body (0-based, or 1-based with base 1).
+void set_host_scene(mc::Model &m, HostInput input, int base) {
+  std::vector<mc_int> equations(kEquations);
+  for (mc_int &e : equations) e = e < 0 ? base - 1 : e + base;
+  m.set_host_body(1, kXy1, equations, kNEquations);
+  std::vector<mc_int> rows, cols, eltptr{base}, eltvar;
+  std::vector<double> values, a_elt;
+  for (std::size_t cell = 0; cell < 2; ++cell) {
+    const std::vector<double> k = p1_stiffness(kXy1.data(), &kTri[3 * cell], 1.0, 0.3);
+    std::vector<mc_int> eq(6);
+    for (std::size_t i = 0; i < 6; ++i) eq[i] = equations[2 * static_cast<std::size_t>(kTri[3 * cell + i / 2]) + i % 2];
+    eltvar.insert(eltvar.end(), eq.begin(), eq.end());
+    eltptr.push_back(eltptr.back() + 6);
+    for (std::size_t c = 0; c < 6; ++c)
+      for (std::size_t r = 0; r < 6; ++r) {
+        a_elt.push_back(k[6 * r + c]);  // column by column
+        // full: every entry, restrained ones too (skipped); triangle: the lower one, free only
+        if (input == HostInput::triangle && (eq[r] < base || eq[c] < base || eq[r] < eq[c])) continue;
+        rows.push_back(eq[r]), cols.push_back(eq[c]), values.push_back(k[6 * r + c]);
+      }
+  }
+  if (input == HostInput::elements) m.add_element_matrices(1, eltptr, eltvar, a_elt);
+  else m.add_stiffness(1, rows, cols, values, input == HostInput::full ? mc::MatrixStorage::full : mc::MatrixStorage::triangle);
+  std::vector<double> f(kNEq, 0.0);  // the pressure 0.1 on the top edge: 0.05 down at nodes 2, 3
+  f[static_cast<std::size_t>(kEquations[5])] = f[static_cast<std::size_t>(kEquations[7])] = -0.05;
+  m.set_load_vector(1, f);
+  const std::vector<mc_int> xy_fixed{0 + base, 3 + base}, bottom{0 + base, 1 + base};
+  m.set_mesh(2, kXy2, [&] { std::vector<mc_int> t(kTri); for (mc_int &id : t) id += base; return t; }(), 3);
+  m.set_material(2, 1.0, 0.3);
+  m.fix(2, xy_fixed, mc::Components::x);
+  m.fix(2, bottom, mc::Components::y);
+  m.set_contact(1, bottom);  // the host's edge: the body on its left
+  m.set_contact(2, {2 + base, 3 + base});
+}
+
+void test_host_body_matches_mesh_body() {
+  mc::Model mesh;
+  set_readme_scene(mesh);
+  mesh.solve();
+  const std::vector<double> u_mesh = mesh.get_displacement(1), p_mesh = mesh.get_contact_pressure();
+  for (HostInput input : {HostInput::full, HostInput::triangle, HostInput::elements})
+    for (int base : {0, 1}) {
+      mc::Model m(base);
+      set_host_scene(m, input, base);
+      m.solve();
+      const std::vector<double> u = m.get_displacement(1), p = m.get_contact_pressure();
+      EXPECT(u.size() == 8 && p.size() == 2);
+      for (std::size_t k = 0; k < u.size(); ++k) EXPECT(std::fabs(u[k] - u_mesh[k]) < 1e-10);
+      for (std::size_t k = 0; k < p.size(); ++k) EXPECT(std::fabs(p[k] - p_mesh[k]) < 1e-10);
+      const std::vector<double> ue = m.get_equation_solution(1), r = m.get_contact_load(1);
+      EXPECT(ue.size() == kNEq && r.size() == kNEq);
+      for (std::size_t k = 0; k < 8; ++k)
+        if (kEquations[k] >= 0) EXPECT(near(ue[static_cast<std::size_t>(kEquations[k])], u[k]));
+      double lift = 0;  // the contact pushes body 1 up by the load, 0.1
+      for (std::size_t k = 1; k < 8; k += 2) lift += r[static_cast<std::size_t>(kEquations[k])];
+      EXPECT(near(lift, 0.1));
+      // a mesh body's equation vectors: 2 per node
+      const std::vector<double> u2 = m.get_equation_solution(2), r2 = m.get_contact_load(2);
+      EXPECT(u2.size() == 8 && r2.size() == 8 && near(r2[5] + r2[7], -0.1));
+      EXPECT(u2 == m.get_displacement(2));
+      double u_ptr[kNEquations];
+      m.get_equation_solution(1, u_ptr);
+      EXPECT(std::equal(ue.begin(), ue.end(), u_ptr));
+      // what needs cells is refused by the library, with its message
+      EXPECT_ERROR(mc::Status::error_state, m.get_stress(1));
+      EXPECT_ERROR(mc::Status::error_state, m.get_reaction(1));
+    }
+}
+
+void test_host_body_errors() {
+  mc::Model m;
+  EXPECT_ERROR(mc::Status::error_state, m.get_equation_solution(1));  // nothing set: size unknown
+  // sizes the wrapper checks before the C call
+  EXPECT_ERROR(mc::Status::error_argument, m.set_host_body(1, kXy1, {0, 1, 2}, 3));
+  EXPECT_ERROR(mc::Status::error_argument, m.set_host_body(1, {0, 0, 1}, {0, 1, 2}, 3));
+  m.set_host_body(1, kXy1, kEquations, kNEquations);
+  EXPECT_ERROR(mc::Status::error_argument, m.add_stiffness(1, {0, 1}, {0}, {1.0, 1.0}));
+  EXPECT_ERROR(mc::Status::error_argument, m.add_stiffness(1, {0, 1}, {0, 1}, {1.0}));
+  EXPECT_ERROR(mc::Status::error_argument, m.add_element_matrices(1, {}, {}, {}));
+  EXPECT_ERROR(mc::Status::error_argument, m.add_element_matrices(1, {1, 3}, {0, 1}, {1, 0, 0, 1}));  // not from base 0
+  EXPECT_ERROR(mc::Status::error_argument, m.add_element_matrices(1, {0, 2}, {0, 1, 2}, {1, 0, 0, 1}));
+  EXPECT_ERROR(mc::Status::error_argument, m.add_element_matrices(1, {0, 2}, {0, 1}, {1, 0, 0}));
+  EXPECT_ERROR(mc::Status::error_argument, m.add_element_matrices(1, {0, 2, 1}, {0, 1}, {1, 0, 0, 1}));
+  EXPECT_ERROR(mc::Status::error_argument, m.set_contact_curved(1, {0, 1, 2, 3}));
+  // errors of the library: the model stays usable
+  EXPECT_ERROR(mc::Status::error_argument, m.add_stiffness(1, {0}, {kNEquations}, {1.0}));  // above the system
+  EXPECT_ERROR(mc::Status::error_argument, m.set_host_body(1, kXy1, {0, 1, 2, 3, 4, 5, 0, 1}, 6));  // shared
+  EXPECT_ERROR(mc::Status::error_state, m.set_material(1, 1.0, 0.3));  // a host body has no cells
+  m.add_stiffness(1, {0, 1}, {0, 1}, {1.0, 1.0}, mc::MatrixStorage::triangle);
+  m.add_element_matrices(1, {0, 2}, {2, 3}, {1, 0, 0, 1});
+  m.add_stiffness(1, {}, {}, {});          // nothing to add: fine (not a NULL array for the C API)
+  m.add_element_matrices(1, {0}, {}, {});  // no elements
+  m.set_load_vector(1, std::vector<double>(kNEq, 0.0));
+  EXPECT_ERROR(mc::Status::error_argument, m.set_load_vector(1, {1.0}));  // the library: wrong length
+  EXPECT_ERROR(mc::Status::error_state, m.get_contact_load(1));  // before a solve
+  EXPECT(m.errmsg().size() > 0);
+  static_assert(static_cast<int>(mc::MatrixStorage::triangle) == MC_MATRIX_TRIANGLE);
+  // MC_MATRIX_FULL entries, summed over the calls, must be symmetric: mc_solve checks it
+  mc::Model a;
+  set_host_scene(a, HostInput::full, 0);
+  a.add_stiffness(1, {0, 1}, {1, 0}, {1e-3, 2e-3});
+  EXPECT_ERROR(mc::Status::error_argument, a.solve());
+  EXPECT_ERROR(mc::Status::error_argument, a.add_stiffness(1, {0, 2}, {1, 1}, {1.0, 1.0}, mc::MatrixStorage::triangle));
+}
 }  // namespace
 
 int main() {
@@ -322,6 +474,8 @@ int main() {
   test_log_callback();
   test_quadratic_cells();
   test_write_vtu();
+  test_host_body_matches_mesh_body();
+  test_host_body_errors();
   if (failures) {
     std::fprintf(stderr, "%d check(s) failed\n", failures);
     return 1;

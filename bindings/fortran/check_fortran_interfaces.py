@@ -13,6 +13,8 @@ the same name; the module's MC_ constants must equal the header's. C -> Fortran:
     const char *             character(kind=c_char) (or character(c_char)), not value
     returns: mc_status/int -> integer(c_int) function, const char * -> type(c_ptr) function,
              void -> subroutine
+Also: the module's conveniences without a C function of their own (CONVENIENCES below) exist as
+public module functions.
 usage: check_fortran_interfaces.py HEADER MODULE_F90
 """
 import re
@@ -21,6 +23,8 @@ import sys
 BASE = {"mc_model": "type(c_ptr)", "int": "integer(c_int)", "mc_status": "integer(c_int)",
         "mc_int": "integer(c_int32_t)", "double": "real(c_double)", "int64_t": "integer(c_int64_t)",
         "char": "character(c_char)", "mc_log_fn": "type(c_funptr)"}
+# Module functions beyond the one-to-one wrappers, and the C function each one calls.
+CONVENIENCES = {"mc_add_element_matrices_sg": "mc_add_element_matrices"}  # Smith and Griffiths' g_g, storkm
 RET = {"mc_status": "integer(c_int)", "int": "integer(c_int)", "const char *": "type(c_ptr)", "void": None}
 
 
@@ -102,6 +106,14 @@ def main():
                 errors.append("%s: argument %d (%s) is %s, C type %s wants %s" % (name, i + 1, arg, got, ctype, want))
         if name not in public:
             errors.append("%s: no public Fortran wrapper" % name)
+    for name, c_name in sorted(CONVENIENCES.items()):
+        body = re.search(r"^\s*integer\s+function\s+%s\s*\((.*?)^\s*end\s+function" % name, text, flags=re.M | re.S)
+        if not body:
+            errors.append("%s: no module function (a convenience over %s)" % (name, c_name))
+        elif "c_" + c_name + "(" not in body.group(1).replace(" ", ""):
+            errors.append("%s: does not call %s" % (name, c_name))
+        if name not in public:
+            errors.append("%s: not public" % name)
     for name in sorted(set(ifaces) - set(funcs) - {"strlen"}):
         errors.append("%s: interface to a function the header does not declare" % name)
     fconsts = {k.upper(): int(v) for k, v in re.findall(r"\b(mc_[a-z0-9_]+)\s*=\s*(-?\d+)\s*[,\n]", text)}

@@ -13,7 +13,11 @@
 !>  - functions return the status as a default integer (MC_OK = 0); mc_errmsg(model)
 !>    returns the message of the last failed call as a Fortran string ('' after a success);
 !>  - strings (mc_errmsg, mc_status_string, mc_version_string) are Fortran strings;
-!>  - mc_set_option_int and mc_get_info_int accept default (32-bit) or 64-bit integers.
+!>  - mc_set_option_int and mc_get_info_int accept default (32-bit) or 64-bit integers;
+!>  - host bodies take the host's 1-based arrays: equations(2, n_nodes) is Smith and Griffiths'
+!>    nf after numbering (0 = restrained, below the base 1), equation vectors are f(n_equations)
+!>    (a host's loads(0:neq) passes as loads(1:)), and mc_add_element_matrices_sg takes S&G's
+!>    g_g(ndof, nels) and storkm(ndof, ndof, nels) as they are (no copy with base 1).
 !> The header's MC_VERSION_NUMBER / MC_VERSION_STRING are MC_HEADER_VERSION_NUMBER /
 !> MC_HEADER_VERSION_STRING here (Fortran names are case-insensitive, and mc_version_number
 !> / mc_version_string are the functions).
@@ -54,6 +58,7 @@ module mortarcontact
   integer, parameter, public :: MC_Q1_FULL = 0, MC_Q1_BBAR = 1
   integer, parameter, public :: MC_INTERFACE_AUTO = 0, MC_INTERFACE_CONDENSED = 1, &
        MC_INTERFACE_SPARSE = 2
+  integer, parameter, public :: MC_MATRIX_FULL = 1, MC_MATRIX_TRIANGLE = 2
   integer, parameter, public :: MC_LOG_PHASE = 1, MC_LOG_ITERATION = 2
   integer, parameter, public :: MC_INFO_DOFS = 1, MC_INFO_FACTOR_NNZ = 2, MC_INFO_ITERATIONS = 3, &
        MC_INFO_ACTIVE_NODES = 4, MC_INFO_CONTACT_NODES = 5, MC_INFO_FACTORIZATIONS = 6, &
@@ -68,7 +73,9 @@ module mortarcontact
      private
      type(c_ptr) :: ptr = c_null_ptr
      integer(mc_int) :: n_nodes(2) = -1   ! mesh sizes, known from successful mc_set_mesh calls
-     integer(mc_int) :: n_cells(2) = -1
+     integer(mc_int) :: n_cells(2) = -1   ! (and mc_set_host_body calls: no cells)
+     integer(mc_int) :: n_equations(2) = 0  ! a host body's system size; 0 for a mesh body
+     integer :: base = 1                  ! the index base set through the wrapper
      character(len=:), allocatable :: msg ! message of the last failed call
   end type mc_model
 
@@ -82,6 +89,8 @@ module mortarcontact
   public :: mc_get_contact_force, mc_get_contact_gap, mc_get_contact_initial_gap
   public :: mc_get_contact_normal
   public :: mc_set_gap_offset, mc_set_log_callback, mc_write_vtu, mc_log_fn, mc_log_message
+  public :: mc_set_host_body, mc_add_stiffness, mc_add_element_matrices, mc_add_element_matrices_sg
+  public :: mc_set_load_vector, mc_get_equation_solution, mc_get_contact_load, mc_set_contact_curved
 
   !> The log callback (mc_set_log_callback): a bind(C) subroutine of this interface, e.g.
   !>   subroutine my_log(user_data, level, message) bind(C)
@@ -222,6 +231,61 @@ module mortarcontact
        integer(c_int32_t), value :: n
        integer(c_int32_t), intent(in) :: nodes(*)
        real(c_double), intent(in) :: offset(*)
+     end function
+     integer(c_int) function c_mc_set_host_body(m, body, n_nodes, xy, equations, n_equations) &
+          bind(C, name="mc_set_host_body")
+       import :: c_ptr, c_int, c_int32_t, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: body
+       integer(c_int32_t), value :: n_nodes
+       real(c_double), intent(in) :: xy(*)
+       integer(c_int32_t), intent(in) :: equations(*)
+       integer(c_int32_t), value :: n_equations
+     end function
+     integer(c_int) function c_mc_add_stiffness(m, body, n_entries, rows, cols, values, storage) &
+          bind(C, name="mc_add_stiffness")
+       import :: c_ptr, c_int, c_int32_t, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: body
+       integer(c_int32_t), value :: n_entries
+       integer(c_int32_t), intent(in) :: rows(*), cols(*)
+       real(c_double), intent(in) :: values(*)
+       integer(c_int), value :: storage
+     end function
+     integer(c_int) function c_mc_add_element_matrices(m, body, n_elements, eltptr, eltvar, a_elt) &
+          bind(C, name="mc_add_element_matrices")
+       import :: c_ptr, c_int, c_int32_t, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: body
+       integer(c_int32_t), value :: n_elements
+       integer(c_int32_t), intent(in) :: eltptr(*), eltvar(*)
+       real(c_double), intent(in) :: a_elt(*)
+     end function
+     integer(c_int) function c_mc_set_load_vector(m, body, n_equations, f) bind(C, name="mc_set_load_vector")
+       import :: c_ptr, c_int, c_int32_t, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: body
+       integer(c_int32_t), value :: n_equations
+       real(c_double), intent(in) :: f(*)
+     end function
+     integer(c_int) function c_mc_get_equation_solution(m, body, u) bind(C, name="mc_get_equation_solution")
+       import :: c_ptr, c_int, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: body
+       real(c_double), intent(out) :: u(*)
+     end function
+     integer(c_int) function c_mc_get_contact_load(m, body, r) bind(C, name="mc_get_contact_load")
+       import :: c_ptr, c_int, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: body
+       real(c_double), intent(out) :: r(*)
+     end function
+     integer(c_int) function c_mc_set_contact_curved(m, body, n_edges, edges) bind(C, name="mc_set_contact_curved")
+       import :: c_ptr, c_int, c_int32_t
+       type(c_ptr), value :: m
+       integer(c_int), value :: body
+       integer(c_int32_t), value :: n_edges
+       integer(c_int32_t), intent(in) :: edges(*)
      end function
      integer(c_int) function c_mc_set_option_int(m, option, value) bind(C, name="mc_set_option_int")
        import :: c_ptr, c_int, c_int64_t
@@ -410,7 +474,7 @@ contains
        status = fail(model, MC_ERROR_ARGUMENT, what // ': body must be 1 or 2, got ' // trim(buf))
     else if (model%n_nodes(body) < 0) then
        write (buf, '(i0)') body
-       status = fail(model, MC_ERROR_STATE, what // ': no mesh set for body ' // trim(buf))
+       status = fail(model, MC_ERROR_STATE, what // ': no mesh or host body set for body ' // trim(buf))
     else
        body_ok = .true.
        status = MC_OK
@@ -424,12 +488,14 @@ contains
     type(mc_model), intent(inout) :: model
     model%n_nodes = -1
     model%n_cells = -1
+    model%n_equations = 0
     status = c_mc_create(model%ptr)
     if (status /= MC_OK) then
        model%msg = 'mc_create failed: ' // c_string(c_mc_status_string(int(status, c_int)))
        return
     end if
     status = finish(model, c_mc_set_index_base(model%ptr, 1_c_int))
+    model%base = 1
   end function mc_create
 
   !> Frees the model (a model never created is fine).
@@ -439,6 +505,8 @@ contains
     model%ptr = c_null_ptr
     model%n_nodes = -1
     model%n_cells = -1
+    model%n_equations = 0
+    model%base = 1
   end subroutine mc_destroy
 
   !> The message of the last failed call on this model ('' if it succeeded).
@@ -477,6 +545,7 @@ contains
     type(mc_model), intent(inout) :: model
     integer, intent(in) :: base
     status = finish(model, c_mc_set_index_base(model%ptr, int(base, c_int)))
+    if (status == MC_OK) model%base = base
   end function mc_set_index_base
 
   !> MC_PLANE_STRAIN, MC_PLANE_STRESS or MC_AXISYMMETRIC (x = r >= 0, y the axis; the thickness
@@ -502,6 +571,7 @@ contains
     if (status == MC_OK .and. (body == 1 .or. body == 2)) then
        model%n_nodes(body) = size(xy, 2)
        model%n_cells(body) = size(cells, 2)
+       model%n_equations(body) = 0
     end if
   end function mc_set_mesh
 
@@ -617,6 +687,181 @@ contains
          status)) return
     status = finish(model, c_mc_set_gap_offset(model%ptr, int(size(nodes), mc_int), nodes, offset))
   end function mc_set_gap_offset
+
+  ! ---- host bodies: a legacy program's own matrices -------------------------------------------
+
+  !> Makes a body a host body (no cells): xy(2, n_nodes) the nodes the contact surface and the
+  !> rigid modes need, equations(2, n_nodes) the host's equation number of each node's x and y
+  !> freedom (Smith and Griffiths' nf after numbering: 1..n_equations, 0 = restrained, with the
+  !> index base 1), n_equations the size of the host's system.
+  integer function mc_set_host_body(model, body, xy, equations, n_equations) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body, n_equations
+    real(mc_real), intent(in) :: xy(:, :)
+    integer(mc_int), intent(in) :: equations(:, :)
+    if (.not. shape_ok(model, 'mc_set_host_body: xy', shape(xy), [2, size(xy, 2)], '(2, n_nodes)', status)) return
+    if (.not. shape_ok(model, 'mc_set_host_body: equations', shape(equations), [2, size(xy, 2)], &
+         '(2, n_nodes)', status)) return
+    status = finish(model, c_mc_set_host_body(model%ptr, int(body, c_int), int(size(xy, 2), mc_int), xy, &
+         equations, int(n_equations, mc_int)))
+    if (status == MC_OK .and. (body == 1 .or. body == 2)) then
+       model%n_nodes(body) = size(xy, 2)
+       model%n_cells(body) = 0
+       model%n_equations(body) = n_equations
+    end if
+  end function mc_set_host_body
+
+  !> Adds coordinate entries values(k) at (rows(k), cols(k)) (host equation numbers; 0 with base
+  !> 1: restrained, skipped; duplicates summed) to a host body's stiffness. storage:
+  !> MC_MATRIX_FULL (default: both triangles) or MC_MATRIX_TRIANGLE (one triangle, either).
+  integer function mc_add_stiffness(model, body, rows, cols, values, storage) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    integer(mc_int), intent(in) :: rows(:), cols(:)
+    real(mc_real), intent(in) :: values(:)
+    integer, intent(in), optional :: storage
+    integer :: kind
+    kind = MC_MATRIX_FULL
+    if (present(storage)) kind = storage
+    if (.not. shape_ok(model, 'mc_add_stiffness: cols', shape(cols), [size(rows)], '(size(rows))', status)) return
+    if (.not. shape_ok(model, 'mc_add_stiffness: values', shape(values), [size(rows)], '(size(rows))', &
+         status)) return
+    status = finish(model, c_mc_add_stiffness(model%ptr, int(body, c_int), int(size(rows), mc_int), rows, cols, &
+         values, int(kind, c_int)))
+  end function mc_add_stiffness
+
+  !> Adds element matrices to a host body's stiffness, MUMPS's elemental input: eltptr(n_elements
+  !> + 1) counted from the index base (ELTPTR(1) = 1), element e's equations
+  !> eltvar(eltptr(e) - base + 1 : eltptr(e + 1) - base) (0 with base 1: restrained), its square
+  !> matrix column by column in a_elt after the previous element's. The sizes of eltvar and a_elt
+  !> are checked against eltptr.
+  integer function mc_add_element_matrices(model, body, eltptr, eltvar, a_elt) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    integer(mc_int), intent(in) :: eltptr(:), eltvar(:)
+    real(mc_real), intent(in) :: a_elt(:)
+    integer(mc_int64) :: values, length
+    integer :: e
+    character(len=64) :: buf
+    if (size(eltptr) < 1) then
+       status = fail(model, MC_ERROR_ARGUMENT, 'mc_add_element_matrices: eltptr needs n_elements + 1 entries')
+       return
+    end if
+    if (eltptr(1) /= model%base) then
+       write (buf, '(a, i0, a, i0)') 'eltptr(1) = ', eltptr(1), ', expected the index base ', model%base
+       status = fail(model, MC_ERROR_ARGUMENT, 'mc_add_element_matrices: ' // trim(buf))
+       return
+    end if
+    values = 0
+    do e = 1, size(eltptr) - 1
+       length = int(eltptr(e + 1), mc_int64) - eltptr(e)
+       if (length < 0) then
+          write (buf, '(a, i0, a, i0)') 'eltptr(', e + 1, ') is below eltptr(', e
+          status = fail(model, MC_ERROR_ARGUMENT, 'mc_add_element_matrices: ' // trim(buf) // ')')
+          return
+       end if
+       values = values + length * length
+    end do
+    if (.not. shape_ok(model, 'mc_add_element_matrices: eltvar', shape(eltvar), &
+         [int(eltptr(size(eltptr))) - model%base], '(eltptr(n_elements + 1) - base)', status)) return
+    if (values > huge(1)) then
+       status = fail(model, MC_ERROR_ARGUMENT, 'mc_add_element_matrices: more matrix values than a default integer counts')
+       return
+    end if
+    if (.not. shape_ok(model, 'mc_add_element_matrices: a_elt', shape(a_elt), [int(values)], &
+         '(sum of the elements'' sizes squared)', status)) return
+    status = finish(model, c_mc_add_element_matrices(model%ptr, int(body, c_int), int(size(eltptr) - 1, mc_int), &
+         eltptr, eltvar, a_elt))
+  end function mc_add_element_matrices
+
+  !> Adds element matrices as a Smith and Griffiths program stores them: g_g(ndof, nels) the
+  !> steering vectors (equations 1..neq, 0 = restrained, whatever the index base) and
+  !> storkm(ndof, ndof, nels) the element stiffness matrices. Both are passed as they are (only
+  !> eltptr is built; with an index base of 0, g_g - 1 is passed instead).
+  integer function mc_add_element_matrices_sg(model, body, g_g, storkm) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    integer(mc_int), intent(in) :: g_g(:, :)
+    real(mc_real), intent(in) :: storkm(:, :, :)
+    integer(mc_int), allocatable :: eltptr(:)
+    integer :: e, ndof, nels
+    ndof = size(g_g, 1)
+    nels = size(g_g, 2)
+    if (.not. shape_ok(model, 'mc_add_element_matrices_sg: storkm', shape(storkm), [ndof, ndof, nels], &
+         '(ndof, ndof, nels) of g_g(ndof, nels)', status)) return
+    allocate(eltptr(nels + 1))
+    eltptr = [(int(model%base + ndof * e, mc_int), e = 0, nels)]
+    if (model%base == 1) then
+       status = finish(model, c_mc_add_element_matrices(model%ptr, int(body, c_int), int(nels, mc_int), eltptr, &
+            g_g, storkm))
+    else
+       status = finish(model, c_mc_add_element_matrices(model%ptr, int(body, c_int), int(nels, mc_int), eltptr, &
+            g_g - (1 - model%base), storkm))
+    end if
+  end function mc_add_element_matrices_sg
+
+  !> The load of a host body, f(n_equations) in the host's equation order (replaces the previous
+  !> one; mc_clear_loads zeroes it). A Smith and Griffiths loads(0:neq) passes as loads(1:).
+  integer function mc_set_load_vector(model, body, f) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    real(mc_real), intent(in) :: f(:)
+    if (body == 1 .or. body == 2) then
+       if (model%n_equations(body) > 0) then
+          if (.not. shape_ok(model, 'mc_set_load_vector: f', shape(f), [int(model%n_equations(body))], &
+               '(n_equations)', status)) return
+       end if
+    end if
+    status = finish(model, c_mc_set_load_vector(model%ptr, int(body, c_int), int(size(f), mc_int), f))
+  end function mc_set_load_vector
+
+  !> The length of a body's equation vectors, checked against an array's.
+  logical function equations_ok(model, what, body, got, status)
+    type(mc_model), intent(inout) :: model
+    character(len=*), intent(in) :: what
+    integer, intent(in) :: body, got(:)
+    integer, intent(out) :: status
+    equations_ok = .false.
+    if (.not. body_ok(model, what, body, status)) return
+    if (model%n_equations(body) > 0) then
+       equations_ok = shape_ok(model, what // ': array', got, [int(model%n_equations(body))], '(n_equations)', status)
+    else
+       equations_ok = shape_ok(model, what // ': array', got, [2 * int(model%n_nodes(body))], &
+            '(2 * n_nodes) of a mesh body', status)
+    end if
+  end function equations_ok
+
+  !> After a solve: the displacements u(n_equations) of a host body in its equation order (a
+  !> Smith and Griffiths loads(0:neq) receives them as loads(1:)), or u(2 * n_nodes) of a mesh body.
+  integer function mc_get_equation_solution(model, body, u) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    real(mc_real), intent(out) :: u(:)
+    if (.not. equations_ok(model, 'mc_get_equation_solution', body, shape(u), status)) return
+    status = finish(model, c_mc_get_equation_solution(model%ptr, int(body, c_int), u))
+  end function mc_get_equation_solution
+
+  !> After a solve: the contact forces on a body as a load vector r, sized as in
+  !> mc_get_equation_solution; K u = f + r on the free equations.
+  integer function mc_get_contact_load(model, body, r) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    real(mc_real), intent(out) :: r(:)
+    if (.not. equations_ok(model, 'mc_get_contact_load', body, shape(r), status)) return
+    status = finish(model, c_mc_get_contact_load(model%ptr, int(body, c_int), r))
+  end function mc_get_contact_load
+
+  !> Candidate contact surface of quadratic edges(3, n_edges): end, end, middle. A host body's
+  !> edges run with the body on their left; a mesh body's are boundary edges of cells with that
+  !> middle node.
+  integer function mc_set_contact_curved(model, body, edges) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    integer(mc_int), intent(in) :: edges(:, :)
+    if (.not. shape_ok(model, 'mc_set_contact_curved: edges', shape(edges), [3, size(edges, 2)], &
+         '(3, n_edges)', status)) return
+    status = finish(model, c_mc_set_contact_curved(model%ptr, int(body, c_int), int(size(edges, 2), mc_int), edges))
+  end function mc_set_contact_curved
 
   ! ---- options and solving -----------------------------------------------------------------
 

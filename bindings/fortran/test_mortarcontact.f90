@@ -1,6 +1,8 @@
 ! Tests of the Fortran binding: version, strings, the wrapper's size checks and messages, errors
-! from the library, 1-based ids, a single-body solve, and the README's two-square contact scene
-! with MC_OPTION_INTERFACE_SOLVER forced to each path (MC_INFO_INTERFACE_SOLVER says which ran).
+! from the library, 1-based ids, a single-body solve, the README's two-square contact scene
+! with MC_OPTION_INTERFACE_SOLVER forced to each path (MC_INFO_INTERFACE_SOLVER says which ran),
+! and that scene with body 1 a host body held as a Smith and Griffiths program holds it (nf, g_g,
+! storkm, loads(0:neq)), given through each of the host-body calls, index bases 1 and 0.
 ! The contact patch test is examples/fortran/patch_test.f90 (also run by ctest).
 
 !> The log callback of the test: counts messages by level and keeps the phase messages.
@@ -56,6 +58,12 @@ program test_mortarcontact
   character(len=256) :: line
   integer :: unit, ios
   logical :: found
+  ! host bodies: body 1 of the README's scene as a Smith and Griffiths program holds it
+  integer(mc_int) :: nf(2, 4) = reshape([0, 1, 2, 3, 4, 5, 0, 6], [2, 4])  ! x of nodes 1, 4 restrained
+  integer(mc_int) :: g_g(6, 2), rows(72), cols(72), eltptr(3)
+  real(mc_real) :: storkm(6, 6, 2), loads(0:6), kv(6, 6), values(72), sol(6), rload(6), rmesh(8)
+  real(mc_real) :: u_mesh(2, 4), p_mesh(2), u_host(2, 4), p_host(2), sol8(8)
+  integer :: e, i, j, n_entries, input, base
 
   call check(mc_version_number() == MC_HEADER_VERSION_NUMBER, 'mc_version_number')
   call check(mc_version_string() == MC_HEADER_VERSION_STRING, 'mc_version_string = ' // mc_version_string())
@@ -211,6 +219,125 @@ program test_mortarcontact
   call check(all(abs(sigma8_n - spread(sigma8(:, 1), 2, 8)) < 1d-12), 'nodal stresses = the uniform stress (Q8)')
   call mc_destroy(m)
 
+  ! Host bodies. The mesh scene first: its answer is what the host bodies must give.
+  call expect(mc_create(m), MC_OK, 'mc_create (mesh reference)')
+  call readme_body_2(m, 1)
+  call expect(mc_set_mesh(m, 1, xy, tri), MC_OK, 'mesh 1 (reference)')
+  call expect(mc_set_material(m, 1, 1d0, 0.3d0), MC_OK, 'material 1 (reference)')
+  call expect(mc_fix(m, 1, [1, 4], MC_X), MC_OK, 'rollers 1 (reference)')
+  call expect(mc_add_pressure(m, 1, reshape([3, 4], [2, 1]), [0.1d0]), MC_OK, 'pressure (reference)')
+  call expect(mc_set_contact(m, 1, reshape([1, 2], [2, 1])), MC_OK, 'contact 1 (reference)')
+  call expect(mc_solve(m), MC_OK, 'mc_solve (reference)')
+  call expect(mc_get_displacement(m, 1, u_mesh), MC_OK, 'displacements (reference)')
+  call expect(mc_get_contact_pressure(m, p_mesh), MC_OK, 'pressures (reference)')
+  call expect(mc_get_equation_solution(m, 2, sol8), MC_OK, 'equation solution of a mesh body')
+  call expect(mc_get_displacement(m, 2, u), MC_OK, 'displacements of body 2')
+  call check(all(sol8 == reshape(u, [8])), 'a mesh body''s equation solution: 2 per node')
+  call expect(mc_get_contact_load(m, 2, rmesh), MC_OK, 'contact load of a mesh body')
+  call check(abs(rmesh(6) + rmesh(8) + 0.1d0) < 1d-12, 'body 2''s contact load: 0.1 down')
+  call expect(mc_get_contact_load(m, 2, rmesh(1:6)), MC_ERROR_ARGUMENT, 'contact load of size 6 for 4 nodes')
+  call mc_destroy(m)
+
+  ! The host's arrays: element stiffness, steering vectors, loads (S&G: loads(0) is a dump)
+  do e = 1, 2
+     storkm(:, :, e) = p1_km(xy, tri(:, e), 1d0, 0.3d0)
+     g_g(:, e) = reshape(nf(:, tri(:, e)), [6])
+  end do
+  loads = 0
+  loads(nf(2, 3)) = -0.05d0
+  loads(nf(2, 4)) = -0.05d0
+  kv = 0
+  do e = 1, 2
+     do j = 1, 6
+        do i = 1, 6
+           if (g_g(i, e) > 0 .and. g_g(j, e) > 0) kv(g_g(i, e), g_g(j, e)) = kv(g_g(i, e), g_g(j, e)) + storkm(i, j, e)
+        end do
+     end do
+  end do
+
+  ! 1: mc_add_element_matrices_sg; 2: MUMPS's elemental input; 3: coordinates, both triangles,
+  ! restrained entries given; 4: coordinates, one triangle; 5: mc_add_element_matrices_sg with the
+  ! index base 0 (g_g still as S&G number it)
+  do input = 1, 5
+     base = 1
+     if (input == 5) base = 0
+     write (line, '(a, i0)') 'host body input ', input
+     call expect(mc_create(m), MC_OK, 'mc_create (host)')
+     if (base == 0) call expect(mc_set_index_base(m, 0), MC_OK, 'index base 0')
+     call expect(mc_set_host_body(m, 1, xy, nf(:, 1:3), 6), MC_ERROR_ARGUMENT, 'equations of shape (2, 3)')
+     call check(index(mc_errmsg(m), '(2, n_nodes)') > 0, 'message: ' // mc_errmsg(m))
+     call expect(mc_set_host_body(m, 1, xy, nf - (1 - base), 6), MC_OK, trim(line) // ': mc_set_host_body')
+     select case (input)
+     case (1, 5)
+        call expect(mc_add_element_matrices_sg(m, 1, g_g, storkm(:, :, 1:1)), MC_ERROR_ARGUMENT, 'storkm for 1 of 2')
+        call check(index(mc_errmsg(m), 'storkm') > 0, 'message: ' // mc_errmsg(m))
+        call expect(mc_add_element_matrices_sg(m, 1, g_g, storkm), MC_OK, trim(line) // ': S&G element matrices')
+     case (2)
+        eltptr = [1, 7, 13]
+        call expect(mc_add_element_matrices(m, 1, eltptr, reshape(g_g, [12]), reshape(storkm, [71])), &
+             MC_ERROR_ARGUMENT, 'a_elt of 71 values')
+        call expect(mc_add_element_matrices(m, 1, [0, 6, 12], reshape(g_g, [12]), reshape(storkm, [72])), &
+             MC_ERROR_ARGUMENT, 'eltptr(1) = 0 with base 1')
+        call expect(mc_add_element_matrices(m, 1, eltptr, reshape(g_g, [12]), reshape(storkm, [72])), MC_OK, &
+             trim(line) // ': MUMPS element matrices')
+     case (3, 4)
+        n_entries = 0
+        do e = 1, 2
+           do j = 1, 6
+              do i = 1, 6
+                 if (input == 4 .and. (g_g(i, e) == 0 .or. g_g(j, e) == 0 .or. g_g(i, e) > g_g(j, e))) cycle
+                 n_entries = n_entries + 1
+                 rows(n_entries) = g_g(i, e)
+                 cols(n_entries) = g_g(j, e)
+                 values(n_entries) = storkm(i, j, e)
+              end do
+           end do
+        end do
+        call expect(mc_add_stiffness(m, 1, rows(1:n_entries), cols(1:n_entries - 1), values(1:n_entries)), &
+             MC_ERROR_ARGUMENT, 'cols one short')
+        if (input == 3) then
+           call expect(mc_add_stiffness(m, 1, rows(1:n_entries), cols(1:n_entries), values(1:n_entries)), MC_OK, &
+                trim(line) // ': coordinates, full')
+        else
+           call expect(mc_add_stiffness(m, 1, rows(1:n_entries), cols(1:n_entries), values(1:n_entries), &
+                MC_MATRIX_TRIANGLE), MC_OK, trim(line) // ': coordinates, one triangle')
+        end if
+     end select
+     call expect(mc_set_load_vector(m, 1, loads(0:)), MC_ERROR_ARGUMENT, 'loads(0:6): 7 values for 6 equations')
+     call check(index(mc_errmsg(m), '(n_equations)') > 0, 'message: ' // mc_errmsg(m))
+     call expect(mc_set_load_vector(m, 1, loads(1:)), MC_OK, trim(line) // ': mc_set_load_vector')
+     call readme_body_2(m, base)
+     call expect(mc_set_contact(m, 1, reshape([1, 2] - (1 - base), [2, 1])), MC_OK, trim(line) // ': contact 1')
+     call expect(mc_solve(m), MC_OK, trim(line) // ': mc_solve')
+     call expect(mc_get_displacement(m, 1, u_host), MC_OK, trim(line) // ': displacements')
+     call expect(mc_get_contact_pressure(m, p_host), MC_OK, trim(line) // ': pressures')
+     call check(all(abs(u_host - u_mesh) < 1d-10) .and. all(abs(p_host - p_mesh) < 1d-10), &
+          trim(line) // ': displacements and pressures as with a mesh')
+     call expect(mc_get_equation_solution(m, 1, sol(1:5)), MC_ERROR_ARGUMENT, 'solution of size 5')
+     call expect(mc_get_equation_solution(m, 1, sol), MC_OK, trim(line) // ': mc_get_equation_solution')
+     call check(all(abs(sol - [u_mesh(2, 1), u_mesh(:, 2), u_mesh(:, 3), u_mesh(2, 4)]) < 1d-10), &
+          trim(line) // ': the solution in the host''s numbering')
+     call expect(mc_get_contact_load(m, 1, rload), MC_OK, trim(line) // ': mc_get_contact_load')
+     call check(all(abs(matmul(kv, sol) - loads(1:) - rload) < 1d-10), trim(line) // ': K u = f + r')
+     call check(abs(rload(1) + rload(3) + rload(5) + rload(6) - 0.1d0) < 1d-12, trim(line) // ': contact lifts 0.1')
+     call check(mc_get_stress(m, 1, sigma(:, 1:0)) /= MC_OK, 'stresses of a host body refused')
+     if (input == 3) then  ! full storage must be symmetric, summed over the calls: mc_solve checks
+        call expect(mc_add_stiffness(m, 1, [1, 2], [2, 1], [1d-3, 2d-3]), MC_OK, 'an asymmetric pair added')
+        call expect(mc_solve(m), MC_ERROR_ARGUMENT, 'mc_solve of an asymmetric full matrix')
+        call check(len(mc_errmsg(m)) > 0, 'library message for an asymmetric matrix')
+     end if
+     call mc_destroy(m)
+  end do
+
+  ! A curved contact edge of a mesh body: end, end, middle (Q8: the bottom edge 1-2, middle 5)
+  call expect(mc_create(m), MC_OK, 'mc_create (curved)')
+  call expect(mc_set_mesh(m, 1, xy8, q8), MC_OK, 'mc_set_mesh (curved)')
+  call expect(mc_set_contact_curved(m, 1, reshape([1, 2], [2, 1])), MC_ERROR_ARGUMENT, 'curved edges of shape (2, 1)')
+  call check(index(mc_errmsg(m), '(3, n_edges)') > 0, 'message: ' // mc_errmsg(m))
+  call expect(mc_set_contact_curved(m, 1, reshape([1, 2, 5], [3, 1])), MC_OK, 'mc_set_contact_curved')
+  call check(mc_set_contact_curved(m, 1, reshape([1, 2, 6], [3, 1])) /= MC_OK, 'a middle of another edge refused')
+  call mc_destroy(m)
+
   if (failures > 0) then
      print '(i0, a)', failures, ' check(s) failed'
      error stop 1
@@ -218,6 +345,43 @@ program test_mortarcontact
   print '(a)', 'all Fortran binding checks passed'
 
 contains
+
+  !> Body 2 of the README's scene (the square below body 1) with ids from `base`.
+  subroutine readme_body_2(model, base)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: base
+    integer(mc_int) :: shift
+    shift = int(1 - base, mc_int)
+    call expect(mc_set_mesh(model, 2, xy2, tri - shift), MC_OK, 'mesh 2')
+    call expect(mc_set_material(model, 2, 1d0, 0.3d0), MC_OK, 'material 2')
+    call expect(mc_fix(model, 2, [1, 4] - shift, MC_X), MC_OK, 'rollers 2')
+    call expect(mc_fix(model, 2, [1, 2] - shift, MC_Y), MC_OK, 'base 2')
+    call expect(mc_set_contact(model, 2, reshape([3, 4] - shift, [2, 1])), MC_OK, 'contact 2')
+  end subroutine readme_body_2
+
+  !> The plane-strain stiffness of a P1 triangle, freedoms x1 y1 x2 y2 x3 y3.
+  function p1_km(coord, nodes, young, poisson) result(km)
+    real(mc_real), intent(in) :: coord(:, :), young, poisson
+    integer(mc_int), intent(in) :: nodes(3)
+    real(mc_real) :: km(6, 6), bee(3, 6), dee(3, 3), x(3), y(3), area, f
+    integer :: a, b, c
+    x = coord(1, nodes)
+    y = coord(2, nodes)
+    area = 0.5d0 * ((x(2) - x(1)) * (y(3) - y(1)) - (x(3) - x(1)) * (y(2) - y(1)))
+    bee = 0
+    do a = 1, 3
+       b = mod(a, 3) + 1
+       c = mod(a + 1, 3) + 1
+       bee(1, 2 * a - 1) = (y(b) - y(c)) / (2 * area)
+       bee(2, 2 * a) = (x(c) - x(b)) / (2 * area)
+       bee(3, 2 * a - 1) = bee(2, 2 * a)
+       bee(3, 2 * a) = bee(1, 2 * a - 1)
+    end do
+    f = young / ((1 + poisson) * (1 - 2 * poisson))
+    dee = reshape([f * (1 - poisson), f * poisson, 0d0, f * poisson, f * (1 - poisson), 0d0, &
+         0d0, 0d0, f * (1 - 2 * poisson) / 2], [3, 3])
+    km = area * matmul(matmul(transpose(bee), dee), bee)
+  end function p1_km
 
   subroutine check(ok, what)
     logical, intent(in) :: ok

@@ -3,8 +3,9 @@
  *
  * The input is read as a little program: one opcode byte (taken modulo OP_COUNT), then that
  * operation's operands, until the bytes run out (a read past the end gives 0). Sizes are
- * bounded (grid meshes up to 8 x 6 cells, raw arrays up to 16 entries, 128 operations and 6
- * solves per input), so one input runs in milliseconds.
+ * bounded (grid meshes up to 8 x 6 cells, host bodies on lattices up to 17 x 13 nodes, raw
+ * arrays up to 16 entries, 128 operations and 6 solves per input), so one input runs in
+ * milliseconds.
  *
  * Nothing here asserts on a status: bad input is the point. What is checked after every call:
  *   - the status is one of the mc_status values;
@@ -43,6 +44,13 @@
 #pragma weak mc_set_log_callback
 #pragma weak mc_write_vtu
 #pragma weak mc_get_nodal_stress
+#pragma weak mc_set_host_body
+#pragma weak mc_add_stiffness
+#pragma weak mc_add_element_matrices
+#pragma weak mc_set_load_vector
+#pragma weak mc_get_equation_solution
+#pragma weak mc_get_contact_load
+#pragma weak mc_set_contact_curved
 
 /* Counters for the replay driver (how far the corpus reaches); not used by the library. */
 long fuzz_api_solves_ok = 0, fuzz_api_contact_solves_ok = 0;
@@ -52,7 +60,10 @@ enum {
   MAX_SOLVES = 6,
   MAX_RAW = 16,
   MAX_NX = 8,
-  MAX_NY = 6
+  MAX_NY = 6,
+  MAX_SIDE = MAX_NX > MAX_NY ? MAX_NX : MAX_NY,
+  MAX_LATTICE = (2 * MAX_NX + 1) * (2 * MAX_NY + 1), /* nodes of a host body's lattice */
+  MAX_ELEMENTS = 4                                   /* elements of OP_ELEMENTS_RAW */
 };
 
 typedef struct {
@@ -158,12 +169,20 @@ static mc_status checked(mc_model *m, mc_status st, const char *call) {
 /* ---- what the harness knows about the model ------------------------------------------ */
 
 typedef struct {
-  int meshed;
-  mc_int n_nodes, n_cells;
-  /* side edges of the last grid mesh (0-based), if the mesh came from OP_GRID_MESH */
-  int grid;
+  int meshed; /* a mesh or a host body: n_nodes (and n_cells, 0 for a host body) are known */
+  int host;   /* a host body: n_equations is known */
+  mc_int n_nodes, n_cells, n_equations;
+  /* side edges of the last grid mesh or host lattice (0-based, counter-clockwise: the body on
+     their left), if it came from OP_GRID_MESH or OP_HOST_BODY, with their middles on a
+     quadratic grid or a lattice of order 2 */
+  int grid, has_mid;
   mc_int n_side[4];
-  mc_int side[4][2 * (MAX_NX > MAX_NY ? MAX_NX : MAX_NY)];
+  mc_int side[4][2 * MAX_SIDE];
+  mc_int side_mid[4][MAX_SIDE];
+  /* a host body's lattice (OP_HOST_BODY): node j * nI + i, its equations 0-based (-1: none) */
+  int nI, nJ;
+  double xy[2 * MAX_LATTICE];
+  mc_int eq[2 * MAX_LATTICE];
 } body_state;
 
 typedef struct {
@@ -219,6 +238,15 @@ static void query_all(harness *h) {
     CALL(mc_get_reaction(m, body, r));
     if (su == MC_OK && !(b && b->meshed)) fuzz_fail("displacements of a body without a mesh", "mc_get_displacement");
     free(u), free(sigma), free(sigma_n), free(r);
+    {
+      /* equation vectors: n_equations of a host body, 2 per node of a mesh body */
+      size_t n_eq = b && b->meshed ? (b->host ? (size_t)b->n_equations : 2 * (size_t)b->n_nodes) : 0;
+      double *ue = exact(n_eq, sizeof(double)), *re = exact(n_eq, sizeof(double));
+      if (mc_get_equation_solution && CALL(mc_get_equation_solution(m, body, ue)) == MC_OK && !(b && b->meshed))
+        fuzz_fail("equation solution of a body without a mesh", "mc_get_equation_solution");
+      if (mc_get_contact_load) CALL(mc_get_contact_load(m, body, re));
+      free(ue), free(re);
+    }
   }
   {
     mc_int n = -1;
@@ -285,6 +313,17 @@ static void null_calls(harness *h) {
   if (mc_set_gap_offset) CALL(mc_set_gap_offset(m, 1, &id, v));
   if (mc_set_log_callback) CALL(mc_set_log_callback(m, NULL, NULL));
   if (mc_write_vtu) CALL(mc_write_vtu(m, "/dev/null"));
+  {
+    mc_int eq2[2] = {0, 1}, ptr[2] = {0, 2}, edge3[3] = {0, 1, 2};
+    double k4[4] = {1, 0, 0, 1};
+    if (mc_set_host_body) CALL(mc_set_host_body(m, 1, 1, v, eq2, 2));
+    if (mc_add_stiffness) CALL(mc_add_stiffness(m, 1, 2, eq2, eq2, v, MC_MATRIX_FULL));
+    if (mc_add_element_matrices) CALL(mc_add_element_matrices(m, 1, 1, ptr, eq2, k4));
+    if (mc_set_load_vector) CALL(mc_set_load_vector(m, 1, 2, v));
+    if (mc_get_equation_solution) CALL(mc_get_equation_solution(m, 1, v));
+    if (mc_get_contact_load) CALL(mc_get_contact_load(m, 1, v));
+    if (mc_set_contact_curved) CALL(mc_set_contact_curved(m, 1, 1, edge3));
+  }
   /* NULL outputs on a real model */
   m = h->m;
   CALL(mc_get_info_int(m, MC_INFO_DOFS, NULL));
@@ -301,6 +340,8 @@ static void null_calls(harness *h) {
   CALL(mc_get_contact_initial_gap(m, NULL));
   CALL(mc_get_contact_normal(m, NULL));
   if (mc_write_vtu) CALL(mc_write_vtu(m, NULL));
+  if (mc_get_equation_solution) CALL(mc_get_equation_solution(m, 1, NULL));
+  if (mc_get_contact_load) CALL(mc_get_contact_load(m, 2, NULL));
 }
 
 /* ---- operations ---------------------------------------------------------------------- */
@@ -332,6 +373,17 @@ enum {
   OP_LOG,            /* byte on                                                     */
   OP_WRITE_VTU,      /* byte which path                                             */
   OP_NULLS,          /* - (every entry point with NULL model / NULL outputs)        */
+  /* host bodies (issue 22), appended so that the older seeds keep their meaning: */
+  OP_HOST_BODY,      /* body, byte order (b % 2 + 1), byte nx, byte ny, real x0, y0, lx, ly, byte restrain
+                        (b % 6), byte shuffle, byte corrupt (b % 8) [, corruption operands] */
+  OP_HOST_STIFFNESS, /* body, byte mode (b % 3: coordinates full, one triangle, element matrices),
+                        real young, real poisson, byte corrupt (b % 7) [, corruption operands] */
+  OP_STIFFNESS_RAW,  /* body, count n, n ids rows, n ids cols, n reals, byte storage (b % 4), byte nulls */
+  OP_ELEMENTS_RAW,   /* body, count n_elements (<= 4), per element: count k (<= 4), k ids, k*k reals;
+                        byte corrupt (b % 4) [, id] */
+  OP_LOAD_VECTOR,    /* body, byte kind (b % 4), real fx, real fy [, kind 1: count n, n reals] */
+  OP_CONTACT_CURVED, /* body, byte side, byte first, byte count (0: all), byte mode (b % 3)
+                        [, mode 2: count n, 3n ids] */
   OP_COUNT
 };
 
@@ -413,6 +465,11 @@ static void op_grid_mesh(harness *h, stream *s) {
       b->side[1][2 * j] = C(nI - 1, o * j), b->side[1][2 * j + 1] = C(nI - 1, o * (j + 1));
       b->side[3][2 * j] = C(0, o * (ny - j)), b->side[3][2 * j + 1] = C(0, o * (ny - j - 1));
     }
+    if (o == 2) { /* the middles of the side edges, in the same order */
+      b->has_mid = 1;
+      for (i = 0; i < nx; ++i) b->side_mid[0][i] = C(2 * i + 1, 0), b->side_mid[2][i] = C(2 * (nx - i) - 1, nJ - 1);
+      for (j = 0; j < ny; ++j) b->side_mid[1][j] = C(nI - 1, 2 * j + 1), b->side_mid[3][j] = C(0, 2 * (ny - j) - 1);
+    }
 #undef C
     b->n_side[0] = b->n_side[2] = nx;
     b->n_side[1] = b->n_side[3] = ny;
@@ -455,7 +512,7 @@ static void op_cell_law(harness *h, stream *s) {
   double value = read_real(s);
   int null = read_u8(s) % 8 == 1;
   const body_state *b = tracked(h, body);
-  size_t cells = b && b->meshed ? (size_t)b->n_cells : 1, c;
+  size_t cells = b && b->meshed && b->n_cells > 0 ? (size_t)b->n_cells : 1, c;
   double *d = exact(9 * cells, sizeof(double));
   for (c = 0; c < cells; ++c) isotropic(young, poisson, d + 9 * c);
   if (entry < 9) d[9 * ((size_t)cell % cells) + (size_t)entry] = value;
@@ -591,6 +648,270 @@ static void op_write_vtu(harness *h, stream *s) {
   if (mc_write_vtu) CALL(mc_write_vtu(m, paths[which]));
 }
 
+/* ---- host bodies --------------------------------------------------------------------- */
+
+static unsigned lcg(unsigned *state) {
+  *state = *state * 1103515245u + 12345u;
+  return (*state >> 8) & 0xffffff;
+}
+
+/* A host body on a lattice of (order nx + 1) x (order ny + 1) nodes (order 2: the corners and
+   middles of a quadratic grid), its freedoms numbered node by node or shuffled, a side
+   restrained (no equation) or none (a floating body), optionally corrupted. */
+static void op_host_body(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int body = read_body(s), o = 1 + read_u8(s) % 2, nx = 1 + read_u8(s) % MAX_NX, ny = 1 + read_u8(s) % MAX_NY;
+  double x0 = read_real(s), y0 = read_real(s), lx = read_real(s), ly = read_real(s);
+  int restrain = read_u8(s) % 6, shuffle = read_u8(s), corrupt = read_u8(s) % 8;
+  const int nI = o * nx + 1, nJ = o * ny + 1, n = nI * nJ;
+  double xy[2 * MAX_LATTICE];
+  mc_int eq[2 * MAX_LATTICE], call_eq[2 * MAX_LATTICE], n_eq = 0, n_equations;
+  int i, j, k;
+  unsigned state = 777u + (unsigned)shuffle;
+  if (lx == 0) lx = 1;
+  if (ly == 0) ly = 1;
+  for (j = 0; j < nJ; ++j)
+    for (i = 0; i < nI; ++i) {
+      const int node = j * nI + i;
+      /* 0 none, 1 the bottom clamped, 2 rollers (left x, bottom y), 3 bottom y, 4 every x,
+         5 x of the first node (a body contact holds in y) */
+      const int no_x = (restrain == 1 && j == 0) || (restrain == 2 && i == 0) || restrain == 4 || (restrain == 5 && node == 0);
+      const int no_y = ((restrain == 1 || restrain == 2 || restrain == 3) && j == 0);
+      xy[2 * node] = x0 + lx * i / (nI - 1), xy[2 * node + 1] = y0 + ly * j / (nJ - 1);
+      eq[2 * node] = no_x ? -1 : n_eq++;
+      eq[2 * node + 1] = no_y ? -1 : n_eq++;
+    }
+  if (shuffle) { /* a permutation of the equation numbers */
+    mc_int perm[2 * MAX_LATTICE];
+    for (k = 0; k < n_eq; ++k) perm[k] = k;
+    for (k = n_eq - 1; k > 0; --k) {
+      int r = (int)(lcg(&state) % (unsigned)(k + 1));
+      mc_int t = perm[k];
+      perm[k] = perm[r], perm[r] = t;
+    }
+    for (k = 0; k < 2 * n; ++k)
+      if (eq[k] >= 0) eq[k] = perm[eq[k]];
+  }
+  n_equations = n_eq;
+  for (k = 0; k < 2 * n; ++k) call_eq[k] = eq[k] >= 0 ? eq[k] + h->base : h->base - 1;
+  /* 1 two freedoms share an equation, 2 an equation number read, 3 n_equations read,
+     4 NULL xy, 5 NULL equations, 6 a coordinate read, 7 one more equation than the nodes name */
+  if (corrupt == 1 && n_eq > 1) call_eq[read_u8(s) % (2 * n)] = h->base;
+  else if (corrupt == 2) call_eq[read_u8(s) % (2 * n)] = plus_base(read_id(s), h->base);
+  else if (corrupt == 3) { /* bounded: the harness sizes equation vectors from it */
+    n_equations = read_id(s);
+    if (n_equations > n_eq + 1000) n_equations = n_eq + 1000;
+  }
+  else if (corrupt == 6) xy[read_u8(s) % (2 * n)] = read_real(s);
+  else if (corrupt == 7) n_equations++;
+  if (mc_set_host_body &&
+      CALL(mc_set_host_body(m, body, n, corrupt == 4 ? NULL : xy, corrupt == 5 ? NULL : call_eq, n_equations)) == MC_OK) {
+    body_state *b = tracked(h, body);
+    memset(b, 0, sizeof *b);
+    b->meshed = 1, b->host = 1, b->n_nodes = n, b->n_cells = 0, b->n_equations = n_equations, b->grid = 1;
+    b->nI = nI, b->nJ = nJ;
+    memcpy(b->xy, xy, 2 * (size_t)n * sizeof(double));
+    for (k = 0; k < 2 * n; ++k) b->eq[k] = call_eq[k] < h->base ? -1 : call_eq[k] - h->base;
+#define C(I, J) ((J) * nI + (I))
+    for (i = 0; i < nx; ++i) {
+      b->side[0][2 * i] = C(o * i, 0), b->side[0][2 * i + 1] = C(o * (i + 1), 0);
+      b->side[2][2 * i] = C(o * (nx - i), nJ - 1), b->side[2][2 * i + 1] = C(o * (nx - i - 1), nJ - 1);
+      if (o == 2) b->side_mid[0][i] = C(2 * i + 1, 0), b->side_mid[2][i] = C(2 * (nx - i) - 1, nJ - 1);
+    }
+    for (j = 0; j < ny; ++j) {
+      b->side[1][2 * j] = C(nI - 1, o * j), b->side[1][2 * j + 1] = C(nI - 1, o * (j + 1));
+      b->side[3][2 * j] = C(0, o * (ny - j)), b->side[3][2 * j + 1] = C(0, o * (ny - j - 1));
+      if (o == 2) b->side_mid[1][j] = C(nI - 1, 2 * j + 1), b->side_mid[3][j] = C(0, 2 * (ny - j) - 1);
+    }
+#undef C
+    b->has_mid = o == 2;
+    b->n_side[0] = b->n_side[2] = nx;
+    b->n_side[1] = b->n_side[3] = ny;
+  }
+}
+
+/* The plane-strain stiffness (row-major 6 x 6) of the P1 triangle a, b, c of a lattice. */
+static void p1_stiffness(const double *xy, const int tri[3], double young, double poisson, double k[36]) {
+  double x[3], y[3], bm[3][6], d[9], area, inv2a;
+  int i, r, c, p, q;
+  for (i = 0; i < 3; ++i) x[i] = xy[2 * tri[i]], y[i] = xy[2 * tri[i] + 1];
+  area = 0.5 * ((x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]));
+  inv2a = area != 0 ? 1 / (2 * area) : 0;
+  memset(bm, 0, sizeof bm);
+  for (i = 0; i < 3; ++i) {
+    double b = (y[(i + 1) % 3] - y[(i + 2) % 3]) * inv2a, cc = (x[(i + 2) % 3] - x[(i + 1) % 3]) * inv2a;
+    bm[0][2 * i] = b, bm[1][2 * i + 1] = cc, bm[2][2 * i] = cc, bm[2][2 * i + 1] = b;
+  }
+  isotropic(young, poisson, d);
+  for (r = 0; r < 6; ++r)
+    for (c = 0; c < 6; ++c) {
+      double sum = 0;
+      for (p = 0; p < 3; ++p)
+        for (q = 0; q < 3; ++q) sum += bm[p][r] * d[3 * p + q] * bm[q][c];
+      k[6 * r + c] = area * sum;
+    }
+}
+
+/* The stiffness of a host body's lattice (P1 triangles on it) given as coordinate entries, both
+   triangles or the lower one, or as element matrices; optionally corrupted. Needs a body that
+   OP_HOST_BODY made; on another body, one diagonal entry (refused). */
+static void op_host_stiffness(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int body = read_body(s), mode = read_u8(s) % 3;
+  double young = read_real(s), poisson = read_real(s);
+  int corrupt = read_u8(s) % 7; /* 1 a value read, 2 an equation read, 3 an asymmetric entry,
+                                   4 a negative count, 5 a NULL array, 6 an infinite value */
+  const body_state *b = tracked(h, body);
+  const int nI = b && b->host ? b->nI : 2, nJ = b && b->host ? b->nJ : 2;
+  const size_t n_elements = 2 * (size_t)(nI - 1) * (size_t)(nJ - 1);
+  mc_int *rows = exact(36 * n_elements, sizeof(mc_int)), *cols = exact(36 * n_elements, sizeof(mc_int));
+  mc_int *eltptr = exact(n_elements + 1, sizeof(mc_int)), *eltvar = exact(6 * n_elements, sizeof(mc_int));
+  double *values = exact(36 * n_elements, sizeof(double)), *a_elt = exact(36 * n_elements, sizeof(double));
+  static const double unit[2 * 4] = {0, 0, 1, 0, 1, 1, 0, 1};
+  const double *xy = b && b->host ? b->xy : unit;
+  size_t e = 0, n = 0, at;
+  int i, j, t, r, c;
+  for (j = 0; j + 1 < nJ; ++j)
+    for (i = 0; i + 1 < nI; ++i)
+      for (t = 0; t < 2; ++t, ++e) {
+        const int a = j * nI + i, tri[3] = {a, t ? a + nI + 1 : a + 1, t ? a + nI : a + nI + 1};
+        double k[36];
+        mc_int dof[6];
+        p1_stiffness(xy, tri, young, poisson, k);
+        for (r = 0; r < 6; ++r) {
+          mc_int q = b && b->host ? b->eq[2 * tri[r / 2] + r % 2] : (mc_int)(2 * tri[r / 2] + r % 2);
+          dof[r] = q >= 0 ? q + h->base : h->base - 1;
+        }
+        eltptr[e] = (mc_int)(6 * e) + h->base;
+        for (c = 0; c < 6; ++c) {
+          eltvar[6 * e + (size_t)c] = dof[c];
+          for (r = 0; r < 6; ++r) {
+            a_elt[36 * e + 6 * (size_t)c + (size_t)r] = k[6 * r + c];
+            if (mode == 1 && (dof[r] < h->base || dof[c] < h->base || dof[r] < dof[c])) continue;
+            rows[n] = dof[r], cols[n] = dof[c], values[n] = k[6 * r + c], n++;
+          }
+        }
+      }
+  eltptr[n_elements] = (mc_int)(6 * n_elements) + h->base;
+  at = read_u8(s);
+  if (mode < 2) {
+    mc_int count = (mc_int)n;
+    if (n > 0) at %= n;
+    if (corrupt == 1 && n > 0) values[at] = read_real(s);
+    else if (corrupt == 2 && n > 0) rows[at] = plus_base(read_id(s), h->base);
+    else if (corrupt == 3 && n > 0) values[at] += 1;
+    else if (corrupt == 4) count = -1;
+    else if (corrupt == 6 && n > 0) values[at] = INFINITY;
+    if (mc_add_stiffness)
+      CALL(mc_add_stiffness(m, body, count, corrupt == 5 ? NULL : rows, cols, values,
+                            mode == 0 ? MC_MATRIX_FULL : MC_MATRIX_TRIANGLE));
+  } else {
+    mc_int count = (mc_int)n_elements;
+    if (corrupt == 1) a_elt[at % (36 * n_elements)] = read_real(s);
+    else if (corrupt == 2) eltvar[at % (6 * n_elements)] = plus_base(read_id(s), h->base);
+    else if (corrupt == 3) a_elt[at % (36 * n_elements)] += 1;
+    else if (corrupt == 4) count = -1;
+    else if (corrupt == 6) a_elt[at % (36 * n_elements)] = NAN;
+    if (mc_add_element_matrices)
+      CALL(mc_add_element_matrices(m, body, count, eltptr, corrupt == 5 ? NULL : eltvar, a_elt));
+  }
+  free(rows), free(cols), free(values), free(eltptr), free(eltvar), free(a_elt);
+}
+
+static void op_stiffness_raw(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int body = read_body(s), storage, nulls;
+  mc_int n = read_count(s, MAX_RAW), k, rows[MAX_RAW], cols[MAX_RAW];
+  double values[MAX_RAW];
+  for (k = 0; k < n; ++k) rows[k] = plus_base(read_id(s), h->base);
+  for (k = 0; k < n; ++k) cols[k] = plus_base(read_id(s), h->base);
+  for (k = 0; k < n; ++k) values[k] = read_real(s);
+  storage = read_u8(s) % 4; /* 0 and 3: not a storage */
+  nulls = read_u8(s) % 8;
+  if (mc_add_stiffness)
+    CALL(mc_add_stiffness(m, body, n, nulls == 1 || n <= 0 ? NULL : rows, nulls == 2 || n <= 0 ? NULL : cols,
+                          nulls == 3 || n <= 0 ? NULL : values, storage));
+}
+
+/* Element matrices from the stream. The arrays are exactly as long as eltptr says; a corrupted
+   eltptr only ever asks for less (a first entry below the base, a decreasing entry), which the
+   library must refuse without reading past the arrays. */
+static void op_elements_raw(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int body = read_body(s), corrupt;
+  mc_int n_elements = read_count(s, MAX_ELEMENTS), e, k, eltptr[MAX_ELEMENTS + 1], n_var = 0;
+  mc_int eltvar[MAX_ELEMENTS * 4];
+  double a_elt[MAX_ELEMENTS * 16];
+  size_t n_values = 0;
+  mc_int *var;
+  double *a;
+  eltptr[0] = h->base;
+  for (e = 0; e < (n_elements > 0 ? n_elements : 0); ++e) {
+    mc_int size = read_count(s, 4);
+    if (size < 0) size = 0;
+    for (k = 0; k < size; ++k) eltvar[n_var + k] = plus_base(read_id(s), h->base);
+    for (k = 0; k < size * size; ++k) a_elt[n_values + (size_t)k] = read_real(s);
+    n_var += size, n_values += (size_t)(size * size);
+    eltptr[e + 1] = n_var + h->base;
+  }
+  corrupt = read_u8(s) % 4; /* 1 eltptr[0] below the base, 2 a decreasing entry, 3 NULL arrays */
+  if (corrupt == 1) eltptr[0] = h->base - 1 - read_u8(s) % 3;
+  else if (corrupt == 2 && n_elements >= 2 && eltptr[1] > eltptr[0]) eltptr[1] = eltptr[0] - 1;
+  /* exactly sized heap copies: ASan sees a read past them */
+  var = exact((size_t)n_var, sizeof(mc_int)), a = exact(n_values, sizeof(double));
+  memcpy(var, eltvar, (size_t)n_var * sizeof(mc_int)), memcpy(a, a_elt, n_values * sizeof(double));
+  if (mc_add_element_matrices)
+    CALL(mc_add_element_matrices(m, body, n_elements, corrupt == 3 ? NULL : eltptr, corrupt == 3 ? NULL : var, a));
+  free(var), free(a);
+}
+
+static void op_load_vector(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int body = read_body(s), kind = read_u8(s) % 4; /* 0 the body's size, 1 raw, 2 NULL, 3 one too many */
+  double fx = read_real(s), fy = read_real(s), raw[MAX_RAW];
+  const body_state *b = tracked(h, body);
+  mc_int n = b && b->meshed ? (b->host ? b->n_equations : 2 * b->n_nodes) : 1, k;
+  double *f;
+  if (kind == 1) {
+    n = read_count(s, MAX_RAW);
+    for (k = 0; k < n; ++k) raw[k] = read_real(s);
+  }
+  if (kind == 3) n++;
+  f = exact(n > 0 ? (size_t)n : 0, sizeof(double));
+  for (k = 0; k < n; ++k) f[k] = kind == 1 ? raw[k] : 0;
+  if (kind != 1 && b && b->host) /* fx, fy on each node's x and y equations */
+    for (k = 0; k < 2 * b->n_nodes; ++k)
+      if (b->eq[k] >= 0 && b->eq[k] < n) f[b->eq[k]] += k % 2 ? fy : fx;
+  if (mc_set_load_vector) CALL(mc_set_load_vector(m, body, n, kind == 2 ? NULL : f));
+  free(f);
+}
+
+/* Quadratic contact edges (end, end, middle) along a side: the side's own middles where the body
+   has them (a quadratic grid, a lattice of order 2), else the next corner (refused); mode 1 swaps
+   an end and the middle; mode 2 reads the edges. */
+static void op_contact_curved(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int body = read_body(s), side = read_u8(s) % 4, first = read_u8(s), count = read_u8(s), mode = read_u8(s) % 3;
+  mc_int edges[3 * MAX_RAW > 3 * MAX_SIDE ? 3 * MAX_RAW : 3 * MAX_SIDE], n, k;
+  if (mode == 2) {
+    n = read_count(s, MAX_RAW);
+    for (k = 0; k < 3 * n; ++k) edges[k] = plus_base(read_id(s), h->base);
+  } else {
+    const body_state *b = tracked(h, body);
+    mc_int ne;
+    const mc_int *e = side_edges(h, body, side, &ne);
+    first %= ne;
+    n = count == 0 ? ne - first : 1 + count % (ne - first);
+    for (k = 0; k < n; ++k) {
+      const mc_int a = e[2 * (first + k)], c = e[2 * (first + k) + 1];
+      const mc_int mid = b && b->grid && b->has_mid ? b->side_mid[side][first + k] : e[2 * ((first + k + 1) % ne) + 1];
+      edges[3 * k] = (mode == 1 ? mid : a) + h->base, edges[3 * k + 1] = c + h->base;
+      edges[3 * k + 2] = (mode == 1 ? a : mid) + h->base;
+    }
+  }
+  if (mc_set_contact_curved) CALL(mc_set_contact_curved(m, body, n, n > 0 ? edges : NULL));
+}
+
 static void run(harness *h, stream *s) {
   int ops = 0;
   while (s->n > 0 && ops++ < MAX_OPS) {
@@ -658,6 +979,12 @@ static void run(harness *h, stream *s) {
       }
       case OP_WRITE_VTU: op_write_vtu(h, s); break;
       case OP_NULLS: null_calls(h); break;
+      case OP_HOST_BODY: op_host_body(h, s); break;
+      case OP_HOST_STIFFNESS: op_host_stiffness(h, s); break;
+      case OP_STIFFNESS_RAW: op_stiffness_raw(h, s); break;
+      case OP_ELEMENTS_RAW: op_elements_raw(h, s); break;
+      case OP_LOAD_VECTOR: op_load_vector(h, s); break;
+      case OP_CONTACT_CURVED: op_contact_curved(h, s); break;
     }
   }
 }

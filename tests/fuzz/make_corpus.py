@@ -14,7 +14,8 @@ import struct
 OPS = ["NEW_MODEL", "INDEX_BASE", "PLANE", "GRID_MESH", "RAW_MESH", "MATERIAL", "CELL_LAW",
        "FIX_SIDE", "FIX_RAW", "TRACTION_SIDE", "PRESSURE_SIDE", "EDGE_LOAD_RAW", "NODAL_FORCE",
        "BODY_FORCE", "CLEAR_LOADS", "CONTACT_SIDE", "CONTACT_RAW", "OPTION_INT", "OPTION_REAL",
-       "SOLVE", "QUERY", "GAP_OFFSET", "LOG", "WRITE_VTU", "NULLS"]
+       "SOLVE", "QUERY", "GAP_OFFSET", "LOG", "WRITE_VTU", "NULLS",
+       "HOST_BODY", "HOST_STIFFNESS", "STIFFNESS_RAW", "ELEMENTS_RAW", "LOAD_VECTOR", "CONTACT_CURVED"]
 OP = {name: k for k, name in enumerate(OPS)}
 BOTTOM, RIGHT, TOP, LEFT = 0, 1, 2, 3
 SPECIAL = {"nan": 10, "inf": 11, "-inf": 12}
@@ -99,6 +100,30 @@ def solve():
     return op("SOLVE")
 
 
+# Host bodies: a lattice of order 1 or 2 (its sides as for grids); restrain 0 none (floating),
+# 1 the bottom clamped, 2 rollers (left x, bottom y), 3 bottom y, 4 every x, 5 x of the first
+# node (the bottom-left corner: a body contact holds in y); shuffle 0 keeps the
+# node-by-node numbering; corrupt 0 none (1..7: see op_host_body).
+FULL, TRIANGLE, ELEMENTS = 0, 1, 2
+
+
+def host_body(b, order, nx, ny, x0, y0, lx, ly, restrain, shuffle=0, corrupt=b"\x00"):
+    return (op("HOST_BODY") + body(b) + u8(order - 1) + u8(nx - 1) + u8(ny - 1) + real(x0) + real(y0)
+            + real(lx) + real(ly) + u8(restrain) + u8(shuffle) + corrupt)
+
+
+def host_stiffness(b, mode, young, poisson, corrupt=0, at=0, extra=b""):
+    return op("HOST_STIFFNESS") + body(b) + u8(mode) + real(young) + real(poisson) + u8(corrupt) + u8(at) + extra
+
+
+def load_vector(b, fx, fy, kind=0, extra=b""):
+    return op("LOAD_VECTOR") + body(b) + u8(kind) + real(fx) + real(fy) + extra
+
+
+def contact_curved(b, side, first=0, n=0, mode=0, extra=b""):
+    return op("CONTACT_CURVED") + body(b) + u8(side) + u8(first) + u8(n) + u8(mode) + extra
+
+
 # Two stacked blocks (as in tests/test_errors.c): body 1 = [0,1]x[0,0.5] P1 6x3 on body 2 =
 # [0,1]x[-0.5,0] Q1 8x4 clamped at its bottom; body 1 held by contact and u_x = 0 at one node.
 def stack(base_mid=24):  # node (3, 3) of the 6x3 grid: top middle
@@ -181,6 +206,51 @@ SEEDS = {
     + material(1, 1.0, 0.3) + material(2, 1.0, 0.3) + fix_side(2, BOTTOM, 3)
     + fix_side(1, TOP, 3, (0.0, -0.0625)) + contact_side(1, BOTTOM) + contact_side(2, TOP) + solve()
     + grid(1, 9, 2, 2, 0, 0, 1, 1, corrupt=u8(3) + u8(0) + u8(4) + u8(0)),
+    # host bodies (issue 22): body 1 a host lattice held in x, floating in y, on a Q1 mesh body 2;
+    # its stiffness as coordinates (full, one triangle) and element matrices, base 0 and 1, a
+    # shuffled numbering, a load vector re-solved; two host bodies. Then quadratic edges on a host
+    # lattice of order 2 and on a Q8 mesh; raw entries and elements, and bad input of each call
+    "host_bodies": host_body(1, 1, 6, 3, 0, 0, 1, 0.5, 5) + host_stiffness(1, FULL, 100.0, 0.3)
+    + load_vector(1, 0, -1) + grid(2, 4, 8, 4, 0, -0.5, 1, 0.5) + material(2, 200.0, 0.3)
+    + fix_side(2, BOTTOM, 3) + contact_side(1, BOTTOM) + contact_side(2, TOP) + solve()
+    + load_vector(1, 0, -2) + solve() + option_int(11, 2) + solve() + op("QUERY")
+    + op("INDEX_BASE") + u8(2) + host_body(1, 1, 6, 3, 0, 0, 1, 0.5, 5, shuffle=7)
+    + host_stiffness(1, TRIANGLE, 100.0, 0.3) + load_vector(1, 0, -1) + contact_side(1, BOTTOM) + solve()
+    + host_body(1, 1, 6, 3, 0, 0, 1, 0.5, 5, shuffle=9) + host_stiffness(1, ELEMENTS, 100.0, 0.3)
+    + load_vector(1, 0, -1) + contact_side(1, BOTTOM) + option_int(1, 1) + solve()
+    + host_body(2, 1, 8, 4, 0, -0.5, 1, 0.5, 1) + host_stiffness(2, ELEMENTS, 200.0, 0.3)
+    + contact_side(2, TOP) + solve() + op("QUERY"),
+    "host_curved_and_bad_input": grid(2, 4, 8, 4, 0, -0.5, 1, 0.5) + material(2, 200.0, 0.3)
+    + fix_side(2, BOTTOM, 3) + contact_side(2, TOP)
+    + host_body(1, 2, 4, 2, 0, 0, 1, 0.5, 5) + host_stiffness(1, FULL, 100.0, 0.3) + load_vector(1, 0, -1)
+    + contact_curved(1, BOTTOM) + solve() + option_int(11, 2) + solve()
+    + grid(1, 8, 4, 2, 0, 0, 1, 0.5) + material(1, 100.0, 0.3) + fix_side(1, TOP, 3, (0.0, -0.0625))
+    + contact_curved(1, BOTTOM) + solve() + contact_curved(1, BOTTOM, mode=1) + contact_curved(1, LEFT, 0, 1)
+    + contact_curved(1, BOTTOM, mode=2, extra=count(1) + ident(1) + ident(3) + ident(2))
+    + host_body(1, 1, 2, 2, 0, 0, 1, 1, 1, corrupt=u8(1) + u8(3))
+    + host_body(1, 1, 2, 2, 0, 0, 1, 1, 1, corrupt=u8(2) + u8(5) + ident(100))
+    + host_body(1, 1, 2, 2, 0, 0, 1, 1, 1, corrupt=u8(3) + ident(2))
+    + host_body(1, 1, 2, 2, 0, 0, 1, 1, 1, corrupt=u8(6) + u8(0) + real("nan"))
+    + host_body(1, 1, 2, 2, 0, 0, 1, 1, 1, corrupt=u8(7)) + host_stiffness(1, FULL, 1.0, 0.3, 3, 29)
+    + host_stiffness(1, FULL, 1.0, 0.3, 1, 2, real("inf")) + host_stiffness(1, ELEMENTS, 1.0, 0.3, 3, 1)
+    + host_stiffness(1, TRIANGLE, 1.0, 0.3, 2, 0, ident(1000)) + host_stiffness(1, ELEMENTS, 1.0, 0.3, 4)
+    + host_stiffness(1, FULL, 1.0, 0.3) + load_vector(1, 1, 1, kind=3) + load_vector(1, 0, 0, kind=2)
+    + load_vector(1, 0, 0, kind=1, extra=count(2) + real(1) + real(2))
+    + contact_side(1, BOTTOM) + solve()  # contact nodes without equations (the bottom is clamped)
+    + op("NEW_MODEL") + host_body(1, 1, 2, 2, 0, 0, 1, 1, 1) + host_stiffness(1, FULL, 1.0, 0.3, 3, 29)
+    + solve()  # an asymmetric MC_MATRIX_FULL sum, found by the solve
+    + host_body(1, 1, 2, 2, 0, 0, 1, 1, 1) + host_stiffness(1, FULL, 1.0, 0.3) + load_vector(1, 0.5, 1)
+    + solve() + op("QUERY")
+    + op("STIFFNESS_RAW") + body(1) + count(2) + ident(0) + ident(1) + ident(1) + ident(0) + real(1) + real(2)
+    + u8(1) + u8(0)
+    + op("STIFFNESS_RAW") + body(1) + count(1) + ident(0) + ident(0) + real(1) + u8(3) + u8(0)
+    + op("ELEMENTS_RAW") + body(1) + count(2) + count(2) + ident(0) + ident(1) + b"".join(real(v) for v in (2, -1, -1, 2))
+    + count(1) + ident(-1) + real(1) + u8(0)
+    + op("ELEMENTS_RAW") + body(1) + count(2) + count(2) + ident(0) + ident(1) + b"".join(real(v) for v in (2, -1, -1, 2))
+    + count(1) + ident(2) + real(1) + u8(1) + u8(0)
+    + op("ELEMENTS_RAW") + body(1) + count(2) + count(2) + ident(0) + ident(1) + b"".join(real(v) for v in (2, -1, -1, 2))
+    + count(1) + ident(2) + real(1) + u8(2)
+    + op("NULLS") + op("QUERY"),
     "fully_supported_and_overflow": grid(2, 4, 1, 1, 0, -1, 2, 1) + material(2, 1.0, 0.3)
     + fix_side(2, BOTTOM, 3) + fix_side(2, TOP, 3) + solve()
     + grid(1, 4, 2, 2, 0, 0, 1, 1) + material(1, 1.0, 0.3) + fix_side(1, TOP, 3, (0.0, -0.125))

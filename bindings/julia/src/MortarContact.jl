@@ -16,6 +16,10 @@ Two layers, both thin:
   node/cell/edge (`xy` is 2×n_nodes, `cells` k×n_cells with k = 3, 4, 6, 8 or 9 nodes per cell,
   `edges` 2×n_edges), which is exactly the C layout, and errors thrown as
   `MortarContactError(status, message)`.
+- Host bodies (a legacy program's own matrices): `set_host_body!`, `add_stiffness!` (a
+  `SparseMatrixCSC`, any matrix, or coordinate vectors), `add_element_matrices!` (MUMPS's
+  `eltptr`/`eltvar`/`a_elt`, or Smith and Griffiths' `g_g` and `storkm`), `set_load_vector!`,
+  `get_equation_solution`, `get_contact_load`; `set_contact_curved!` for 3-node edges.
 
 The library is `libmortarcontact.so.0`, loaded from `ENV["MORTARCONTACT_LIBRARY"]` (full path)
 if set, else from the install prefix this package was installed into
@@ -36,6 +40,7 @@ end
 module MortarContact
 
 using Libdl
+using SparseArrays: SparseMatrixCSC, findnz, sparse
 
 export Model, MortarContactError, version_string, version_number, status_string
 export set_index_base!, set_plane!, set_mesh!, set_material!, set_cell_elasticity!, fix!,
@@ -44,6 +49,8 @@ export set_index_base!, set_plane!, set_mesh!, set_material!, set_cell_elasticit
        get_stress, get_nodal_stress, get_reaction, get_contact_count, get_contact_nodes,
        get_contact_pressure, get_contact_force, get_contact_gap, get_contact_initial_gap,
        get_contact_normal, errmsg, set_gap_offset!, set_log_callback!, write_vtu
+export set_host_body!, add_stiffness!, add_element_matrices!, set_load_vector!, get_equation_solution,
+       get_contact_load, set_contact_curved!
 
 # Resolved by soname: __init__ dlopens the chosen file first, and the dynamic loader then
 # matches this name against the already-loaded library's soname.
@@ -123,6 +130,8 @@ const MC_Q1_BBAR = Cint(1)
 const MC_INTERFACE_AUTO = Cint(0)
 const MC_INTERFACE_CONDENSED = Cint(1)
 const MC_INTERFACE_SPARSE = Cint(2)
+const MC_MATRIX_FULL = Cint(1)
+const MC_MATRIX_TRIANGLE = Cint(2)
 const MC_LOG_PHASE = Cint(1)
 const MC_LOG_ITERATION = Cint(2)
 const MC_INFO_DOFS = Cint(1)
@@ -189,6 +198,27 @@ mc_set_contact(m, body, n_edges, edges) =
 mc_set_gap_offset(m, n, nodes, offset) =
     ccall((:mc_set_gap_offset, libmortarcontact), Cint, (Ptr{Cvoid}, Int32, Ptr{Int32}, Ptr{Cdouble}),
           m, n, nodes, offset)
+mc_set_host_body(m, body, n_nodes, xy, equations, n_equations) =
+    ccall((:mc_set_host_body, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Int32, Ptr{Cdouble}, Ptr{Int32}, Int32),
+          m, body, n_nodes, xy, equations, n_equations)
+mc_add_stiffness(m, body, n_entries, rows, cols, values, storage) =
+    ccall((:mc_add_stiffness, libmortarcontact), Cint,
+          (Ptr{Cvoid}, Cint, Int32, Ptr{Int32}, Ptr{Int32}, Ptr{Cdouble}, Cint),
+          m, body, n_entries, rows, cols, values, storage)
+mc_add_element_matrices(m, body, n_elements, eltptr, eltvar, a_elt) =
+    ccall((:mc_add_element_matrices, libmortarcontact), Cint,
+          (Ptr{Cvoid}, Cint, Int32, Ptr{Int32}, Ptr{Int32}, Ptr{Cdouble}),
+          m, body, n_elements, eltptr, eltvar, a_elt)
+mc_set_load_vector(m, body, n_equations, f) =
+    ccall((:mc_set_load_vector, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Int32, Ptr{Cdouble}),
+          m, body, n_equations, f)
+mc_get_equation_solution(m, body, u) =
+    ccall((:mc_get_equation_solution, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Ptr{Cdouble}), m, body, u)
+mc_get_contact_load(m, body, r) =
+    ccall((:mc_get_contact_load, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Ptr{Cdouble}), m, body, r)
+mc_set_contact_curved(m, body, n_edges, edges) =
+    ccall((:mc_set_contact_curved, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Int32, Ptr{Int32}),
+          m, body, n_edges, edges)
 mc_set_option_int(m, option, value) =
     ccall((:mc_set_option_int, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Int64), m, option, value)
 mc_set_option_real(m, option, value) =
@@ -249,16 +279,18 @@ One scene (`mc_model`). Freed by `close(m)` or, failing that, by its finalizer.
 """
 mutable struct Model
     ptr::Ptr{Cvoid}
-    n_nodes::Vector{Int}   # per body; -1 = no mesh yet
-    n_cells::Vector{Int}
+    n_nodes::Vector{Int}   # per body; -1 = no mesh or host body yet
+    n_cells::Vector{Int}   # 0 for a host body
+    n_equations::Vector{Int}  # a host body's system size; 0 for a mesh body
+    base::Int              # the index base set through this Model
     log::Union{Nothing,Base.RefValue{Any}}  # the log callable; the C library holds a pointer to it
     function Model(; index_base::Integer=1)
         r = Ref{Ptr{Cvoid}}(C_NULL)
         st = mc_create(r)
         st == MC_OK || throw(MortarContactError(st, "mc_create failed"))
-        m = new(r[], [-1, -1], [-1, -1], nothing)
+        m = new(r[], [-1, -1], [-1, -1], [0, 0], 0, nothing)
         finalizer(close, m)
-        check(m, mc_set_index_base(m, index_base))
+        set_index_base!(m, index_base)
         return m
     end
 end
@@ -298,7 +330,8 @@ argerror(msg) = throw(MortarContactError(MC_ERROR_ARGUMENT, msg))
 
 function checkbody(m::Model, body, what)
     body in (1, 2) || argerror("$what: body must be 1 or 2, got $body")
-    m.n_nodes[body] >= 0 || throw(MortarContactError(MC_ERROR_STATE, "$what: no mesh set for body $body"))
+    m.n_nodes[body] >= 0 ||
+        throw(MortarContactError(MC_ERROR_STATE, "$what: no mesh or host body set for body $body"))
     return nothing
 end
 
@@ -310,7 +343,11 @@ end
 reals(a) = convert(Array{Cdouble}, a)      # contiguous Float64 copy (no copy if already one)
 ids(a) = convert(Array{Int32}, a)          # throws InexactError for ids beyond Int32
 
-set_index_base!(m::Model, base::Integer) = check(m, mc_set_index_base(m, base))
+function set_index_base!(m::Model, base::Integer)
+    check(m, mc_set_index_base(m, base))
+    m.base = base
+    return nothing
+end
 set_plane!(m::Model, plane::Integer, thickness::Real=1.0) = check(m, mc_set_plane(m, plane, thickness))
 
 """`xy`: 2×n_nodes; `cells`: 3×n_cells (P1), 4×n_cells (Q1), 6×n_cells (T6), 8×n_cells (Q8) or
@@ -323,6 +360,7 @@ function set_mesh!(m::Model, body::Integer, xy::AbstractMatrix{<:Real}, cells::A
     if body in (1, 2)
         m.n_nodes[body] = size(x, 2)
         m.n_cells[body] = size(c, 2)
+        m.n_equations[body] = 0
     end
     return nothing
 end
@@ -376,6 +414,103 @@ clear_loads!(m::Model, body::Integer) = check(m, mc_clear_loads(m, body))
 function set_contact!(m::Model, body::Integer, edges::AbstractMatrix{<:Integer})
     checkshape(edges, (2, size(edges, 2)), "edges")
     check(m, mc_set_contact(m, body, size(edges, 2), ids(edges)))
+end
+
+# ---- host bodies: a legacy program's own matrices ----------------------------------------------
+
+"""
+    set_host_body!(m, body, xy, equations, n_equations)
+
+Makes `body` a host body (no cells): `xy` 2×n_nodes, the nodes the contact surface and the rigid
+modes need; `equations` 2×n_nodes, the host's equation number of each node's x and y freedom
+counted from the index base (1 by default: Smith and Griffiths' `nf` after numbering, 0 meaning
+restrained, can be passed as it is; a number below the base: no equation); `n_equations` the size
+of the host's system.
+"""
+function set_host_body!(m::Model, body::Integer, xy::AbstractMatrix{<:Real}, equations::AbstractMatrix{<:Integer},
+                        n_equations::Integer)
+    size(xy, 1) == 2 || argerror("xy must be 2×n_nodes, got $(size(xy))")
+    checkshape(equations, (2, size(xy, 2)), "equations")
+    x, eq = reals(xy), ids(equations)
+    check(m, mc_set_host_body(m, body, size(x, 2), x, eq, n_equations))
+    if body in (1, 2)
+        m.n_nodes[body] = size(x, 2)
+        m.n_cells[body] = 0
+        m.n_equations[body] = n_equations
+    end
+    return nothing
+end
+
+"""
+    add_stiffness!(m, body, K; storage=MC_MATRIX_FULL)
+    add_stiffness!(m, body, rows, cols, values; storage=MC_MATRIX_FULL)
+
+Adds entries to a host body's stiffness (repeated calls add, duplicates are summed). `K`: a
+`SparseMatrixCSC` (its stored entries) or any other matrix (converted with `sparse`), n_equations
+square, row i being equation i - 1 + the index base; or coordinate vectors `rows`, `cols`
+(equation numbers from the index base; below the base: skipped) and `values`. `storage`:
+`MC_MATRIX_FULL` (both triangles, symmetric to round-off) or `MC_MATRIX_TRIANGLE` (one triangle,
+either, each off-diagonal pair once: e.g. `triu(K)`).
+"""
+function add_stiffness!(m::Model, body::Integer, rows::AbstractVector{<:Integer}, cols::AbstractVector{<:Integer},
+                        values::AbstractVector{<:Real}; storage::Integer=MC_MATRIX_FULL)
+    checkshape(cols, (length(rows),), "cols")
+    checkshape(values, (length(rows),), "values")
+    check(m, mc_add_stiffness(m, body, length(rows), ids(rows), ids(cols), reals(values), storage))
+end
+
+function add_stiffness!(m::Model, body::Integer, K::AbstractMatrix{<:Real}; storage::Integer=MC_MATRIX_FULL)
+    size(K, 1) == size(K, 2) || argerror("the stiffness matrix must be square, got $(size(K))")
+    if body in (1, 2) && m.n_equations[body] > 0 && size(K, 1) != m.n_equations[body]
+        argerror("the stiffness matrix must be $(m.n_equations[body])×$(m.n_equations[body]) " *
+                 "(n_equations of body $body), got $(size(K))")
+    end
+    S = K isa SparseMatrixCSC ? K : sparse(K)
+    I, J, V = findnz(S)
+    shift = m.base - 1  # Julia's row 1 is the equation numbered by the index base
+    add_stiffness!(m, body, I .+ shift, J .+ shift, V; storage=storage)
+end
+
+"""
+    add_element_matrices!(m, body, eltptr, eltvar, a_elt)
+    add_element_matrices!(m, body, g_g, storkm)
+
+Adds element matrices to a host body's stiffness. MUMPS's elemental form: `eltptr` (n_elements
++ 1 entries, counted from the index base), element e's equations
+`eltvar[eltptr[e] - base + 1 : eltptr[e + 1] - base]` (below the base: restrained, skipped),
+`a_elt` each element's square matrix column by column, one after the other. Or elements of one
+size k as Smith and Griffiths store them: `g_g` k×n_elements (a column of equations per element,
+0 = restrained with the default base 1) and `storkm` k×k×n_elements, passed without reshaping.
+"""
+function add_element_matrices!(m::Model, body::Integer, eltptr::AbstractVector{<:Integer},
+                               eltvar::AbstractVector{<:Integer}, a_elt::AbstractVector{<:Real})
+    isempty(eltptr) && argerror("eltptr needs n_elements + 1 entries, got none")
+    first(eltptr) == m.base || argerror("eltptr[1] = $(first(eltptr)), expected the index base $(m.base)")
+    sizes = diff(Int64.(collect(eltptr)))
+    k = findfirst(<(0), sizes)
+    k === nothing || argerror("eltptr[$(k + 1)] = $(eltptr[k + 1]) is below eltptr[$k] = $(eltptr[k])")
+    checkshape(eltvar, (Int(last(eltptr) - m.base),), "eltvar")
+    checkshape(a_elt, (Int(sum(sizes .^ 2)),), "a_elt")
+    check(m, mc_add_element_matrices(m, body, length(eltptr) - 1, ids(eltptr), ids(eltvar), reals(a_elt)))
+end
+
+function add_element_matrices!(m::Model, body::Integer, g_g::AbstractMatrix{<:Integer}, storkm::AbstractArray{<:Real,3})
+    k, n_elements = size(g_g)
+    checkshape(storkm, (k, k, n_elements), "storkm")
+    eltptr = [m.base + k * e for e in 0:n_elements]
+    check(m, mc_add_element_matrices(m, body, n_elements, ids(eltptr), ids(g_g), reals(storkm)))
+end
+
+"""The load of a host body, `f` (n_equations values) in the host's equation order (replaces the previous one)."""
+set_load_vector!(m::Model, body::Integer, f::AbstractVector{<:Real}) =
+    check(m, mc_set_load_vector(m, body, length(f), reals(f)))
+
+"""Candidate contact surface of quadratic edges, `edges` 3×n_edges: end, end, middle. A host
+body's edges run with the body on their left; a mesh body's are boundary edges of cells with
+that middle node."""
+function set_contact_curved!(m::Model, body::Integer, edges::AbstractMatrix{<:Integer})
+    checkshape(edges, (3, size(edges, 2)), "edges")
+    check(m, mc_set_contact_curved(m, body, size(edges, 2), ids(edges)))
 end
 
 set_option_int!(m::Model, option::Integer, value::Integer) = check(m, mc_set_option_int(m, option, value))
@@ -447,6 +582,18 @@ get_stress(m::Model, body::Integer) = per_body(mc_get_stress, m, body, 4, b -> m
 get_nodal_stress(m::Model, body::Integer) = per_body(mc_get_nodal_stress, m, body, 4, b -> m.n_nodes[b], "get_nodal_stress")
 """Support reactions, 2×n_nodes."""
 get_reaction(m::Model, body::Integer) = per_body(mc_get_reaction, m, body, 2, b -> m.n_nodes[b], "get_reaction")
+
+# The length of a body's equation vectors: n_equations (host body) or 2 n_nodes (mesh body).
+equation_count(m::Model, body) = m.n_equations[body] > 0 ? m.n_equations[body] : 2 * m.n_nodes[body]
+
+"""The displacements in equation order: n_equations values for a host body (the host's
+numbering), 2 per node (x, y) for a mesh body."""
+get_equation_solution(m::Model, body::Integer) =
+    vec(per_body(mc_get_equation_solution, m, body, 1, b -> equation_count(m, b), "get_equation_solution"))
+"""The contact forces on the body as a load vector in its equation order (sized as
+`get_equation_solution`): K u = f + r on the free equations."""
+get_contact_load(m::Model, body::Integer) =
+    vec(per_body(mc_get_contact_load, m, body, 1, b -> equation_count(m, b), "get_contact_load"))
 
 """Number of body-1 contact nodes."""
 function get_contact_count(m::Model)

@@ -72,6 +72,10 @@ MC_INTERFACE_AUTO = 0
 MC_INTERFACE_CONDENSED = 1
 MC_INTERFACE_SPARSE = 2
 
+# Storage of mc_add_stiffness: both triangles, or one (either) with each off-diagonal pair once.
+MC_MATRIX_FULL = 1
+MC_MATRIX_TRIANGLE = 2
+
 # Levels of the log callback's messages (mc_log_level).
 MC_LOG_PHASE = 1
 MC_LOG_ITERATION = 2

@@ -6,7 +6,8 @@ import os
 import numpy as np
 
 from . import _library
-from .constants import (INT_INFOS, INT_OPTIONS, MC_ERROR_ARGUMENT, MC_ERROR_STATE, MC_OK, MC_XY)
+from .constants import (INT_INFOS, INT_OPTIONS, MC_ERROR_ARGUMENT, MC_ERROR_STATE, MC_MATRIX_FULL, MC_OK,
+                        MC_XY)
 
 _lib = None
 _lib_path = None
@@ -146,7 +147,9 @@ class Model:
         self._log_callback = None
         self._log_error = None
         self._n_nodes = {}
-        self._n_cells = {}
+        self._n_cells = {}      # 0 for a host body
+        self._n_equations = {}  # host bodies only
+        self._base = 0
         if index_base != 0:
             self.set_index_base(index_base)
 
@@ -196,17 +199,19 @@ class Model:
         return self._lib.mc_errmsg(self._h()).decode()
 
     def _body(self, body, what):
-        """Checks that body is 1 or 2 and has a mesh (whose sizes size the outputs)."""
+        """Checks that body is 1 or 2 and has a mesh or is a host body (whose sizes size the
+        outputs)."""
         if body not in (1, 2):
             raise ArgumentError("body must be 1 or 2, got %r" % (body,))
         if body not in self._n_nodes:
-            raise MortarContactError(MC_ERROR_STATE, "%s: no mesh set for body %d" % (what, body))
+            raise MortarContactError(MC_ERROR_STATE, "%s: no mesh or host body set for body %d" % (what, body))
 
     # ---- the scene -----------------------------------------------------------------
 
     def set_index_base(self, base):
         """Sets the base (0 or 1) of all node, cell and edge ids, in and out."""
         self._check(self._lib.mc_set_index_base(self._h(), int(base)))
+        self._base = int(base)
 
     def set_plane(self, plane, thickness=1.0):
         """``MC_PLANE_STRAIN`` (default), ``MC_PLANE_STRESS`` or ``MC_AXISYMMETRIC``, and the
@@ -226,16 +231,24 @@ class Model:
         self._check(self._lib.mc_set_mesh(self._h(), int(body), n, _dp(xy), nc, cells.shape[1], _ip(cells)))
         self._n_nodes[body] = n
         self._n_cells[body] = nc
+        self._n_equations.pop(body, None)
 
     def n_nodes(self, body):
-        """Number of nodes of ``body``'s mesh."""
+        """Number of nodes of ``body``'s mesh, or that :meth:`set_host_body` gave."""
         self._body(body, "n_nodes")
         return self._n_nodes[body]
 
     def n_cells(self, body):
-        """Number of cells of ``body``'s mesh."""
+        """Number of cells of ``body``'s mesh (0 for a host body)."""
         self._body(body, "n_cells")
         return self._n_cells[body]
+
+    def n_equations(self, body):
+        """Length of ``body``'s equation vectors (:meth:`set_load_vector`,
+        :meth:`get_equation_solution`, :meth:`get_contact_load`): a host body's ``n_equations``,
+        2 per node for a mesh body."""
+        self._body(body, "n_equations")
+        return self._n_equations.get(body, 2 * self._n_nodes[body])
 
     def set_material(self, body, young, poisson):
         """Isotropic material of the whole body: Young's modulus > 0, Poisson's ratio in (-1, 1/2)."""
@@ -303,6 +316,107 @@ class Model:
         nodes = _ids(nodes, (None,), "nodes")
         off = _reals_rows(offset, nodes.shape[0], None, "offset")
         self._check(self._lib.mc_set_gap_offset(self._h(), nodes.shape[0], _ip(nodes), _dp(off)))
+
+    # ---- host bodies: a legacy program's own matrices ---------------------------------------
+
+    def set_host_body(self, body, xy, equations, n_equations):
+        """Makes ``body`` a host body (no cells; ``mc_set_host_body``): ``xy`` (n_nodes, 2) the
+        coordinates of the nodes the contact surface and the rigid modes need, ``equations``
+        (n_nodes, 2) the host's equation number of each node's x and y freedom, counted from the
+        index base (a number below the base: no equation, a restrained or absent freedom), and
+        ``n_equations`` the size of the host's system. Replaces what the body was."""
+        xy = _reals(xy, (None, 2), "xy")
+        eq = _ids(equations, (xy.shape[0], 2), "equations")
+        n_eq = int(n_equations)
+        self._check(self._lib.mc_set_host_body(self._h(), int(body), xy.shape[0], _dp(xy), _ip(eq), n_eq))
+        self._n_nodes[body] = xy.shape[0]
+        self._n_cells[body] = 0
+        self._n_equations[body] = n_eq
+
+    def add_stiffness(self, body, matrix_or_rows, cols=None, values=None, storage=MC_MATRIX_FULL):
+        """Adds entries to a host body's stiffness (``mc_add_stiffness``; repeated calls add).
+
+        Either a matrix: a SciPy sparse matrix or array of any format (converted with
+        ``tocoo()``; row i is equation i counted from the index base) or a dense 2-D array (its
+        non-zero entries); or coordinate arrays ``rows``, ``cols`` (equation numbers counted from
+        the index base; below the base: skipped) and ``values``, of one length. Duplicates are
+        summed. ``storage``: ``MC_MATRIX_FULL`` (both triangles, symmetric to round-off) or
+        ``MC_MATRIX_TRIANGLE`` (one triangle, either, each off-diagonal pair once)."""
+        if cols is None and values is None:
+            matrix = matrix_or_rows
+            if hasattr(matrix, "tocoo"):
+                coo = matrix.tocoo()
+                shape, r, c, v = coo.shape, coo.row, coo.col, coo.data
+            else:
+                dense = _reals(matrix, (None, None), "matrix")
+                shape = dense.shape
+                r, c = np.nonzero(dense)
+                v = dense[r, c]
+            if len(shape) != 2 or shape[0] != shape[1]:
+                raise ArgumentError("the stiffness matrix must be square, got shape %s" % (shape,))
+            if body in self._n_equations and shape[0] != self._n_equations[body]:
+                raise ArgumentError("the stiffness matrix must have shape (%d, %d) (n_equations of body %d), "
+                                    "got %s" % (self._n_equations[body], self._n_equations[body], body, shape))
+            if shape[0] > _I32.max - self._base:
+                raise ArgumentError("the stiffness matrix has more rows than 32-bit equation numbers count")
+            rows = np.asarray(r, dtype=np.int64) + self._base
+            cols = np.asarray(c, dtype=np.int64) + self._base
+            values = v
+        elif cols is None or values is None:
+            raise ArgumentError("add_stiffness takes a matrix, or rows, cols and values")
+        else:
+            rows = matrix_or_rows
+        rows = _ids(rows, (None,), "rows")
+        n = rows.shape[0]
+        cols = _ids(cols, (n,), "cols")
+        vals = _reals(values, (n,), "values")
+        self._check(self._lib.mc_add_stiffness(self._h(), int(body), n, _ip(rows), _ip(cols), _dp(vals),
+                                               int(storage)))
+
+    def add_element_matrices(self, body, eltptr=None, eltvar=None, a_elt=None):
+        """Adds element matrices to a host body's stiffness (``mc_add_element_matrices``).
+
+        MUMPS's elemental form: ``eltptr`` (n_elements + 1,) counted from the index base,
+        ``eltvar`` the equations of element e at ``eltvar[eltptr[e] - base:eltptr[e + 1] - base]``
+        (below the base: restrained, skipped), ``a_elt`` each element's square matrix column by
+        column, one after the other (1-D). Or, elements of one size k, with ``eltptr`` None:
+        ``eltvar`` (n_elements, k) and ``a_elt`` (n_elements, k, k), ``a_elt[e]`` the matrix of
+        element e (Smith and Griffiths' ``g_g`` and ``storkm``, one row per element)."""
+        if eltptr is None:
+            var = _ids(eltvar, (None, None), "eltvar")
+            n_elements, k = var.shape
+            a = _reals(a_elt, (n_elements, k, k), "a_elt")
+            ptr = np.ascontiguousarray(self._base + k * np.arange(n_elements + 1), dtype=np.int64)
+            ptr = _ids(ptr, (n_elements + 1,), "eltptr")
+            var = np.ascontiguousarray(var.reshape(-1))
+            a = np.ascontiguousarray(a.transpose(0, 2, 1).reshape(-1))  # column by column
+        else:
+            ptr = _ids(eltptr, (None,), "eltptr")
+            if ptr.shape[0] < 1:
+                raise ArgumentError("eltptr needs n_elements + 1 entries, got none")
+            if ptr[0] != self._base:
+                raise ArgumentError("eltptr[0] = %d, expected the index base %d" % (ptr[0], self._base))
+            sizes = np.diff(ptr.astype(np.int64))
+            if np.any(sizes < 0):
+                e = int(np.argmax(sizes < 0))
+                raise ArgumentError("eltptr[%d] = %d is below eltptr[%d] = %d" % (e + 1, ptr[e + 1], e, ptr[e]))
+            var = _ids(eltvar, (int(ptr[-1]) - self._base,), "eltvar")
+            a = _reals(a_elt, (int(np.sum(sizes * sizes)),), "a_elt")
+        self._check(self._lib.mc_add_element_matrices(self._h(), int(body), ptr.shape[0] - 1, _ip(ptr), _ip(var),
+                                                      _dp(a)))
+
+    def set_load_vector(self, body, f):
+        """The load of a host body: ``f`` (n_equations,) in the host's equation order (replaces
+        the previous one; :meth:`clear_loads` zeroes it)."""
+        f = _reals(f, (None,), "f")
+        self._check(self._lib.mc_set_load_vector(self._h(), int(body), f.shape[0], _dp(f)))
+
+    def set_contact_curved(self, body, edges):
+        """Candidate contact surface of quadratic edges ``edges`` (n_edges, 3): end, end, middle.
+        A host body's edges run with the body on their left; a mesh body's must be boundary edges
+        of cells with that middle node. Otherwise as :meth:`set_contact`."""
+        edges = _ids(edges, (None, 3), "edges")
+        self._check(self._lib.mc_set_contact_curved(self._h(), int(body), edges.shape[0], _ip(edges)))
 
     # ---- options and solving ---------------------------------------------------------
 
@@ -397,6 +511,24 @@ class Model:
     def get_reaction(self, body):
         """Support reactions of ``body``: (n_nodes, 2), zero at free components."""
         return self._per_body(self._lib.mc_get_reaction, body, True, 2, "get_reaction")
+
+    def _equation_vector(self, fn, body, what):
+        """Calls an equation-order getter into a new (n_equations(body),) float64 array."""
+        self._body(body, what)
+        out = np.empty(self.n_equations(body), dtype=np.float64)
+        self._check(fn(self._h(), int(body), _dp(out)))
+        return out
+
+    def get_equation_solution(self, body):
+        """The displacements in equation order: (n_equations,) for a host body (the host's
+        numbering), (2 n_nodes,) x, y per node for a mesh body."""
+        return self._equation_vector(self._lib.mc_get_equation_solution, body, "get_equation_solution")
+
+    def get_contact_load(self, body):
+        """The contact forces on ``body`` as a load vector in its equation order (sized as
+        :meth:`get_equation_solution`): what a host adds to its residual or reaction output;
+        K u = f + r on the free equations."""
+        return self._equation_vector(self._lib.mc_get_contact_load, body, "get_contact_load")
 
     def get_contact_count(self):
         """Number of body-1 contact-surface nodes (the length of the contact arrays)."""
