@@ -6,7 +6,7 @@ docs_links; registered in docs/docs_tests.cmake).
         Every ```c / ```python block of DOC is a verbatim run of lines of SOURCE (trailing
         blanks ignored), and the "---- step N: title ----" markers of SOURCE are exactly the
         "## Step N: Title" headings of DOC (case ignored). The block language follows SOURCE:
-        python for .py, json for .json, geo for a Gmsh .geo, c otherwise.
+        python for .py, json for .json, geo for a Gmsh .geo, fortran for .f90, c otherwise.
     check_docs.py api HEADER DOC WORKDIR CC [CFLAGS ...] -- LINK ...
         Every MC_API function of HEADER is declared in a ```c block of DOC exactly as in the
         header (whitespace and comments ignored), and every declaration or typedef there is
@@ -43,7 +43,8 @@ def check_sync(pairs):
     for doc, source in pairs:
         text = open(doc, encoding="utf-8").read()
         src = [line.rstrip() for line in open(source, encoding="utf-8").read().split("\n")]
-        language = {".py": "python", ".json": "json", ".geo": "geo"}.get(os.path.splitext(source)[1], "c")
+        language = {".py": "python", ".json": "json", ".geo": "geo", ".f90": "fortran"}.get(
+            os.path.splitext(source)[1], "c")
         found = blocks(text, {language})
         if not found:
             problems.append("%s: no ```%s block quotes %s" % (doc, language, source))
