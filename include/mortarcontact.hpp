@@ -76,7 +76,8 @@ enum class Option : int {
   contact_surface = MC_OPTION_CONTACT_SURFACE,
   feature_angle = MC_OPTION_FEATURE_ANGLE,
   threads = MC_OPTION_THREADS,
-  interface_solver = MC_OPTION_INTERFACE_SOLVER
+  interface_solver = MC_OPTION_INTERFACE_SOLVER,
+  error_estimate = MC_OPTION_ERROR_ESTIMATE
 };
 
 /// Values of Option::method.
@@ -123,7 +124,8 @@ enum class Info : int {
   strain_energy = MC_INFO_STRAIN_ENERGY,
   complementarity = MC_INFO_COMPLEMENTARITY,
   equilibrium = MC_INFO_EQUILIBRIUM,
-  gap_residual = MC_INFO_GAP_RESIDUAL
+  gap_residual = MC_INFO_GAP_RESIDUAL,
+  error_estimate = MC_INFO_ERROR_ESTIMATE
 };
 
 enum class LogLevel : int { phase = MC_LOG_PHASE, iteration = MC_LOG_ITERATION };
@@ -480,6 +482,11 @@ class Model {
   /// 4 per node of the body: xx yy xy zz, each cell's stress at its nodes averaged over the cells.
   void get_nodal_stress(int body, double *sigma) const { check(::mc_get_nodal_stress(get(), body, sigma)); }
   std::vector<double> get_nodal_stress(int body) const { return per_node(body, 4, ::mc_get_nodal_stress); }
+  /// 1 per cell: the cells' error indicators, relative like Info::error_estimate (their squares
+  /// over both bodies add up to its square). Refused (Status::error_state) before a solve, for a
+  /// host body, or when Option::error_estimate is 0.
+  void get_error_indicator(int body, double *eta) const { check(::mc_get_error_indicator(get(), body, eta)); }
+  std::vector<double> get_error_indicator(int body) const { return per_cell(body, 1, ::mc_get_error_indicator); }
   /// 2 per node of the body.
   void get_reaction(int body, double *r) const { check(::mc_get_reaction(get(), body, r)); }
   std::vector<double> get_reaction(int body) const { return per_node(body, 2, ::mc_get_reaction); }

@@ -1,7 +1,7 @@
 // Tests of include/mortarcontact.hpp: ownership (move-only, destroyed once: run under ASan and
 // valgrind as a memcheck test), errors as exceptions with the status and the message, the
 // vector and pointer overloads, the getters' sizes, options (the interface solver forced either
-// way, and which one ran), the log callback, a contact solve (the README's scene: uniform
+// way, and which one ran; the error estimate on and off), the log callback, a contact solve (the README's scene: uniform
 // pressure 0.1 transmitted exactly), and the same scene with body 1 a host body (its stiffness
 // assembled here, given as coordinate entries in both storages and as element matrices).
 // Whether every C function and constant has its wrapper: check_cxx_wrapper.py (cxx_wrapper_coverage).
@@ -114,6 +114,7 @@ void test_sizes_checked_before_the_c_call() {
   EXPECT_ERROR(mc::Status::error_argument, m.set_gap_offset({0, 1}, {0.1}));
   EXPECT_ERROR(mc::Status::error_state, m.get_stress(2));  // body 2 has no mesh
   EXPECT_ERROR(mc::Status::error_state, m.get_nodal_stress(2));
+  EXPECT_ERROR(mc::Status::error_state, m.get_error_indicator(2));
 }
 
 void test_move_only_ownership() {
@@ -207,6 +208,62 @@ void test_interface_solver_forced() {
   m.solve();
   const std::int64_t ran = m.get_info_int(mc::Info::interface_solver);
   EXPECT(ran == MC_INTERFACE_CONDENSED || ran == MC_INTERFACE_SPARSE);  // automatic: one of the two
+}
+
+// Info::error_estimate and get_error_indicator (Option::error_estimate, on by default): a 3x3 Q1
+// block clamped at the bottom and sheared on its top has a non-uniform stress, so an estimate in
+// (0, 1), whose square the cells' indicators' squares add up to; none with the option 0.
+void test_error_estimate() {
+  const int n = 3;
+  std::vector<double> xy;
+  std::vector<mc_int> cells, bottom, top;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) xy.push_back(double(i) / n), xy.push_back(double(j) / n);
+  for (mc_int j = 0; j < n; ++j)
+    for (mc_int i = 0; i < n; ++i) {
+      const mc_int a = j * (n + 1) + i;
+      cells.insert(cells.end(), {a, a + 1, a + n + 2, a + n + 1});
+    }
+  for (mc_int i = 0; i <= n; ++i) bottom.push_back(i);
+  for (mc_int i = n; i > 0; --i) top.insert(top.end(), {n * (n + 1) + i, n * (n + 1) + i - 1});
+  mc::Model m;
+  m.set_mesh(1, xy, cells, 4);
+  m.set_material(1, 1.0, 0.3);
+  m.fix(1, bottom, mc::Components::xy);
+  m.add_traction(1, top, std::vector<double>(top.size(), 0.1));  // (0.1, 0.1) on each edge
+  EXPECT_ERROR(mc::Status::error_state, m.get_error_indicator(1));  // before a solve
+  m.solve();
+  const double estimate = m.get_info_real(mc::Info::error_estimate);
+  EXPECT(estimate > 0 && estimate < 1);
+  const std::vector<double> eta = m.get_error_indicator(1);
+  EXPECT(eta.size() == static_cast<std::size_t>(n * n));
+  double sum = 0;
+  for (double e : eta) {
+    EXPECT(e >= 0);
+    sum += e * e;
+  }
+  EXPECT(std::fabs(sum - estimate * estimate) <= 1e-12 * estimate * estimate);
+  std::vector<double> eta_ptr(eta.size());
+  m.get_error_indicator(1, eta_ptr.data());
+  EXPECT(eta_ptr == eta);
+  EXPECT_ERROR(mc::Status::error_state, m.get_error_indicator(2));  // no mesh: size unknown
+  EXPECT_ERROR(mc::Status::error_argument, m.get_error_indicator(1, nullptr));
+  EXPECT_ERROR(mc::Status::error_argument, m.set_option_int(mc::Option::error_estimate, 2));
+  EXPECT_ERROR(mc::Status::error_argument, m.set_option_real(mc::Option::error_estimate, 1.0));
+  m.set_option_int(mc::Option::error_estimate, 0);
+  m.solve();
+  EXPECT(m.get_info_real(mc::Info::error_estimate) == 0.0);
+  const std::string message = EXPECT_ERROR(mc::Status::error_state, m.get_error_indicator(1));
+  EXPECT(message.find("MC_OPTION_ERROR_ESTIMATE") != std::string::npos);
+  m.set_option_int(mc::Option::error_estimate, 1);
+  m.solve();
+  EXPECT(m.get_info_real(mc::Info::error_estimate) == estimate && m.get_error_indicator(1) == eta);
+  // the README's scene is a contact patch test: uniform stress, an estimate at round-off
+  mc::Model patch;
+  set_readme_scene(patch);
+  patch.solve();
+  EXPECT(patch.get_info_real(mc::Info::error_estimate) <= 1e-10);
+  EXPECT(patch.get_error_indicator(1).size() == 2 && patch.get_error_indicator(2).size() == 2);
 }
 
 void test_loads_and_material_variants() {
@@ -422,6 +479,8 @@ void test_host_body_matches_mesh_body() {
       // what needs cells is refused by the library, with its message
       EXPECT_ERROR(mc::Status::error_state, m.get_stress(1));
       EXPECT_ERROR(mc::Status::error_state, m.get_reaction(1));
+      EXPECT_ERROR(mc::Status::error_state, m.get_error_indicator(1));
+      EXPECT(m.get_error_indicator(2).size() == 2);  // the mesh body has its indicators
     }
 }
 
@@ -470,6 +529,7 @@ int main() {
   test_readme_scene_vector_overloads();
   test_readme_scene_pointer_overloads_one_based();
   test_interface_solver_forced();
+  test_error_estimate();
   test_loads_and_material_variants();
   test_log_callback();
   test_quadratic_cells();

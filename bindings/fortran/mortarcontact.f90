@@ -6,8 +6,8 @@
 !>    change it back; the wrappers pass ids through unchanged);
 !>  - arrays are assumed-shape, one column per node/cell/edge: xy(2, n_nodes),
 !>    cells(nodes_per_cell, n_cells), edges(2, n_edges), d(3, 3, n_cells), u(2, n_nodes),
-!>    sigma(4, n_cells) (mc_get_nodal_stress: sigma(4, n_nodes)); the counts come from the
-!>    shapes, and each shape is checked before the C call: a wrong one returns
+!>    sigma(4, n_cells) (mc_get_nodal_stress: sigma(4, n_nodes)), eta(n_cells); the counts
+!>    come from the shapes, and each shape is checked before the C call: a wrong one returns
 !>    MC_ERROR_ARGUMENT (MC_ERROR_STATE when the body has no mesh yet) with a message, and
 !>    the C library is not called;
 !>  - functions return the status as a default integer (MC_OK = 0); mc_errmsg(model)
@@ -49,7 +49,7 @@ module mortarcontact
   integer, parameter, public :: MC_OPTION_METHOD = 1, MC_OPTION_TOLERANCE = 2, &
        MC_OPTION_MAX_ITERATIONS = 3, MC_OPTION_ORDERING = 4, MC_OPTION_Q1_INTEGRATION = 6, &
        MC_OPTION_CONTACT_NORMAL = 7, MC_OPTION_CONTACT_SURFACE = 8, MC_OPTION_FEATURE_ANGLE = 9, &
-       MC_OPTION_THREADS = 10, MC_OPTION_INTERFACE_SOLVER = 11
+       MC_OPTION_THREADS = 10, MC_OPTION_INTERFACE_SOLVER = 11, MC_OPTION_ERROR_ESTIMATE = 12
   integer, parameter, public :: MC_METHOD_MORTAR = 0, MC_METHOD_DUAL_MORTAR = 1, &
        MC_METHOD_NODE_TO_SEGMENT = 2
   integer, parameter, public :: MC_NORMAL_NONMORTAR = 0, MC_NORMAL_MORTAR = 1
@@ -66,7 +66,7 @@ module mortarcontact
        MC_INFO_TIME_ASSEMBLY = 20, MC_INFO_TIME_ANALYSIS = 21, MC_INFO_TIME_FACTORIZATION = 22, &
        MC_INFO_TIME_SOLVE = 23, MC_INFO_TIME_CONTACT = 24, MC_INFO_TIME_TOTAL = 25, &
        MC_INFO_STRAIN_ENERGY = 26, MC_INFO_COMPLEMENTARITY = 27, MC_INFO_EQUILIBRIUM = 28, &
-       MC_INFO_GAP_RESIDUAL = 29
+       MC_INFO_GAP_RESIDUAL = 29, MC_INFO_ERROR_ESTIMATE = 30
 
   !> One scene (mc_model). Create with mc_create, free with mc_destroy.
   type, public :: mc_model
@@ -84,7 +84,7 @@ module mortarcontact
   public :: mc_fix, mc_add_traction, mc_add_pressure, mc_add_nodal_force, mc_set_body_force
   public :: mc_clear_loads, mc_set_contact, mc_set_option_int, mc_set_option_real, mc_solve
   public :: mc_get_info_int, mc_get_info_real, mc_get_displacement, mc_get_stress, mc_get_reaction
-  public :: mc_get_nodal_stress
+  public :: mc_get_nodal_stress, mc_get_error_indicator
   public :: mc_get_contact_count, mc_get_contact_nodes, mc_get_contact_pressure
   public :: mc_get_contact_force, mc_get_contact_gap, mc_get_contact_initial_gap
   public :: mc_get_contact_normal
@@ -338,6 +338,12 @@ module mortarcontact
        type(c_ptr), value :: m
        integer(c_int), value :: body
        real(c_double), intent(out) :: sigma(*)
+     end function
+     integer(c_int) function c_mc_get_error_indicator(m, body, eta) bind(C, name="mc_get_error_indicator")
+       import :: c_ptr, c_int, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: body
+       real(c_double), intent(out) :: eta(*)
      end function
      integer(c_int) function c_mc_get_reaction(m, body, r) bind(C, name="mc_get_reaction")
        import :: c_ptr, c_int, c_double
@@ -988,6 +994,19 @@ contains
          '(4, n_nodes)', status)) return
     status = finish(model, c_mc_get_nodal_stress(model%ptr, int(body, c_int), sigma))
   end function mc_get_nodal_stress
+
+  !> The cells' error indicators eta(n_cells), relative like MC_INFO_ERROR_ESTIMATE: their
+  !> squares over both bodies add up to its square. MC_ERROR_STATE before a solve, for a host
+  !> body, or when MC_OPTION_ERROR_ESTIMATE is 0.
+  integer function mc_get_error_indicator(model, body, eta) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    real(mc_real), intent(out) :: eta(:)
+    if (.not. body_ok(model, 'mc_get_error_indicator', body, status)) return
+    if (.not. shape_ok(model, 'mc_get_error_indicator: eta', shape(eta), [model%n_cells(body)], &
+         '(n_cells)', status)) return
+    status = finish(model, c_mc_get_error_indicator(model%ptr, int(body, c_int), eta))
+  end function mc_get_error_indicator
 
   !> Support reactions r(2, n_nodes).
   integer function mc_get_reaction(model, body, r) result(status)

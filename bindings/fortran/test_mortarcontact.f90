@@ -1,6 +1,7 @@
 ! Tests of the Fortran binding: version, strings, the wrapper's size checks and messages, errors
 ! from the library, 1-based ids, a single-body solve, the README's two-square contact scene
 ! with MC_OPTION_INTERFACE_SOLVER forced to each path (MC_INFO_INTERFACE_SOLVER says which ran),
+! the error estimate (MC_INFO_ERROR_ESTIMATE, mc_get_error_indicator, MC_OPTION_ERROR_ESTIMATE),
 ! and that scene with body 1 a host body held as a Smith and Griffiths program holds it (nf, g_g,
 ! storkm, loads(0:neq)), given through each of the host-body calls, index bases 1 and 0.
 ! The contact patch test is examples/fortran/patch_test.f90 (also run by ctest).
@@ -43,7 +44,7 @@ program test_mortarcontact
   real(mc_real) :: xy(2, 4) = reshape([0d0, 0d0, 1d0, 0d0, 1d0, 1d0, 0d0, 1d0], [2, 4])
   integer(mc_int) :: tri(3, 2) = reshape([1, 2, 3, 1, 3, 4], [3, 2])
   real(mc_real) :: u(2, 4), r(2, 4), sigma(4, 2), wrong(2, 3), d(3, 3, 2), big(3, 4)
-  real(mc_real) :: strided(4, 4), sigma_n(4, 4)
+  real(mc_real) :: strided(4, 4), sigma_n(4, 4), eta(2), eta_wrong(4), estimate
   ! one Q8 cell, the unit square: corners counter-clockwise, then the mid-edge nodes
   real(mc_real) :: xy8(2, 8) = reshape([0d0, 0d0, 1d0, 0d0, 1d0, 1d0, 0d0, 1d0, &
        0.5d0, 0d0, 1d0, 0.5d0, 0.5d0, 1d0, 0d0, 0.5d0], [2, 8])
@@ -161,6 +162,25 @@ program test_mortarcontact
      call check(dofs32 > 0 .and. dofs64 == dofs32, 'MC_INFO_DOFS')
      call expect(mc_get_info_real(m, MC_INFO_STRAIN_ENERGY, energy), MC_OK, 'real info')
      call check(energy > 0, 'strain energy > 0')
+     ! the error estimate (on by default): the clamped square's stress is not uniform
+     call expect(mc_get_info_real(m, MC_INFO_ERROR_ESTIMATE, estimate), MC_OK, 'MC_INFO_ERROR_ESTIMATE')
+     call check(estimate > 0 .and. estimate < 1, 'error estimate in (0, 1)')
+     call expect(mc_get_error_indicator(m, 1, eta_wrong), MC_ERROR_ARGUMENT, 'indicators of shape (4)')
+     call check(index(mc_errmsg(m), '(n_cells)') > 0 .and. index(mc_errmsg(m), '(2)') > 0, &
+          'message: ' // mc_errmsg(m))
+     call expect(mc_get_error_indicator(m, 2, eta), MC_ERROR_STATE, 'indicators of body 2 (no mesh)')
+     call expect(mc_get_error_indicator(m, 1, eta), MC_OK, 'mc_get_error_indicator')
+     call check(all(eta >= 0) .and. abs(sum(eta**2) - estimate**2) <= 1d-12 * estimate**2, &
+          'the indicators'' squares add up to the estimate''s square')
+     call expect(mc_set_option_int(m, MC_OPTION_ERROR_ESTIMATE, 2), MC_ERROR_ARGUMENT, 'error estimate 2')
+     call check(index(mc_errmsg(m), 'MC_OPTION_ERROR_ESTIMATE') > 0, 'message: ' // mc_errmsg(m))
+     call expect(mc_set_option_int(m, MC_OPTION_ERROR_ESTIMATE, 0), MC_OK, 'error estimate off')
+     call expect(mc_solve(m), MC_OK, 'mc_solve (no error estimate)')
+     call expect(mc_get_info_real(m, MC_INFO_ERROR_ESTIMATE, estimate), MC_OK, 'MC_INFO_ERROR_ESTIMATE (off)')
+     call check(estimate == 0, 'no error estimate: 0')
+     call expect(mc_get_error_indicator(m, 1, eta), MC_ERROR_STATE, 'indicators with the estimate off')
+     call check(index(mc_errmsg(m), 'MC_OPTION_ERROR_ESTIMATE') > 0, 'message: ' // mc_errmsg(m))
+     call expect(mc_set_option_int(m, MC_OPTION_ERROR_ESTIMATE, 1), MC_OK, 'error estimate on')
   end if
   call expect(mc_set_body_force(m, 1, 0d0, -1d-3), MC_OK, 'mc_set_body_force')
   call expect(mc_add_nodal_force(m, 1, [3], reshape([1d-4, 0d0], [2, 1])), MC_OK, 'mc_add_nodal_force')
@@ -199,6 +219,10 @@ program test_mortarcontact
      call check(all(abs(pressure - 0.1d0) < 1d-12), 'uniform contact pressure 0.1')
      call expect(mc_get_nodal_stress(m, 2, sigma_n), MC_OK, 'mc_get_nodal_stress (contact)')
      call check(all(abs(sigma_n(2, :) + 0.1d0) < 1d-12), 'sigma_yy = -0.1 at the nodes of body 2')
+     ! a contact patch test: the error estimate and every indicator are round-off
+     call expect(mc_get_info_real(m, MC_INFO_ERROR_ESTIMATE, estimate), MC_OK, 'MC_INFO_ERROR_ESTIMATE (contact)')
+     call expect(mc_get_error_indicator(m, 2, eta), MC_OK, 'mc_get_error_indicator (contact)')
+     call check(estimate <= 1d-10 .and. all(eta <= 1d-10), 'error estimate of the patch test: round-off')
      call mc_destroy(m)
   end do
 
@@ -321,6 +345,7 @@ program test_mortarcontact
      call check(all(abs(matmul(kv, sol) - loads(1:) - rload) < 1d-10), trim(line) // ': K u = f + r')
      call check(abs(rload(1) + rload(3) + rload(5) + rload(6) - 0.1d0) < 1d-12, trim(line) // ': contact lifts 0.1')
      call check(mc_get_stress(m, 1, sigma(:, 1:0)) /= MC_OK, 'stresses of a host body refused')
+     call expect(mc_get_error_indicator(m, 1, eta(1:0)), MC_ERROR_STATE, 'indicators of a host body refused')
      if (input == 3) then  ! full storage must be symmetric, summed over the calls: mc_solve checks
         call expect(mc_add_stiffness(m, 1, [1, 2], [2, 1], [1d-3, 2d-3]), MC_OK, 'an asymmetric pair added')
         call expect(mc_solve(m), MC_ERROR_ARGUMENT, 'mc_solve of an asymmetric full matrix')

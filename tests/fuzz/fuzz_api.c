@@ -44,6 +44,7 @@
 #pragma weak mc_set_log_callback
 #pragma weak mc_write_vtu
 #pragma weak mc_get_nodal_stress
+#pragma weak mc_get_error_indicator
 #pragma weak mc_set_host_body
 #pragma weak mc_add_stiffness
 #pragma weak mc_add_element_matrices
@@ -221,7 +222,7 @@ static void *exact(size_t count, size_t size) {
 static void query_all(harness *h) {
   mc_model *m = h->m;
   int body, info;
-  for (info = 0; info <= 30; ++info) {
+  for (info = 0; info <= 31; ++info) { /* 0 and 31 (past MC_INFO_ERROR_ESTIMATE = 30): bad infos */
     int64_t iv;
     double rv;
     CALL(mc_get_info_int(m, info, &iv));
@@ -232,12 +233,15 @@ static void query_all(harness *h) {
     size_t nodes = b && b->meshed ? (size_t)b->n_nodes : 0, cells = b && b->meshed ? (size_t)b->n_cells : 0;
     double *u = exact(2 * nodes, sizeof(double)), *sigma = exact(4 * cells, sizeof(double));
     double *sigma_n = exact(4 * nodes, sizeof(double)), *r = exact(2 * nodes, sizeof(double));
+    double *eta = exact(cells, sizeof(double));
     mc_status su = CALL(mc_get_displacement(m, body, u));
     CALL(mc_get_stress(m, body, sigma));
     if (mc_get_nodal_stress) CALL(mc_get_nodal_stress(m, body, sigma_n));
+    if (mc_get_error_indicator && CALL(mc_get_error_indicator(m, body, eta)) == MC_OK && !(b && b->meshed && !b->host))
+      fuzz_fail("error indicators of a body without cells", "mc_get_error_indicator");
     CALL(mc_get_reaction(m, body, r));
     if (su == MC_OK && !(b && b->meshed)) fuzz_fail("displacements of a body without a mesh", "mc_get_displacement");
-    free(u), free(sigma), free(sigma_n), free(r);
+    free(u), free(sigma), free(sigma_n), free(r), free(eta);
     {
       /* equation vectors: n_equations of a host body, 2 per node of a mesh body */
       size_t n_eq = b && b->meshed ? (b->host ? (size_t)b->n_equations : 2 * (size_t)b->n_nodes) : 0;
@@ -302,6 +306,7 @@ static void null_calls(harness *h) {
   CALL(mc_get_displacement(m, 1, v));
   CALL(mc_get_stress(m, 1, v));
   if (mc_get_nodal_stress) CALL(mc_get_nodal_stress(m, 1, v));
+  if (mc_get_error_indicator) CALL(mc_get_error_indicator(m, 1, v));
   CALL(mc_get_reaction(m, 1, v));
   CALL(mc_get_contact_count(m, &id));
   CALL(mc_get_contact_nodes(m, &id));
@@ -331,6 +336,10 @@ static void null_calls(harness *h) {
   CALL(mc_get_displacement(m, 1, NULL));
   CALL(mc_get_stress(m, 2, NULL));
   if (mc_get_nodal_stress) CALL(mc_get_nodal_stress(m, 2, NULL));
+  if (mc_get_error_indicator) {
+    CALL(mc_get_error_indicator(m, 1, NULL));
+    CALL(mc_get_error_indicator(m, 2, NULL));
+  }
   CALL(mc_get_reaction(m, 1, NULL));
   CALL(mc_get_contact_count(m, NULL));
   CALL(mc_get_contact_nodes(m, NULL));
@@ -365,8 +374,8 @@ enum {
   OP_CLEAR_LOADS,    /* body                                                        */
   OP_CONTACT_SIDE,   /* body, byte side, byte first, byte count (0: all)            */
   OP_CONTACT_RAW,    /* body, count n, 2n ids                                       */
-  OP_OPTION_INT,     /* byte option (b % 12), byte kind: < 200: b % 6 - 1; else 8 raw bytes */
-  OP_OPTION_REAL,    /* byte option (b % 12), real value                            */
+  OP_OPTION_INT,     /* byte option (b % 13), byte kind: < 200: b % 6 - 1; else 8 raw bytes */
+  OP_OPTION_REAL,    /* byte option (b % 13), real value                            */
   OP_SOLVE,          /* - (then queries every result)                               */
   OP_QUERY,          /* - (queries every result)                                    */
   OP_GAP_OFFSET,     /* count n, n ids, n reals (needs mc_set_gap_offset)           */
@@ -624,7 +633,7 @@ static void op_contact_raw(harness *h, stream *s) {
 
 static void op_option_int(harness *h, stream *s) {
   mc_model *m = h->m;
-  int option = read_u8(s) % 13; /* 0 .. 12: every option (MC_OPTION_INTERFACE_SOLVER = 11) and bad ones */
+  int option = read_u8(s) % 13; /* 0 .. 12: every option (MC_OPTION_ERROR_ESTIMATE = 12) and bad ones (0, 5) */
   uint8_t kind = read_u8(s);
   /* -1 .. 4: every value of the enum options (MC_INTERFACE_AUTO .. _SPARSE = 0 .. 2) and bad ones */
   int64_t value = kind < 200 ? (int64_t)(kind % 6) - 1 : (int64_t)read_bytes(s, 8);
@@ -955,7 +964,7 @@ static void run(harness *h, stream *s) {
       case OP_CONTACT_RAW: op_contact_raw(h, s); break;
       case OP_OPTION_INT: op_option_int(h, s); break;
       case OP_OPTION_REAL: {
-        int option = read_u8(s) % 13; /* 0 .. 12: every option (MC_OPTION_INTERFACE_SOLVER = 11) and bad ones */
+        int option = read_u8(s) % 13; /* 0 .. 12: every option (MC_OPTION_ERROR_ESTIMATE = 12) and bad ones (0, 5) */
         CALL(mc_set_option_real(m, option, read_real(s)));
         break;
       }

@@ -194,6 +194,11 @@ SEEDS = {
     "interface_solver": stack() + option_int(11, 2) + solve() + traction_side(1, TOP, 0.5, -2) + solve()
     + option_int(11, 1) + solve() + option_int(11, 3) + option_int(11, -1) + option_real(11, 1.0)
     + option_int(11, 0) + solve() + op("QUERY"),
+    # MC_OPTION_ERROR_ESTIMATE (12): on (the default) for a contact solve, off (the indicators are
+    # refused), the bad values 2 and -1 and the real-valued call, on again; NULL outputs
+    "error_estimate": stack() + solve() + option_int(12, 0) + solve() + option_int(12, 2)
+    + option_int(12, -1) + option_real(12, 1.0) + op("QUERY") + option_int(12, 1)
+    + traction_side(1, TOP, 0.5, -2) + solve() + op("NULLS"),
     # quadratic cells (issue 21): T6 pressed on Q8, then Q9 on P1 with a curved (bowed) body 1,
     # dual mortar (refused on a quadratic body 1), node-to-segment, both interface solvers, and a
     # corrupted Q9 grid (a swapped mid-edge node folds its cell)

@@ -46,9 +46,10 @@ export Model, MortarContactError, version_string, version_number, status_string
 export set_index_base!, set_plane!, set_mesh!, set_material!, set_cell_elasticity!, fix!,
        add_traction!, add_pressure!, add_nodal_force!, set_body_force!, clear_loads!, set_contact!,
        set_option_int!, set_option_real!, solve!, get_info_int, get_info_real, get_displacement,
-       get_stress, get_nodal_stress, get_reaction, get_contact_count, get_contact_nodes,
-       get_contact_pressure, get_contact_force, get_contact_gap, get_contact_initial_gap,
-       get_contact_normal, errmsg, set_gap_offset!, set_log_callback!, write_vtu
+       get_stress, get_nodal_stress, get_error_indicator, get_reaction, get_contact_count,
+       get_contact_nodes, get_contact_pressure, get_contact_force, get_contact_gap,
+       get_contact_initial_gap, get_contact_normal, errmsg, set_gap_offset!, set_log_callback!,
+       write_vtu
 export set_host_body!, add_stiffness!, add_element_matrices!, set_load_vector!, get_equation_solution,
        get_contact_load, set_contact_curved!
 
@@ -115,6 +116,7 @@ const MC_OPTION_CONTACT_SURFACE = Cint(8)
 const MC_OPTION_FEATURE_ANGLE = Cint(9)
 const MC_OPTION_THREADS = Cint(10)
 const MC_OPTION_INTERFACE_SOLVER = Cint(11)
+const MC_OPTION_ERROR_ESTIMATE = Cint(12)
 const MC_METHOD_MORTAR = Cint(0)
 const MC_METHOD_DUAL_MORTAR = Cint(1)
 const MC_METHOD_NODE_TO_SEGMENT = Cint(2)
@@ -151,6 +153,7 @@ const MC_INFO_STRAIN_ENERGY = Cint(26)
 const MC_INFO_COMPLEMENTARITY = Cint(27)
 const MC_INFO_EQUILIBRIUM = Cint(28)
 const MC_INFO_GAP_RESIDUAL = Cint(29)
+const MC_INFO_ERROR_ESTIMATE = Cint(30)
 
 for name in names(@__MODULE__; all=true)
     startswith(String(name), "MC_") && @eval export $name
@@ -236,6 +239,8 @@ mc_get_stress(m, body, sigma) =
     ccall((:mc_get_stress, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Ptr{Cdouble}), m, body, sigma)
 mc_get_nodal_stress(m, body, sigma) =
     ccall((:mc_get_nodal_stress, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Ptr{Cdouble}), m, body, sigma)
+mc_get_error_indicator(m, body, eta) =
+    ccall((:mc_get_error_indicator, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Ptr{Cdouble}), m, body, eta)
 mc_get_reaction(m, body, r) =
     ccall((:mc_get_reaction, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Ptr{Cdouble}), m, body, r)
 mc_get_contact_count(m, n) =
@@ -580,6 +585,11 @@ get_displacement(m::Model, body::Integer) = per_body(mc_get_displacement, m, bod
 get_stress(m::Model, body::Integer) = per_body(mc_get_stress, m, body, 4, b -> m.n_cells[b], "get_stress")
 """Stresses at the nodes, 4×n_nodes (xx, yy, xy, zz): each cell's stress at its nodes, averaged over the cells."""
 get_nodal_stress(m::Model, body::Integer) = per_body(mc_get_nodal_stress, m, body, 4, b -> m.n_nodes[b], "get_nodal_stress")
+"""The cells' error indicators, a vector of n_cells: relative like `MC_INFO_ERROR_ESTIMATE`, their squares
+over both bodies adding up to its square. `MC_ERROR_STATE` before a solve, for a host body, or when
+`MC_OPTION_ERROR_ESTIMATE` is 0."""
+get_error_indicator(m::Model, body::Integer) =
+    vec(per_body(mc_get_error_indicator, m, body, 1, b -> m.n_cells[b], "get_error_indicator"))
 """Support reactions, 2×n_nodes."""
 get_reaction(m::Model, body::Integer) = per_body(mc_get_reaction, m, body, 2, b -> m.n_nodes[b], "get_reaction")
 

@@ -135,6 +135,7 @@ PROTOTYPES = {
     "mc_get_displacement": (_i, [_p, _i, _pd]),
     "mc_get_stress": (_i, [_p, _i, _pd]),
     "mc_get_nodal_stress": (_i, [_p, _i, _pd]),
+    "mc_get_error_indicator": (_i, [_p, _i, _pd]),
     "mc_get_reaction": (_i, [_p, _i, _pd]),
     "mc_get_contact_count": (_i, [_p, _pi32]),
     "mc_get_contact_nodes": (_i, [_p, _pi32]),

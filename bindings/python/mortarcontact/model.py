@@ -508,6 +508,13 @@ class Model:
         evaluated at its nodes, averaged over the cells sharing a node."""
         return self._per_body(self._lib.mc_get_nodal_stress, body, True, 4, "get_nodal_stress")
 
+    def get_error_indicator(self, body):
+        """Error indicators of ``body``'s cells: (n_cells,), relative like
+        ``MC_INFO_ERROR_ESTIMATE``, whose squares over both bodies add up to its square (refine
+        where they are large). ``MC_ERROR_STATE`` before a solve, for a host body, or when
+        ``MC_OPTION_ERROR_ESTIMATE`` is 0."""
+        return self._per_body(self._lib.mc_get_error_indicator, body, False, 1, "get_error_indicator").reshape(-1)
+
     def get_reaction(self, body):
         """Support reactions of ``body``: (n_nodes, 2), zero at free components."""
         return self._per_body(self._lib.mc_get_reaction, body, True, 2, "get_reaction")

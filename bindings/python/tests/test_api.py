@@ -170,7 +170,7 @@ class TestModel(unittest.TestCase):
             with self.assertRaises(mc.MortarContactError) as cm:
                 m.get_displacement(1)  # no solve yet
             self.assertEqual(cm.exception.status, mc.MC_ERROR_STATE)
-            for getter in (m.get_stress, m.get_nodal_stress):
+            for getter in (m.get_stress, m.get_nodal_stress, m.get_error_indicator):
                 with self.assertRaises(mc.MortarContactError) as cm:
                     getter(1)  # no solve yet
                 self.assertEqual(cm.exception.status, mc.MC_ERROR_STATE)
@@ -208,6 +208,17 @@ class TestModel(unittest.TestCase):
                 self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
                 self.assertIn("MC_OPTION_INTERFACE_SOLVER", str(cm.exception))
             self.assertEqual(m.get_info(mc.MC_INFO_INTERFACE_SOLVER), 0)  # an integer info; no solve yet
+            # the error estimate: an integer option, 1 (default) or 0
+            for on in (0, 1):
+                m.set_option(mc.MC_OPTION_ERROR_ESTIMATE, on)
+            with self.assertRaises(mc.MortarContactError) as cm:
+                m.set_option(mc.MC_OPTION_ERROR_ESTIMATE, 2)
+            self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
+            self.assertIn("MC_OPTION_ERROR_ESTIMATE", str(cm.exception))
+            with self.assertRaises(mc.MortarContactError) as cm:
+                m.set_option_real(mc.MC_OPTION_ERROR_ESTIMATE, 1.0)
+            self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
+            self.assertIsInstance(m.get_info(mc.MC_INFO_ERROR_ESTIMATE), float)  # a real info
 
     def test_single_body_solve_one_based(self):
         """A unit square, bottom clamped, pulled up on top; ids 1-based. No contact."""
@@ -257,6 +268,43 @@ class TestModel(unittest.TestCase):
                 self.assertEqual(sn.shape, (len(xy), 4))
                 np.testing.assert_allclose(s[0, :3], [sxx, syy, 0.0], rtol=0, atol=1e-12)
                 np.testing.assert_allclose(sn, np.tile(s, (len(xy), 1)), rtol=0, atol=1e-12)
+
+    def test_error_estimate(self):
+        """MC_INFO_ERROR_ESTIMATE and get_error_indicator: a 3x3 Q1 block clamped at the bottom
+        and sheared on its top has a non-uniform stress, so an estimate in (0, 1), whose square
+        the cells' indicators' squares add up to; MC_OPTION_ERROR_ESTIMATE = 0 turns it off."""
+        n = 3
+        xy = np.array([[i / n, j / n] for j in range(n + 1) for i in range(n + 1)])
+        cells = np.array([[a, a + 1, a + n + 2, a + n + 1] for a in (j * (n + 1) + i for j in range(n) for i in range(n))])
+        top = np.array([[n * (n + 1) + i, n * (n + 1) + i - 1] for i in range(n, 0, -1)])
+        with mc.Model() as m:
+            m.set_mesh(1, xy, cells)
+            m.set_material(1, 1.0, 0.3)
+            m.fix(1, np.arange(n + 1), mc.MC_XY)
+            m.add_traction(1, top, (0.1, 0.1))
+            m.solve()
+            estimate = m.get_info(mc.MC_INFO_ERROR_ESTIMATE)
+            self.assertGreater(estimate, 0.0)
+            self.assertLess(estimate, 1.0)
+            eta = m.get_error_indicator(1)
+            self.assertEqual(eta.shape, (n * n,))
+            self.assertEqual(eta.dtype, np.float64)
+            self.assertTrue(np.all(eta >= 0))
+            self.assertAlmostEqual(np.sum(eta ** 2), estimate ** 2, delta=1e-12 * estimate ** 2)
+            with self.assertRaises(mc.MortarContactError) as cm:
+                m.get_error_indicator(2)  # no mesh
+            self.assertEqual(cm.exception.status, mc.MC_ERROR_STATE)
+            m.set_option(mc.MC_OPTION_ERROR_ESTIMATE, 0)
+            m.solve()
+            self.assertEqual(m.get_info(mc.MC_INFO_ERROR_ESTIMATE), 0.0)
+            with self.assertRaises(mc.MortarContactError) as cm:
+                m.get_error_indicator(1)
+            self.assertEqual(cm.exception.status, mc.MC_ERROR_STATE)
+            self.assertIn("MC_OPTION_ERROR_ESTIMATE", cm.exception.message)
+            m.set_option(mc.MC_OPTION_ERROR_ESTIMATE, 1)
+            m.solve()
+            self.assertEqual(m.get_info(mc.MC_INFO_ERROR_ESTIMATE), estimate)
+            np.testing.assert_array_equal(m.get_error_indicator(1), eta)
 
     @staticmethod
     def pulled_square(m):

@@ -42,6 +42,12 @@ class TestPatch(unittest.TestCase):
             self.assertEqual(m.get_info(mc.MC_INFO_ACTIVE_NODES), int(np.sum(m.get_contact_force() > 0)))
             self.assertLess(m.get_info(mc.MC_INFO_COMPLEMENTARITY), 1e-8)
             self.assertLess(m.get_info(mc.MC_INFO_GAP_RESIDUAL), 1e-10)  # a real info (float), at round-off
+            # uniform stress: the error estimate is round-off, and so is every cell's indicator
+            self.assertLess(m.get_info(mc.MC_INFO_ERROR_ESTIMATE), 1e-10)
+            for body in (1, 2):
+                eta = m.get_error_indicator(body)
+                self.assertEqual(eta.shape, (m.n_cells(body),))
+                self.assertLess(eta.max(), 1e-10)
 
     def test_mortar(self):
         self.check(mc.MC_METHOD_MORTAR, 0)

@@ -396,7 +396,7 @@ class TestHostBody(unittest.TestCase):
             host.mesh_body_2(m)
             m.solve()
             self.assert_as_meshes(m)
-            for getter in (m.get_stress, m.get_nodal_stress, m.get_reaction):
+            for getter in (m.get_stress, m.get_nodal_stress, m.get_error_indicator, m.get_reaction):
                 with self.assertRaises(mc.MortarContactError) as cm:
                     getter(1)  # they need cells: the library says why
                 self.assertEqual(cm.exception.status, mc.MC_ERROR_STATE)
