@@ -49,7 +49,9 @@
  * time from which on each kind's error stays below a level, and their ratios to P1's.
  *
  * usage: hertz_quadratic [--repeat n] [--ratio r] [--ref KIND:h1] [--check KIND:h1 ...]
- *                        [--json file] [--quick] [KIND:h1,h1,... ...]
+ *                        [--json file] [--quick] [--global] [KIND:h1,h1,... ...]
+ *   --global: the energy error over both bodies whole instead of the box around the contact, and
+ *   beside it MC_INFO_ERROR_ESTIMATE and its effectivity (estimate / error)
  *   KIND: P1, Q1, T6, Q8, Q9. Defaults: see default_runs below (about 70 s with --repeat 5,
  *   1.6 GB peak for the reference). --quick: two coarse sizes of each kind against a coarse
  *   reference, one run each (ctest bench_hertz_quadratic_quick: that the program runs, 0.2 s;
@@ -83,6 +85,7 @@ typedef struct solution {
   char *vertex;    /* whether each is a cell corner (a multiplier node of a quadratic body 1) */
   double *u[2];  /* displacements, kept until the local error is measured */
   double local_err2, local_ref2; /* local_energy() against the reference */
+  double estimate;               /* MC_INFO_ERROR_ESTIMATE (relative) */
   long far_points;
 } solution;
 
@@ -470,6 +473,7 @@ static void run_once(const hertz_scene *s, int last, solution *r, double *t_wall
     mc_get_info_int(m, MC_INFO_ACTIVE_NODES, &v), r->active = v;
     mc_get_info_real(m, MC_INFO_TIME_TOTAL, &r->t_library);
     mc_get_info_real(m, MC_INFO_STRAIN_ENERGY, &r->energy);
+    mc_get_info_real(m, MC_INFO_ERROR_ESTIMATE, &r->estimate);
     r->n = (int)n, r->positions = n;
     r->x = malloc(sizeof(double) * n), r->p = malloc(sizeof(double) * n), r->vertex = malloc((size_t)n + 1);
     char *corner = calloc((size_t)s->body[0].n_nodes, 1);
@@ -634,6 +638,10 @@ int main(int argc, char **argv) {
     else if (!strcmp(argv[i], "--ratio") && i + 1 < argc) ratio = atof(argv[++i]);
     else if (!strcmp(argv[i], "--json") && i + 1 < argc) json_path = argv[++i];
     else if (!strcmp(argv[i], "--quick")) quick = 1;
+    else if (!strcmp(argv[i], "--global")) {
+      /* the energy error over both bodies whole (for the error estimate's effectivity) */
+      region[0] = -4, region[1] = 4, region[2] = -4, region[3] = 1;
+    }
     else if (!strcmp(argv[i], "--ref") && i + 1 < argc) {
       if (parse_spec(argv[++i], &ref, 1) != 1) goto usage;
       explicit_ref = 1;
@@ -736,6 +744,12 @@ int main(int argc, char **argv) {
     printf("| %s | %g | %ld | %.4f | %+.3f %% | %+.3f %% | %+.2f %% | %+.2f %% | %+.3f %% | %.2e | %.2e | %.2e |\n",
            kind_name(r->npc), r->h1, r->dofs, r->t_wall, 100 * err_p0[i], 100 * rel(r->p0, p0_hertz), 100 * err_a[i],
            100 * rel(r->a_vertex, a_hertz), 100 * err_am[i], err_l2[i], err_energy[i], err_w[i]);
+    if (region[0] == -4) {
+      /* --global: the estimate against the energy error of both bodies (relative to the
+         reference's energy norm; the estimate's own normalization is sqrt(2W + eta^2), the same
+         to the error's second order) */
+      printf("|  | estimate %.3e | effectivity %.3f |\n", r->estimate, r->estimate / err_energy[i]);
+    }
     fflush(stdout);
     if (json) {
       fprintf(json,
