@@ -103,7 +103,9 @@ std::vector<double> patch_recovered_stresses(const Mesh &mesh, const std::vector
   std::vector<int> sample_start(size_t(n_cells) + 1, 0);
   std::vector<Point> sample_x;
   std::vector<double> sample_sigma;
-  sample_x.reserve(size_t(n_cells) * 4), sample_sigma.reserve(size_t(n_cells) * 16);
+  // (reserved for the most a cell samples: no regrowth of these large arrays)
+  const size_t per_cell = npc == 3 ? (measure.axisymmetric ? 3 : 1) : npc == 6 ? 3 : 4;
+  sample_x.reserve(size_t(n_cells) * per_cell), sample_sigma.reserve(size_t(n_cells) * per_cell * 4);
   Point p[kMaxCellNodes], x[kMaxCellPoints];
   double ue[2 * kMaxCellNodes], sigma[4 * kMaxCellPoints];
   for (int c = 0; c < n_cells; ++c) {
@@ -128,7 +130,9 @@ std::vector<double> patch_recovered_stresses(const Mesh &mesh, const std::vector
   // The fit of each corner node: its cells' samples; too few (a boundary node with one or two
   // cells), then also the cells around those cells' corners.
   const size_t wanted = quadratic ? 12 : 6;
-  std::vector<PatchFit> fits(n_nodes);
+  // A linear mesh's fits are evaluated at once; a quadratic mesh's are kept for its middles.
+  std::vector<PatchFit> fits(quadratic ? size_t(n_nodes) : 0);
+  std::vector<double> out(4 * size_t(n_nodes), 0.0);
   std::vector<int> patch, mark(n_cells, -1);
   std::vector<Point> px;
   std::vector<double> psigma;
@@ -150,11 +154,10 @@ std::vector<double> patch_recovered_stresses(const Mesh &mesh, const std::vector
           for (int k = cell_start[j]; k < cell_start[j + 1]; ++k) take(node_cells[k]);
         }
     }
-    fits[i] = fit_patch(mesh.node(i), quadratic, px, psigma);
+    const PatchFit fit = fit_patch(mesh.node(i), quadratic, px, psigma);
+    fit.evaluate(mesh.node(i), &out[4 * size_t(i)]);
+    if (quadratic) fits[i] = fit;
   }
-  std::vector<double> out(4 * size_t(n_nodes), 0.0);
-  for (int i = 0; i < n_nodes; ++i)
-    if (cell_start[i] < cell_start[i + 1]) fits[i].evaluate(mesh.node(i), &out[4 * size_t(i)]);
   if (!quadratic) return out;
   // Middles and centres: the mean of their corners' polynomials there.
   std::vector<char> done(n_nodes, 0);
