@@ -6,6 +6,7 @@
 #include "cell_shapes.hpp"
 #include "plane_vectors.hpp"
 #include "vtu_writer.hpp"
+#include <algorithm>
 #include <cfloat>
 #include <cstring>
 
@@ -498,7 +499,8 @@ mc_status mc_get_error_indicator(const mc_model *m, int body, double *eta) {
     if (!model.options.error_estimate)
       fail(MC_ERROR_STATE, "no error estimate: MC_OPTION_ERROR_ESTIMATE is 0 (set it to 1 and solve again)");
     require_pointer(eta, "eta");
-    std::memcpy(eta, b.error_indicator.data(), b.error_indicator.size() * sizeof(double));
+    std::fill(eta, eta + b.mesh.n_cells(), 0.0);  // (a body the estimate did not reach: 0)
+    if (!b.error_indicator.empty()) std::memcpy(eta, b.error_indicator.data(), b.error_indicator.size() * sizeof(double));
   });
 }
 

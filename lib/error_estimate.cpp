@@ -141,7 +141,10 @@ void Model::estimate_error() {
   for (int b = 0; b < 2; ++b)
     for (double e : cell_eta2[b]) eta2 += e;
   const double denominator = 2 * infos.energy + eta2;
-  if (!(denominator > 0)) return;  // no deformation, no error
+  if (!(denominator > 0)) {  // no deformation, no error: every indicator 0
+    for (int b = 0; b < 2; ++b) body[b].error_indicator.assign(cell_eta2[b].size(), 0.0);
+    return;
+  }
   infos.error_estimate = std::sqrt(eta2 / denominator);
   for (int b = 0; b < 2; ++b) {
     body[b].error_indicator.resize(cell_eta2[b].size());
