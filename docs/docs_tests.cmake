@@ -4,7 +4,8 @@
 #   docs_tutorial_sync   the code blocks of docs/tutorial_{c,python,axisymmetric}.md are verbatim
 #                        excerpts of the programs, and their "Step N" headings match the programs'
 #                        steps; the .geo, .json and Python blocks of docs/tutorial_quadratic.md are
-#                        excerpts of examples/runner/hertz_quadratic/; the Fortran blocks of
+#                        excerpts of examples/runner/hertz_quadratic/, the .json blocks of
+#                        docs/tutorial_adaptive.md of examples/runner/hertz_adaptive/; the Fortran blocks of
 #                        docs/tutorial_legacy.md are excerpts of examples/legacy/contact_blocks.f90
 #                        (its program runs as tutorial_legacy, examples/legacy/CMakeLists.txt)
 #   docs_api             docs/api.md declares every header function exactly as the header does;
@@ -48,6 +49,7 @@ if(MC_DOCS_PYTHON)
             ${_mc_docs}/tutorial_quadratic.md ${PROJECT_SOURCE_DIR}/examples/runner/hertz_quadratic/hertz_quadratic.geo
             ${_mc_docs}/tutorial_quadratic.md ${PROJECT_SOURCE_DIR}/examples/runner/hertz_quadratic/hertz_quadratic.json
             ${_mc_docs}/tutorial_quadratic.md ${PROJECT_SOURCE_DIR}/examples/runner/hertz_quadratic/read_results.py
+            ${_mc_docs}/tutorial_adaptive.md ${PROJECT_SOURCE_DIR}/examples/runner/hertz_adaptive/hertz_adaptive.json
             ${_mc_docs}/tutorial_legacy.md ${PROJECT_SOURCE_DIR}/examples/legacy/contact_blocks.f90)
   set(_mc_docs_cflags -std=c99 -Wall -Wextra -Werror -I${PROJECT_SOURCE_DIR}/include)
   if(MC_SANITIZE)
@@ -63,6 +65,7 @@ if(MC_DOCS_PYTHON)
     COMMAND ${MC_DOCS_PYTHON} ${_mc_check_docs} links ${_mc_docs}/README.md ${_mc_docs}/theory.md
             ${_mc_docs}/api.md ${_mc_docs}/tutorial_c.md ${_mc_docs}/tutorial_python.md
             ${_mc_docs}/tutorial_axisymmetric.md ${_mc_docs}/tutorial_quadratic.md ${_mc_docs}/tutorial_legacy.md
+            ${_mc_docs}/tutorial_adaptive.md
             ${_mc_docs}/scene_format.md)
   set_tests_properties(docs_tutorial_sync docs_api docs_theory_names docs_links PROPERTIES LABELS "docs")
 else()

@@ -1,10 +1,13 @@
 // mortarcontact-run - solves a contact scene described by a JSON file (docs/scene_format.md)
 // on Gmsh meshes, through the public C API of mortarcontact only.
 //
-//   mortarcontact-run [--quiet | --verbose] scene.json
+//   mortarcontact-run [--quiet | --verbose] [--gmsh PATH] scene.json
 //
 // Exit codes: 0 solved; 1 the solve (or writing an output) failed, the library's message is
-// printed; 2 bad command line, scene file or mesh, the message names the file, key and line.
+// printed; 2 bad command line, scene file or mesh, the message names the file, key and line;
+// 3 adaptive refinement stopped above its target error (step or DOF limit); 4 Gmsh, which
+// adaptive refinement runs, is missing or failed.
+#include "adaptive.hpp"
 #include "body_mesh.hpp"
 #include "gmsh_reader.hpp"
 #include "scene.hpp"
@@ -13,6 +16,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -30,11 +34,14 @@ using namespace mcrun;
 
 constexpr int EXIT_SOLVE_FAILED = 1;
 constexpr int EXIT_BAD_INPUT = 2;
+constexpr int EXIT_TARGET_NOT_MET = 3;
+constexpr int EXIT_GMSH = 4;
 constexpr double PI = 3.14159265358979323846;
 
 struct Options {
   std::string scene;
   int verbosity = 1;  // 0 --quiet, 1 phases, 2 --verbose: also active-set iterations
+  std::string gmsh;   // --gmsh: the Gmsh executable for adaptive refinement
 };
 
 // A failed library call after the set-up: the solve or an output (exit code 1).
@@ -44,12 +51,15 @@ struct SolveError : std::runtime_error {
 
 void usage(FILE *to) {
   std::fprintf(to,
-               "usage: mortarcontact-run [--quiet | --verbose] scene.json\n"
+               "usage: mortarcontact-run [--quiet | --verbose] [--gmsh PATH] scene.json\n"
                "  Solves the frictionless contact of two elastic bodies described by scene.json\n"
                "  (format: docs/scene_format.md) with mortarcontact %s.\n"
-               "  --quiet    no progress messages on stderr\n"
-               "  --verbose  also each active-set iteration\n"
-               "exit codes: 0 solved, 1 solve or output failed, 2 bad command line, scene or mesh\n",
+               "  --quiet      no progress messages on stderr\n"
+               "  --verbose    also each active-set iteration\n"
+               "  --gmsh PATH  the Gmsh executable adaptive refinement runs (default:\n"
+               "               $MORTARCONTACT_GMSH, else gmsh on PATH)\n"
+               "exit codes: 0 solved, 1 solve or output failed, 2 bad command line, scene or mesh,\n"
+               "  3 adaptive refinement stopped above its target, 4 Gmsh missing or failed\n",
                mc_version_string());
 }
 
@@ -67,6 +77,12 @@ int parse_arguments(int argc, char **argv, Options *options) {
       options->verbosity = 0;
     } else if (arg == "--verbose" || arg == "-v") {
       options->verbosity = 2;
+    } else if (arg == "--gmsh") {
+      if (i + 1 >= argc || argv[i + 1][0] == '\0') {
+        std::fprintf(stderr, "mortarcontact-run: --gmsh needs the path of the Gmsh executable\n");
+        return EXIT_BAD_INPUT;
+      }
+      options->gmsh = argv[++i];
     } else if (!arg.empty() && arg[0] == '-') {
       std::fprintf(stderr, "mortarcontact-run: unknown option %s\n", arg.c_str());
       usage(stderr);
@@ -217,6 +233,8 @@ void set_options(mc_model *m, const Scene &scene) {
   setup(m, mc_set_option_int(m, MC_OPTION_THREADS, s.threads), scene, "solver.threads", "mc_set_option_int");
   setup(m, mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, s.interface_solver), scene, "solver.interface_solver",
         "mc_set_option_int");
+  setup(m, mc_set_option_int(m, MC_OPTION_ERROR_ESTIMATE, s.error_estimate ? 1 : 0), scene, "solver.error_estimate",
+        "mc_set_option_int");
 }
 
 // ---- results ------------------------------------------------------------------------------
@@ -277,6 +295,11 @@ void print_solve_summary(const mc_model *m, const Scene &scene, const ContactRes
     std::printf("  interface solver: %s (%s)\n", interface_solver_name(interface_solver),
                 scene.solver.interface_solver == MC_INTERFACE_AUTO ? "chosen automatically" : "set by the scene");
   std::printf("  relative residuals: equilibrium %.2e, complementarity %.2e\n", equilibrium, complementarity);
+  if (scene.solver.error_estimate) {
+    double estimate = 0;
+    check(m, mc_get_info_real(m, MC_INFO_ERROR_ESTIMATE, &estimate), "mc_get_info_real");
+    std::printf("  error estimate: %.3g %% (relative, energy norm of both bodies)\n", 100 * estimate);
+  }
   std::printf("  contact force on body 1: (%.10g, %.10g)\n", resultant[0], resultant[1]);
 }
 
@@ -348,7 +371,12 @@ HertzMeasured measure_hertz(const BodyMesh &body1, const ContactResults &r, doub
   return h;
 }
 
-void print_hertz(const Scene &scene, const HertzMeasured &h) {
+// Hertz's E*, a and p0 for the scene.
+struct HertzReference {
+  double e_star, a, p0;
+};
+
+HertzReference hertz_reference(const Scene &scene) {
   // Effective modulus of the two bodies in the plane state of the scene.
   double compliance = 0;
   for (const Body &b : scene.bodies)
@@ -356,7 +384,16 @@ void print_hertz(const Scene &scene, const HertzMeasured &h) {
   const double e_star = 1 / compliance;
   if (scene.plane == MC_AXISYMMETRIC) {  // a sphere on a flat: 3D Hertz, P the total force
     const double a = std::cbrt(3 * scene.hertz.load * scene.hertz.radius / (4 * e_star));
-    const double p0 = 3 * scene.hertz.load / (2 * PI * a * a);
+    return {e_star, a, 3 * scene.hertz.load / (2 * PI * a * a)};
+  }
+  const double a = std::sqrt(4 * scene.hertz.load * scene.hertz.radius / (PI * e_star));
+  return {e_star, a, 2 * scene.hertz.load / (PI * a)};
+}
+
+void print_hertz(const Scene &scene, const HertzMeasured &h) {
+  const HertzReference ref = hertz_reference(scene);
+  const double e_star = ref.e_star, a = ref.a, p0 = ref.p0;
+  if (scene.plane == MC_AXISYMMETRIC) {  // a sphere on a flat: 3D Hertz, P the total force
     std::printf("Hertz (sphere, axisymmetric): R = %g, P = %g (total force), E* = %.6g\n", scene.hertz.radius,
                 scene.hertz.load, e_star);
     std::printf("  p0 = %.6g   Hertz %.6g   relative error %+.3f %% (the largest nodal pressure)\n", h.p0, p0,
@@ -366,8 +403,6 @@ void print_hertz(const Scene &scene, const HertzMeasured &h) {
     std::printf("  axial contact force %.10g (P = %g)\n", h.force, scene.hertz.load);
     return;
   }
-  const double a = std::sqrt(4 * scene.hertz.load * scene.hertz.radius / (PI * e_star));
-  const double p0 = 2 * scene.hertz.load / (PI * a);
   std::printf("Hertz: R = %g, P = %g per unit thickness, E* = %.6g\n", scene.hertz.radius, scene.hertz.load, e_star);
   std::printf("  p0 = %.6g   Hertz %.6g   relative error %+.3f %%\n", h.p0, p0, 100 * (h.p0 / p0 - 1));
   std::printf("  a  = %.6g   Hertz %.6g   relative error %+.3f %% (a known to +-%.3g, half the node spacing there)\n",
@@ -382,6 +417,17 @@ void make_parent_directory(const std::string &path) {
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent, ignored);
 }
+
+bool ends_with(const std::string &text, const std::string &suffix) {
+  return text.size() > suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// `path` without the extension `ext` if it has it.
+std::string stem_of(const std::string &path, const std::string &ext) {
+  return ends_with(path, ext) ? path.substr(0, path.size() - ext.size()) : path;
+}
+
+std::string file_name(const std::string &path) { return std::filesystem::path(path).filename().string(); }
 
 using ModelPtr = std::unique_ptr<mc_model, void (*)(mc_model *)>;
 
@@ -420,43 +466,285 @@ void set_up(mc_model *m, const Scene &scene, const BodyMesh bodies[2]) {
   }
 }
 
-void write_outputs(const mc_model *m, const Scene &scene, const BodyMesh &body1, const ContactResults &r) {
-  if (!scene.output.vtu.empty()) {
-    make_parent_directory(scene.output.vtu);
-    check(m, mc_write_vtu(m, scene.output.vtu.c_str()), "mc_write_vtu");
-    std::printf("wrote %s\n", scene.output.vtu.c_str());
-  }
-  if (!scene.output.pressure_csv.empty()) {
-    make_parent_directory(scene.output.pressure_csv);
-    write_pressure_csv(scene.output.pressure_csv, body1, r);
-    std::printf("wrote %s\n", scene.output.pressure_csv.c_str());
-  }
-}
-
-int run(const Options &options) {
-  Scene scene;
-  std::map<std::string, GmshMesh> files;
+// One solve of the scene on its meshes: the whole of a plain run, one step of an adaptive one.
+struct Solution {
+  std::map<std::string, GmshMesh> files;  // the bodies point into these
   BodyMesh bodies[2];
   ModelPtr model = create_model();
-  mc_model *m = model.get();
-  try {
-    scene = load_scene(options.scene);
-    progress(options, "scene %s%s%s", scene.path.c_str(), scene.description.empty() ? "" : ": ",
-             scene.description.c_str());
-    load_meshes(scene, options, files, bodies);
-    set_up(m, scene, bodies);
-  } catch (const SceneError &e) {
-    std::fprintf(stderr, "mortarcontact-run: error: %s\n", e.what());
-    return EXIT_BAD_INPUT;
-  }
+  ContactResults results;
+  std::vector<double> eta[2];  // the cells' error indicators (empty without the estimate)
+  double estimate = 0;         // MC_INFO_ERROR_ESTIMATE
+};
+
+// Throws SceneError for a bad scene or mesh, SolveError if the library fails.
+std::unique_ptr<Solution> solve(const Scene &scene, const Options &options) {
+  auto s = std::make_unique<Solution>();
+  mc_model *m = s->model.get();
+  load_meshes(scene, options, s->files, s->bodies);
+  set_up(m, scene, s->bodies);
   check(m, mc_set_log_callback(m, options.verbosity > 0 ? log_message : nullptr, const_cast<Options *>(&options)),
         "mc_set_log_callback");
   progress(options, "solving");
   check(m, mc_solve(m), "mc_solve");
-  const ContactResults results = contact_results(m);
-  print_solve_summary(m, scene, results);
-  if (scene.hertz.enabled) print_hertz(scene, measure_hertz(bodies[0], results, scene.thickness, scene.plane == MC_AXISYMMETRIC));
-  write_outputs(m, scene, bodies[0], results);
+  s->results = contact_results(m);
+  if (scene.solver.error_estimate) {
+    check(m, mc_get_info_real(m, MC_INFO_ERROR_ESTIMATE, &s->estimate), "mc_get_info_real");
+    for (int b = 0; b < 2; ++b) {
+      s->eta[b].resize(size_t(s->bodies[b].n_cells()));
+      check(m, mc_get_error_indicator(m, b + 1, s->eta[b].data()), "mc_get_error_indicator");
+    }
+  }
+  return s;
+}
+
+// The VTU files mc_write_vtu writes for `path`, and the bodies (0-based) each holds.
+std::vector<std::pair<std::string, std::vector<int>>> vtu_files(const std::string &path) {
+  if (!ends_with(path, ".pvd")) return {{path, {0, 1}}};
+  const std::string stem = stem_of(path, ".pvd");
+  return {{stem + "_body1.vtu", {0}}, {stem + "_body2.vtu", {1}}};
+}
+
+// ParaView output with the error indicators as cell data "error_indicator".
+void write_vtu(const Solution &s, const std::string &path) {
+  make_parent_directory(path);
+  check(s.model.get(), mc_write_vtu(s.model.get(), path.c_str()), "mc_write_vtu");
+  if (s.eta[0].empty()) return;
+  for (const auto &file : vtu_files(path)) {
+    std::vector<double> values;
+    for (int b : file.second) values.insert(values.end(), s.eta[b].begin(), s.eta[b].end());
+    try {
+      add_vtu_cell_data(file.first, "error_indicator", values);
+    } catch (const std::runtime_error &e) {
+      throw SolveError(e.what());
+    }
+  }
+}
+
+// A ParaView collection of the VTU files of mc_write_vtu's outputs `step_vtus`, the index in the
+// list as time: for every step of an adaptive run, ParaView's time controls step through the meshes.
+void write_collection(const std::string &path, const std::vector<std::string> &step_vtus) {
+  FILE *f = std::fopen(path.c_str(), "w");
+  if (!f) throw SolveError("cannot write " + path + ": " + std::strerror(errno));
+  std::fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+                  "  <Collection>\n");
+  for (size_t k = 0; k < step_vtus.size(); ++k)
+    for (const auto &file : vtu_files(step_vtus[k]))
+      std::fprintf(f, "    <DataSet timestep=\"%zu\" group=\"\" part=\"%d\" file=\"%s\"/>\n", k,
+                   file.second.size() == 1 ? file.second[0] : 0, file_name(file.first).c_str());
+  std::fprintf(f, "  </Collection>\n</VTKFile>\n");
+  if (std::fclose(f) != 0) throw SolveError("cannot write " + path);
+}
+
+// The scene's outputs; with `last_step_vtu` (adaptive refinement) output.vtu names the last
+// step's files instead of writing them again: a .pvd collection of them, or a copy of the .vtu.
+void write_outputs(const Solution &s, const Scene &scene, const std::string &last_step_vtu = "") {
+  if (!scene.output.vtu.empty() && !last_step_vtu.empty()) {
+    make_parent_directory(scene.output.vtu);
+    if (ends_with(scene.output.vtu, ".pvd")) {
+      write_collection(scene.output.vtu, {last_step_vtu});
+    } else {
+      std::error_code error;
+      std::filesystem::copy_file(last_step_vtu, scene.output.vtu, std::filesystem::copy_options::overwrite_existing,
+                                 error);
+      if (error) throw SolveError("cannot copy " + last_step_vtu + " to " + scene.output.vtu + ": " + error.message());
+    }
+    std::printf("wrote %s (the last step's)\n", scene.output.vtu.c_str());
+  } else if (!scene.output.vtu.empty()) {
+    write_vtu(s, scene.output.vtu);
+    std::printf("wrote %s\n", scene.output.vtu.c_str());
+  }
+  if (!scene.output.pressure_csv.empty()) {
+    make_parent_directory(scene.output.pressure_csv);
+    write_pressure_csv(scene.output.pressure_csv, s.bodies[0], s.results);
+    std::printf("wrote %s\n", scene.output.pressure_csv.c_str());
+  }
+}
+
+void print_results(const Solution &s, const Scene &scene) {
+  print_solve_summary(s.model.get(), scene, s.results);
+  if (scene.hertz.enabled)
+    print_hertz(scene, measure_hertz(s.bodies[0], s.results, scene.thickness, scene.plane == MC_AXISYMMETRIC));
+}
+
+// ---- adaptive refinement ------------------------------------------------------------------
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+struct StepRow {
+  int step;
+  long long cells, dofs;
+  double estimate, p0_error, gmsh_seconds, solve_seconds, total_seconds;
+  double predicted_dofs;  // what the size field asked for (0 at step 0)
+};
+
+void print_table(const Scene &scene, const std::vector<StepRow> &rows) {
+  const bool hertz = scene.hertz.enabled;
+  std::printf("adaptive refinement of %s, target %.3g %% (estimated relative error, energy norm):\n",
+              scene.adaptive.geo.c_str(), 100 * scene.adaptive.target_error);
+  std::printf("  step    cells     DOFs  asked DOFs  estimate%s  gmsh s  solve s  total s\n",
+              hertz ? "  p0 - Hertz" : "");
+  for (const StepRow &r : rows) {
+    char asked[32] = "          -";
+    if (r.predicted_dofs > 0) std::snprintf(asked, sizeof asked, "%11.0f", r.predicted_dofs);
+    char p0[32] = "";
+    if (hertz) std::snprintf(p0, sizeof p0, "  %+9.3f %%", 100 * r.p0_error);
+    std::printf("  %4d %8lld %8lld %s  %6.3f %%%s  %6.2f  %7.3f  %7.2f\n", r.step, r.cells, r.dofs, asked,
+                100 * r.estimate, p0, r.gmsh_seconds, r.solve_seconds, r.total_seconds);
+  }
+}
+
+// How Gmsh takes the sizes asked for, before the first refinement: the step-0 mesh is meshed
+// again with its own cells' sizes, and the sizes asked for from then on are multiplied by
+// sqrt(cells Gmsh made / cells of step 0): about 1.15 for triangles (a node takes the smallest
+// size of its cells), 2.3 for quadrilaterals by subdivision (Gmsh halves every side after
+// meshing with the sizes).
+double calibrate(const BodyMesh bodies[2], const Scene &scene, const Adaptive &adaptive, const std::string &gmsh,
+                 const std::string &mesh_stem, const Options &options, double *seconds) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string name = mesh_stem + "_step0_calibration";
+  const SizeField field = current_size_field(bodies);
+  try {
+    write_size_view(name + "_size.pos", bodies, field);
+    write_step_geo(name + ".geo", adaptive.geo_path, name + "_size.pos",
+                   "step 0's mesh again, each cell asking for its own size: how many cells Gmsh makes of the "
+                   "sizes asked for.");
+  } catch (const std::runtime_error &e) {
+    throw SolveError(e.what());
+  }
+  run_gmsh(gmsh, name + ".geo", name + ".msh", adaptive.order, adaptive.gmsh_arguments, name + "_gmsh.log");
+  const GmshMesh file = at_key(scene, "adaptive.geo", [&] { return read_gmsh(name + ".msh"); });
+  int cells = 0;
+  for (int b = 0; b < 2; ++b)
+    cells += at_key(scene, scene.bodies[b].key + ".domain",
+                    [&] { return extract_body(file, scene.bodies[b].domain, b + 1); }).n_cells();
+  *seconds = seconds_since(start);
+  const double calibration = std::clamp(std::sqrt(double(cells) / field.predicted_cells), 0.2, 5.0);
+  progress(options, "calibration: step 0's own sizes gave %d cells for its %d: sizes asked for times %.3g", cells,
+           field.cells, calibration);
+  return calibration;
+}
+
+int run_adaptive(const Scene &scene, const Options &options) {
+  const Adaptive &adaptive = scene.adaptive;
+  const auto start = std::chrono::steady_clock::now();
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(adaptive.geo_path, error))
+    throw SceneError(scene.path + ": adaptive.geo: no such file: " + adaptive.geo_path);
+  const std::string gmsh = find_gmsh(options.gmsh);
+  progress(options, "adaptive refinement to %.3g %% with %s", 100 * adaptive.target_error, gmsh.c_str());
+  const std::string mesh_stem = stem_of(scene.bodies[0].mesh_path, ".msh");
+  // Step k's ParaView files: <stem>_step<k>.pvd (or .vtu), and <stem>_steps.pvd for all steps.
+  const std::string &vtu = scene.output.vtu;
+  const std::string vtu_ext = ends_with(vtu, ".pvd") ? ".pvd" : ends_with(vtu, ".vtu") ? ".vtu" : "";
+  const std::string vtu_stem = stem_of(vtu, vtu_ext);
+  make_parent_directory(mesh_stem);
+  std::vector<StepRow> rows;
+  std::vector<std::string> step_vtus;
+  std::unique_ptr<Solution> s;
+  double calibration = 1;  // the sizes asked of Gmsh over those wanted, from the last step
+  double probe_seconds = 0;  // the calibration's Gmsh run after step 0 (counted in step 1)
+  double predicted_cells = 0, predicted_dofs = 0;
+  for (int step = 0;; ++step) {
+    const std::string step_name = mesh_stem + "_step" + std::to_string(step);
+    const std::string msh = step_name + ".msh";
+    s.reset();  // the last step's model: its size field is written
+    const auto gmsh_start = std::chrono::steady_clock::now();
+    if (step == 0) {
+      progress(options, "step 0: gmsh on %s", adaptive.geo_path.c_str());
+      run_gmsh(gmsh, adaptive.geo_path, msh, adaptive.order, adaptive.gmsh_arguments, step_name + "_gmsh.log");
+    } else {
+      progress(options, "step %d: gmsh on %s.geo", step, step_name.c_str());
+      run_gmsh(gmsh, step_name + ".geo", msh, adaptive.order, adaptive.gmsh_arguments, step_name + "_gmsh.log");
+    }
+    const double gmsh_seconds = seconds_since(gmsh_start) + (step == 1 ? probe_seconds : 0);
+    Scene step_scene = scene;
+    for (Body &b : step_scene.bodies) b.mesh = file_name(msh), b.mesh_path = msh;
+    s = solve(step_scene, options);
+    mc_model *m = s->model.get();
+    StepRow row{step, 0, 0, s->estimate, 0, gmsh_seconds, 0, 0, predicted_dofs};
+    row.cells = s->bodies[0].n_cells() + s->bodies[1].n_cells();
+    int64_t dofs = 0;
+    check(m, mc_get_info_int(m, MC_INFO_DOFS, &dofs), "mc_get_info_int");
+    row.dofs = dofs;
+    check(m, mc_get_info_real(m, MC_INFO_TIME_TOTAL, &row.solve_seconds), "mc_get_info_real");
+    if (scene.hertz.enabled)
+      row.p0_error = measure_hertz(s->bodies[0], s->results, scene.thickness, scene.plane == MC_AXISYMMETRIC).p0 /
+                         hertz_reference(scene).p0 - 1;
+    if (step > 0 && predicted_cells > 0) {  // how Gmsh took the sizes: correct the next request
+      const double ratio = std::sqrt(double(row.cells) / predicted_cells);
+      calibration = std::clamp(calibration * std::clamp(ratio, 0.5, 2.0), 0.2, 5.0);
+    }
+    if (!vtu.empty()) {
+      step_vtus.push_back(vtu_stem + "_step" + std::to_string(step) + vtu_ext);
+      write_vtu(*s, step_vtus.back());
+      write_collection(vtu_stem + "_steps.pvd", step_vtus);
+    }
+    row.total_seconds = seconds_since(start);
+    rows.push_back(row);
+    std::printf("step %d: %lld DOFs, error estimate %.3f %% (target %.3g %%)%s\n", step, row.dofs, 100 * row.estimate,
+                100 * adaptive.target_error, row.estimate <= adaptive.target_error ? ": reached" : "");
+    std::fflush(stdout);
+    std::string stop;  // why the loop ends above the target
+    if (row.estimate <= adaptive.target_error) break;
+    if (step == adaptive.max_steps) {
+      stop = "the target was not reached in adaptive.max_steps = " + std::to_string(adaptive.max_steps) +
+             (adaptive.max_steps == 1 ? " refinement step" : " refinement steps");
+    } else {
+      if (step == 0) calibration = calibrate(s->bodies, step_scene, adaptive, gmsh, mesh_stem, options, &probe_seconds);
+      // The next mesh's sizes, from this step's indicators.
+      const SizeField field = make_size_field(s->bodies, s->eta, adaptive, calibration);
+      predicted_cells = field.predicted_cells;
+      predicted_dofs = double(row.dofs) * field.predicted_cells / double(field.cells);
+      progress(options, "step %d: size field: %d of %d cells refined (%d by the limit %g), %d coarsened; "
+               "%.0f cells asked for (%.0f DOFs), calibration %.3g",
+               step, field.refined, field.cells, field.limited, adaptive.max_refinement, field.coarsened,
+               field.predicted_cells, predicted_dofs, calibration);
+      if (adaptive.max_dofs > 0 && predicted_dofs > double(adaptive.max_dofs)) {
+        char text[200];
+        std::snprintf(text, sizeof text, "the next mesh would have about %.0f DOFs, above adaptive.max_dofs = %lld",
+                      predicted_dofs, adaptive.max_dofs);
+        stop = text;
+      } else {
+        const std::string next = mesh_stem + "_step" + std::to_string(step + 1);
+        try {
+          write_size_view(next + "_size.pos", s->bodies, field);
+          write_step_geo(next + ".geo", adaptive.geo_path, next + "_size.pos",
+                         "step " + std::to_string(step + 1) + ", sized by step " + std::to_string(step) +
+                             "'s error indicators.");
+        } catch (const std::runtime_error &e) {
+          throw SolveError(e.what());
+        }
+        continue;
+      }
+    }
+    // Stopped above the target: the table, the last step's results, and why.
+    print_table(scene, rows);
+    print_results(*s, scene);
+    write_outputs(*s, scene, step_vtus.empty() ? "" : step_vtus.back());
+    std::fprintf(stderr,
+                 "mortarcontact-run: error: adaptive refinement stopped above its target: %s; the estimate is "
+                 "%.3g %% at step %d (%lld DOFs), the target %.3g %% (the outputs hold step %d)\n",
+                 stop.c_str(), 100 * row.estimate, step, row.dofs, 100 * adaptive.target_error, step);
+    return EXIT_TARGET_NOT_MET;
+  }
+  print_table(scene, rows);
+  std::printf("target reached at step %zu: error estimate %.3f %% <= %.3g %%, %lld DOFs\n", rows.size() - 1,
+              100 * rows.back().estimate, 100 * adaptive.target_error, rows.back().dofs);
+  print_results(*s, scene);
+  write_outputs(*s, scene, step_vtus.empty() ? "" : step_vtus.back());
+  return 0;
+}
+
+int run(const Options &options) {
+  Scene scene = load_scene(options.scene);
+  progress(options, "scene %s%s%s", scene.path.c_str(), scene.description.empty() ? "" : ": ",
+           scene.description.c_str());
+  if (scene.adaptive.enabled) return run_adaptive(scene, options);
+  const std::unique_ptr<Solution> s = solve(scene, options);
+  print_results(*s, scene);
+  write_outputs(*s, scene);
   return 0;
 }
 
@@ -468,6 +756,12 @@ int main(int argc, char **argv) {
   if (code >= 0) return code;
   try {
     return run(options);
+  } catch (const SceneError &e) {
+    std::fprintf(stderr, "mortarcontact-run: error: %s\n", e.what());
+    return EXIT_BAD_INPUT;
+  } catch (const GmshError &e) {
+    std::fprintf(stderr, "mortarcontact-run: error: %s\n", e.what());
+    return EXIT_GMSH;
   } catch (const SolveError &e) {
     std::fprintf(stderr, "mortarcontact-run: error: %s\n", e.what());
     return EXIT_SOLVE_FAILED;

@@ -115,6 +115,11 @@ class Value {
     return int(j_.get<long long>());
   }
 
+  bool boolean() const {
+    if (!j_.is_boolean()) fail("must be true or false, got " + describe());
+    return j_.get<bool>();
+  }
+
   std::string string() const {
     if (!j_.is_string()) fail("must be a string, got " + describe());
     std::string s = j_.get<std::string>();
@@ -278,11 +283,11 @@ Body parse_body(const Value &v, int index, const std::string &base_dir) {
 Solver parse_solver(const Value &v) {
   // Defaults: the library's (mortarcontact.h).
   Solver s{MC_METHOD_MORTAR, 1e-10, 200, MC_NORMAL_NONMORTAR, MC_Q1_FULL, MC_ORDERING_AUTO, MC_SURFACE_SMOOTH, 40, 0,
-           MC_INTERFACE_AUTO};
+           MC_INTERFACE_AUTO, true};
   if (!v.has("solver")) return s;
   Value o = v.child("solver");
   o.expect_object({"method", "tolerance", "max_iterations", "contact_normal", "q1_integration", "ordering",
-                   "contact_surface", "feature_angle", "threads", "interface_solver"});
+                   "contact_surface", "feature_angle", "threads", "interface_solver", "error_estimate"});
   if (o.has("method"))
     s.method = o.child("method").choice({{"mortar", MC_METHOD_MORTAR},
                                          {"dual_mortar", MC_METHOD_DUAL_MORTAR},
@@ -303,6 +308,7 @@ Solver parse_solver(const Value &v) {
     s.interface_solver = o.child("interface_solver").choice({{"auto", MC_INTERFACE_AUTO},
                                                              {"condensed", MC_INTERFACE_CONDENSED},
                                                              {"sparse", MC_INTERFACE_SPARSE}});
+  if (o.has("error_estimate")) s.error_estimate = o.child("error_estimate").boolean();
   return s;
 }
 
@@ -328,12 +334,59 @@ HertzCheck parse_analytic(const Value &v) {
   return h;
 }
 
+// What the runner makes Gmsh do itself: these arguments would fight it.
+const char *const reserved_gmsh_arguments[] = {"-o", "-order", "-bgm", "-0", "-1", "-2", "-3", "-format", "-save"};
+
+Adaptive parse_adaptive(const Value &v, const std::string &base_dir) {
+  Adaptive a;
+  if (!v.has("adaptive")) return a;
+  Value o = v.child("adaptive");
+  o.expect_object({"geo", "target_error", "max_steps", "order", "gmsh_arguments", "aim", "max_refinement",
+                   "max_coarsening", "min_size", "max_size", "max_dofs"});
+  a.enabled = true;
+  a.geo = o.at("geo").string();
+  a.geo_path = resolve(base_dir, a.geo);
+  if (a.geo_path.find('"') != std::string::npos) o.child("geo").fail("a path with a double quote cannot be handed to Gmsh");
+  a.target_error = o.at("target_error").positive();
+  if (!(a.target_error < 1))
+    o.child("target_error").fail("is a relative error: must be in (0, 1) (0.01 = 1 %), got " +
+                                 o.child("target_error").describe());
+  if (o.has("max_steps")) a.max_steps = o.child("max_steps").integer_in(0, 100);
+  if (o.has("order")) a.order = o.child("order").integer_in(1, 2);
+  if (o.has("gmsh_arguments"))
+    for (const Value &arg : o.child("gmsh_arguments").items()) {
+      a.gmsh_arguments.push_back(arg.string());
+      for (const char *r : reserved_gmsh_arguments)
+        if (a.gmsh_arguments.back() == r)
+          arg.fail(std::string("the runner sets ") + r + " itself (the mesh file, its dimension, format and order: "
+                   "use adaptive.order for -order)");
+    }
+  if (o.has("aim")) {
+    a.aim = o.child("aim").positive();
+    if (!(a.aim <= 1)) o.child("aim").fail("must be in (0, 1], got " + o.child("aim").describe());
+  }
+  if (o.has("max_refinement")) {
+    a.max_refinement = o.child("max_refinement").positive();
+    if (!(a.max_refinement > 1)) o.child("max_refinement").fail("must be > 1, got " + o.child("max_refinement").describe());
+  }
+  if (o.has("max_coarsening")) {
+    a.max_coarsening = o.child("max_coarsening").positive();
+    if (!(a.max_coarsening >= 1)) o.child("max_coarsening").fail("must be >= 1, got " + o.child("max_coarsening").describe());
+  }
+  if (o.has("min_size")) a.min_size = o.child("min_size").positive();
+  if (o.has("max_size")) a.max_size = o.child("max_size").positive();
+  if (a.min_size > 0 && a.max_size > 0 && !(a.min_size < a.max_size))
+    o.child("max_size").fail("must be larger than adaptive.min_size");
+  if (o.has("max_dofs")) a.max_dofs = o.child("max_dofs").positive_integer();
+  return a;
+}
+
 }  // namespace
 
 Scene parse_scene(const std::string &text, const std::string &path) {
   const json root = parse_json(text, path);
   const Value v(root, "", path);
-  v.expect_object({"description", "plane", "thickness", "bodies", "solver", "output", "analytic"});
+  v.expect_object({"description", "plane", "thickness", "bodies", "solver", "output", "analytic", "adaptive"});
   const std::string base_dir = std::filesystem::path(path).parent_path().string();
   Scene s;
   s.path = path;
@@ -360,6 +413,16 @@ Scene parse_scene(const std::string &text, const std::string &path) {
   s.solver = parse_solver(v);
   s.output = parse_output(v, base_dir);
   s.hertz = parse_analytic(v);
+  s.adaptive = parse_adaptive(v, base_dir);
+  if (s.adaptive.enabled) {
+    // One .geo gives one mesh: both bodies are taken out of it, each by its surface group.
+    if (std::filesystem::path(s.bodies[0].mesh_path).lexically_normal() !=
+        std::filesystem::path(s.bodies[1].mesh_path).lexically_normal())
+      v.child("bodies[1].mesh").fail("adaptive refinement meshes adaptive.geo into one file for both bodies: name the "
+                                     "same mesh as bodies[0].mesh (" + s.bodies[0].mesh + "), each body with its domain");
+    if (!s.solver.error_estimate)
+      v.child("solver.error_estimate").fail("adaptive refinement needs the error estimate: leave it true");
+  }
   return s;
 }
 

@@ -55,6 +55,7 @@ struct Solver {
   double feature_angle;  // degrees
   int threads;         // MC_OPTION_THREADS: 0 automatic, 1 serial, n at most n
   int interface_solver;  // MC_INTERFACE_*: MC_OPTION_INTERFACE_SOLVER
+  bool error_estimate;   // MC_OPTION_ERROR_ESTIMATE: estimate the error (and write the indicators)
 };
 
 struct Output {
@@ -68,6 +69,25 @@ struct HertzCheck {
   double load = 0;    // total force per unit thickness pressing the bodies together
 };
 
+// Adaptive refinement (docs/scene_format.md, "adaptive"): the runner meshes `geo` with Gmsh,
+// solves, and remeshes with a size field made of the error indicators until the estimate is at
+// or below `target_error`.
+struct Adaptive {
+  bool enabled = false;
+  std::string geo;             // as written in the scene
+  std::string geo_path;        // resolved against the scene file's directory
+  double target_error = 0;     // relative energy-norm error to reach (MC_INFO_ERROR_ESTIMATE), in (0, 1)
+  int max_steps = 8;           // remeshes after the first mesh (step 0)
+  int order = 1;               // element order: gmsh -order (1 or 2)
+  std::vector<std::string> gmsh_arguments;  // added to every gmsh command line
+  double aim = 0.8;            // each new mesh is sized for aim * target_error
+  double max_refinement = 4;   // per step, a cell's size shrinks at most by this factor
+  double max_coarsening = 2;   // ... and grows at most by this factor
+  double min_size = 0;         // bounds of the requested sizes; 0 = none
+  double max_size = 0;
+  long long max_dofs = 0;      // stop before a mesh predicted larger than this; 0 = no limit
+};
+
 struct Scene {
   std::string path;  // the scene file, for messages
   std::string description;
@@ -77,6 +97,7 @@ struct Scene {
   Solver solver;
   Output output;
   HertzCheck hertz;
+  Adaptive adaptive;
 };
 
 // Reads and validates a scene file; relative paths inside are taken from the file's directory.

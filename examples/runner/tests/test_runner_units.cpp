@@ -15,9 +15,13 @@
 //   mid-edge nodes, edges handed over as corner pairs, supports with the mid-edge nodes, a
 //   clamped solve without contact exact, linear and quadratic mixed refused with a clear message,
 //   and the runner's patch test on them (exact pressure at the mid-edge node too, VTK types 22, 28)
-//   and interference fit (exact only with the mid-edge nodes in the support and the gap offset).
+//   and interference fit (exact only with the mid-edge nodes in the support and the gap offset);
+// - adaptive refinement's parts: the scene's "adaptive" object (defaults, every key checked), the
+//   size field's equidistribution rule and its limits, the Gmsh view with its skirt, the .geo of a
+//   step, and an array added to a VTU file (the loop itself: check_runner_adaptive.py).
 //
 // usage: test_runner_units DATA_DIR RUNNER   (DATA_DIR: a copy of examples/runner/tests/data)
+#include "adaptive.hpp"
 #include "body_mesh.hpp"
 #include "gmsh_reader.hpp"
 #include "scene.hpp"
@@ -544,6 +548,181 @@ START_TEST(scene_errors_name_the_key) {
 }
 END_TEST
 
+START_TEST(adaptive_scene_parsed) {
+  const std::string adaptive = ",\n  \"adaptive\": { \"geo\": \"g/m.geo\", \"target_error\": 0.01 }\n}";
+  auto with = [&](const std::string &keys) {
+    return scene_text("\n}", ",\n  \"adaptive\": { \"geo\": \"g/m.geo\", " + keys + " }\n}");
+  };
+  const Scene s = parse_scene(scene_text("\n}", adaptive), "dir/s.json");
+  ck_assert(s.adaptive.enabled);
+  ck_assert_str_eq(s.adaptive.geo_path.c_str(), "dir/g/m.geo");  // relative to the scene file
+  ck_assert_double_eq(s.adaptive.target_error, 0.01);
+  ck_assert_int_eq(s.adaptive.max_steps, 8);
+  ck_assert_int_eq(s.adaptive.order, 1);
+  ck_assert_double_eq(s.adaptive.aim, 0.8);
+  ck_assert_double_eq(s.adaptive.max_refinement, 4);
+  ck_assert_double_eq(s.adaptive.max_coarsening, 2);
+  ck_assert(s.adaptive.gmsh_arguments.empty() && s.adaptive.max_dofs == 0 && s.adaptive.min_size == 0);
+  ck_assert(s.solver.error_estimate);
+  ck_assert(!parse_scene(scene_text(), "s.json").adaptive.enabled);
+  const Scene t = parse_scene(with("\"target_error\": 0.005, \"max_steps\": 3, \"order\": 2, \"aim\": 1, "
+                                   "\"gmsh_arguments\": [\"-setnumber\", \"h\", \"0.1\"], \"max_refinement\": 8, "
+                                   "\"max_coarsening\": 1, \"min_size\": 1e-3, \"max_size\": 0.5, \"max_dofs\": 100000"),
+                              "s.json");
+  ck_assert_int_eq(t.adaptive.max_steps, 3);
+  ck_assert_int_eq(t.adaptive.order, 2);
+  ck_assert_int_eq(t.adaptive.gmsh_arguments.size(), 3);
+  ck_assert_str_eq(t.adaptive.gmsh_arguments[1].c_str(), "h");
+  ck_assert_double_eq(t.adaptive.max_refinement, 8);
+  ck_assert_double_eq(t.adaptive.max_size, 0.5);
+  ck_assert_int_eq(t.adaptive.max_dofs, 100000);
+  ASSERT_HAS(scene_error(with("\"target_error\": 1.5")), "adaptive.target_error: is a relative error: must be in (0, 1)");
+  ASSERT_HAS(scene_error(with("\"target_eror\": 0.01")), "adaptive.target_eror: unknown key (did you mean 'target_error'?)");
+  ASSERT_HAS(scene_error(scene_text("\n}", ",\n  \"adaptive\": { \"target_error\": 0.01 }\n}")),
+             "adaptive.geo: missing (required)");
+  ASSERT_HAS(scene_error(with("\"target_error\": 0.01, \"order\": 3")), "adaptive.order: must be an integer from 1 to 2");
+  ASSERT_HAS(scene_error(with("\"target_error\": 0.01, \"gmsh_arguments\": [\"-o\", \"x.msh\"]")),
+             "adaptive.gmsh_arguments[0]: the runner sets -o itself");
+  ASSERT_HAS(scene_error(with("\"target_error\": 0.01, \"max_refinement\": 1")), "adaptive.max_refinement: must be > 1");
+  ASSERT_HAS(scene_error(with("\"target_error\": 0.01, \"aim\": 1.2")), "adaptive.aim: must be in (0, 1]");
+  ASSERT_HAS(scene_error(with("\"target_error\": 0.01, \"min_size\": 0.5, \"max_size\": 0.1")),
+             "adaptive.max_size: must be larger than adaptive.min_size");
+  std::string two = scene_text("\"mesh\": \"m.msh\", \"domain\": \"b\"", "\"mesh\": \"n.msh\", \"domain\": \"b\"");
+  ck_assert_str_eq(scene_error(two).c_str(), "");  // two files: fine without adaptive refinement
+  two.replace(two.rfind("\n}"), 2, adaptive);
+  ASSERT_HAS(error_of<SceneError>([&] { parse_scene(two, "s.json"); }),
+             "bodies[1].mesh: adaptive refinement meshes adaptive.geo into one file for both bodies");
+  std::string off = scene_text("\"method\": \"dual_mortar\"", "\"error_estimate\": false");
+  ck_assert(!parse_scene(off, "s.json").solver.error_estimate);  // fine without adaptive refinement
+  off.replace(off.rfind("\n}"), 2, adaptive);
+  ASSERT_HAS(error_of<SceneError>([&] { parse_scene(off, "s.json"); }),
+             "solver.error_estimate: adaptive refinement needs the error estimate");
+  ASSERT_HAS(scene_error(scene_text("\"method\": \"dual_mortar\"", "\"error_estimate\": 1")),
+             "solver.error_estimate: must be true or false");
+}
+END_TEST
+
+// The tiny mesh's two bodies (3-node triangles on 4-node quadrilaterals, first order).
+struct TinyBodies {
+  GmshMesh file = read_gmsh(data_dir + "/tiny_v41.msh");
+  BodyMesh bodies[2] = {extract_body(file, "upper", 1), extract_body(file, "lower", 2)};
+};
+
+START_TEST(size_field_equidistributes) {
+  const TinyBodies tiny_bodies;
+  const BodyMesh *bodies = tiny_bodies.bodies;
+  const int n = bodies[0].n_cells() + bodies[1].n_cells();
+  Adaptive a;
+  a.target_error = 0.01;
+  a.aim = 1;
+  std::vector<double> eta[2];
+  auto set_eta = [&](double value) {
+    for (int b = 0; b < 2; ++b) eta[b].assign(size_t(bodies[b].n_cells()), value);
+  };
+  // Every cell with an equal share of an estimate equal to the aim: that mesh is the one asked for.
+  set_eta(0.01 / std::sqrt(double(n)));
+  SizeField f = make_size_field(bodies, eta, a, 1.0);
+  ck_assert_int_eq(f.cells, n);
+  ck_assert_msg(std::fabs(f.optimal_cells - n) < 1e-9 * n, "optimal cells %g for %d", f.optimal_cells, n);
+  ck_assert_msg(std::fabs(f.predicted_cells - n) < 1e-9 * n, "predicted cells %g", f.predicted_cells);
+  ck_assert_int_eq(f.refined + f.coarsened + f.limited, 0);
+  for (int b = 0; b < 2; ++b) {  // each node: the smallest size of its cells
+    std::vector<double> expected(size_t(bodies[b].n_nodes()), 1e300);
+    for (int c = 0; c < bodies[b].n_cells(); ++c)
+      for (int k = 0; k < bodies[b].nodes_per_cell; ++k) {
+        double &e = expected[size_t(bodies[b].cells[size_t(c * bodies[b].nodes_per_cell + k)])];
+        e = std::min(e, cell_size(bodies[b], c));
+      }
+    for (int i = 0; i < bodies[b].n_nodes(); ++i)
+      ck_assert_msg(std::fabs(f.node_size[b][size_t(i)] - expected[size_t(i)]) < 1e-12, "body %d node %d", b + 1, i);
+  }
+  // Twice that error on first-order cells (error ~ N^-1/2): four times the cells, each size halved;
+  // a calibration multiplies the sizes asked for, not the cells counted.
+  set_eta(0.02 / std::sqrt(double(n)));
+  const SizeField g = make_size_field(bodies, eta, a, 1.5);
+  ck_assert_msg(std::fabs(g.optimal_cells - 4 * n) < 1e-9 * n && std::fabs(g.predicted_cells - 4 * n) < 1e-9 * n,
+                "%g, %g cells for %d", g.optimal_cells, g.predicted_cells, n);
+  ck_assert_int_eq(g.refined, n);
+  for (int b = 0; b < 2; ++b)
+    for (int i = 0; i < bodies[b].n_nodes(); ++i)
+      ck_assert_msg(std::fabs(g.node_size[b][size_t(i)] - 0.75 * f.node_size[b][size_t(i)]) < 1e-12,
+                    "halved, times the calibration 1.5");
+  // All the error in one cell: it alone is refined, by max_refinement at most; the others
+  // coarsened by max_coarsening at most; the bounds hold.
+  set_eta(0);
+  eta[0][0] = 0.5;
+  const SizeField h = make_size_field(bodies, eta, a, 1.0);
+  ck_assert_int_eq(h.limited, 1);
+  ck_assert_int_eq(h.refined, 1);
+  ck_assert_int_eq(h.coarsened, n - 1);
+  ck_assert_msg(std::fabs(h.predicted_cells - (16 + 0.25 * (n - 1))) < 1e-9, "%g", h.predicted_cells);
+  const int *first = &bodies[0].cells[0];
+  for (int k = 0; k < bodies[0].nodes_per_cell; ++k)
+    ck_assert(h.node_size[0][size_t(first[k])] <= 0.25 * cell_size(bodies[0], 0) * (1 + 1e-12));
+  a.min_size = 0.3;
+  a.max_size = 0.4;
+  const SizeField bounded = make_size_field(bodies, eta, a, 1.0);
+  for (int b = 0; b < 2; ++b)
+    for (double size : bounded.node_size[b]) ck_assert(size >= 0.3 && size <= 0.4);
+  // Second order: error ~ N^-1, so twice the error asks for twice the cells.
+  const GmshMesh q = read_gmsh(data_dir + "/tiny_quadratic_v41.msh");
+  const BodyMesh quadratic[2] = {extract_body(q, "upper", 1), extract_body(q, "lower", 2)};
+  const int nq = quadratic[0].n_cells() + quadratic[1].n_cells();
+  for (int b = 0; b < 2; ++b) eta[b].assign(size_t(quadratic[b].n_cells()), 0.02 / std::sqrt(double(nq)));
+  a = Adaptive();
+  a.target_error = 0.01;
+  a.aim = 1;
+  const SizeField p2 = make_size_field(quadratic, eta, a, 1.0);
+  ck_assert_msg(std::fabs(p2.predicted_cells - 2 * nq) < 1e-9 * nq, "%g cells for %d", p2.predicted_cells, nq);
+}
+END_TEST
+
+START_TEST(size_view_step_geo_and_vtu_array) {
+  const TinyBodies tiny_bodies;
+  const BodyMesh *bodies = tiny_bodies.bodies;
+  const SizeField f = current_size_field(bodies);
+  const std::string view = data_dir + "/unit_size.pos", geo = data_dir + "/unit_step.geo";
+  write_size_view(view, bodies, f);
+  std::ifstream in(view);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string pos = text.str();
+  int st = 0, sq = 0, boundary = 0;
+  for (size_t at = pos.find("\nST("); at != std::string::npos; at = pos.find("\nST(", at + 1)) ++st;
+  for (size_t at = pos.find("\nSQ("); at != std::string::npos; at = pos.find("\nSQ(", at + 1)) ++sq;
+  for (int b = 0; b < 2; ++b)
+    for (const auto &e : bodies[b].edges) boundary += e.second.cells == 1;
+  ck_assert_int_eq(st, bodies[0].n_cells());                  // the triangles
+  ck_assert_int_eq(sq, bodies[1].n_cells() + boundary);       // the quadrilaterals and the skirt
+  ASSERT_HAS(pos, "View \"mesh size\" {");
+  write_step_geo(geo, "/a/b.geo", view, "a test.");
+  std::ifstream g(geo);
+  std::stringstream gtext;
+  gtext << g.rdbuf();
+  ASSERT_HAS(gtext.str(), "Include \"/a/b.geo\";");
+  ASSERT_HAS(gtext.str(), "Mesh.MeshSizeFromPoints = 0;");
+  ASSERT_HAS(gtext.str(), "unit_size.pos\";\nBackground Mesh View[PostProcessing.NbViews - 1];");
+  ASSERT_HAS(error_of<std::runtime_error>([&] { write_step_geo(geo, "/a/\"b.geo", view, ""); }), "double quote");
+  // An array added before the end of <CellData>, once.
+  const std::string vtu = data_dir + "/unit.vtu";
+  std::ofstream(vtu) << "<VTKFile>\n      <CellData Scalars=\"von_mises\">\n        <DataArray Name=\"body\">\n1\n2\n"
+                        "        </DataArray>\n      </CellData>\n      <Points>\n</VTKFile>\n";
+  add_vtu_cell_data(vtu, "error_indicator", {0.25, 0.5});
+  add_vtu_cell_data(vtu, "error_indicator", {9, 9});
+  std::ifstream v(vtu);
+  std::stringstream vtext;
+  vtext << v.rdbuf();
+  ASSERT_HAS(vtext.str(), "        </DataArray>\n        <DataArray type=\"Float64\" Name=\"error_indicator\" format=\"ascii\">\n"
+                          "0.25\n0.5\n        </DataArray>\n      </CellData>\n");
+  ck_assert(vtext.str().find("\n9\n") == std::string::npos);
+  std::ofstream(vtu) << "<VTKFile>\n</VTKFile>\n";
+  ASSERT_HAS(error_of<std::runtime_error>([&] { add_vtu_cell_data(vtu, "x", {1}); }), "not one <CellData> section");
+  // Gmsh named by a path that is not there: what to do.
+  ASSERT_HAS(error_of<GmshError>([] { find_gmsh("/nonexistent/gmsh"); }),
+             "--gmsh names '/nonexistent/gmsh', which is not an executable file");
+}
+END_TEST
+
 // ---- the runner, end to end ----------------------------------------------------------------
 
 std::vector<std::vector<double>> read_csv(const std::string &path, std::string *text) {
@@ -740,6 +919,9 @@ int main(int argc, char **argv) {
   tcase_add_test(tc, contact_surface_options_parsed);
   tcase_add_test(tc, interface_solver_parsed);
   tcase_add_test(tc, scene_errors_name_the_key);
+  tcase_add_test(tc, adaptive_scene_parsed);
+  tcase_add_test(tc, size_field_equidistributes);
+  tcase_add_test(tc, size_view_step_geo_and_vtu_array);
   tcase_add_test(tc, runner_patch_test_both_formats);
   tcase_add_test(tc, runner_second_order_patch_test_both_formats);
   tcase_add_test(tc, runner_interference_gap_offset_exact);

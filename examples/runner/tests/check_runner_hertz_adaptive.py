@@ -1,0 +1,59 @@
+#!/usr/bin/env python3
+"""docs/tutorial_adaptive.md, run as it says: the Hertz scene from a coarse uniform mesh to an
+estimated error of 0.5 % on second-order triangles, and the plot of its meshes.
+
+Copies examples/runner/hertz/hertz.geo and examples/runner/hertz_adaptive/hertz_adaptive.json
+into WORK_DIR, runs the runner on the scene and checks:
+  - exit code 0, the target of 0.5 % reached within 5 refinement steps, and the estimate of the
+    last step at or below it;
+  - the solution against Hertz: p0 within 0.3 % (the fine-mesh limit of this finite scene is
+    0.18 % below Hertz's half-space value), the contact force equal to the load;
+  - the files the tutorial names: the collection of every step, the scene's .pvd (the last
+    step's), the pressure CSV;
+then runs plot_steps.py on the collection, which must write its PNG.
+
+usage: check_runner_hertz_adaptive.py RUNNER GMSH RUNNER_SOURCE_DIR WORK_DIR
+"""
+
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+
+def check(condition, message):
+    if not condition:
+        sys.exit("FAILED: " + message)
+
+
+def main():
+    runner, gmsh, source, work = sys.argv[1:5]
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    shutil.copy(os.path.join(source, "hertz", "hertz.geo"), work)
+    shutil.copy(os.path.join(source, "hertz_adaptive", "hertz_adaptive.json"), work)
+    result = subprocess.run([runner, "--gmsh", gmsh, "hertz_adaptive.json"], cwd=work, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, check=False)
+    out = result.stdout
+    print(out)
+    check(result.returncode == 0, "the runner exited with %d:\n%s" % (result.returncode, result.stderr))
+    m = re.search(r"target reached at step (\d+): error estimate ([\d.]+) % <= 0.5 %", out)
+    check(m is not None, "no 'target reached' line")
+    check(int(m.group(1)) <= 5, "%s refinement steps, at most 5 expected" % m.group(1))
+    check(float(m.group(2)) <= 0.5, "estimate %s %% above the target" % m.group(2))
+    p0 = float(re.search(r"p0 = .*relative error (\S+) %", out).group(1))
+    check(abs(p0) <= 0.3, "p0 %+.3f %% from Hertz (0.3 %% allowed)" % p0)
+    check("contact force on body 1: (0, 0.01)" in out, "the contact force is not the load")
+    for name in ("hertz_adaptive_steps.pvd", "hertz_adaptive.pvd", "hertz_adaptive_pressure.csv",
+                 "hertz_adaptive_step%s_body1.vtu" % m.group(1)):
+        check(os.path.getsize(os.path.join(work, name)) > 0, "no " + name)
+    png = os.path.join(work, "hertz_adaptive_steps.png")
+    subprocess.run([sys.executable, os.path.join(source, "hertz_adaptive", "plot_steps.py"),
+                    os.path.join(work, "hertz_adaptive_steps.pvd"), png], check=True)
+    check(os.path.getsize(png) > 0, "no PNG")
+    print("ok")
+
+
+if __name__ == "__main__":
+    main()
