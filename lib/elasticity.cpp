@@ -269,14 +269,17 @@ void law_compliance(const PlaneLaw &law, double c[16]) {
 
 
 int cell_sampled_stresses(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar,
-                          const double *ue, Point *x, double *sigma) {
+                          const double *ue, Point *x, double *sigma, double *weight_out) {
   const int m = 2 * npc;
   if (npc == 3 || npc == 4) {
     BMatrix b[kMaxCellPoints];
     double weight[kMaxCellPoints];
     CellPoint q[kMaxCellPoints];
     const int n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight, nullptr, q);
-    for (int g = 0; g < n; ++g) x[g] = q[g].x, stress_at(b[g], m, law, ue, &sigma[4 * g]);
+    for (int g = 0; g < n; ++g) {
+      x[g] = q[g].x, stress_at(b[g], m, law, ue, &sigma[4 * g]);
+      if (weight_out) weight_out[g] = weight[g];
+    }
     return n;
   }
   double xi[4], eta[4];

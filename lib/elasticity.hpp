@@ -42,8 +42,10 @@ void cell_nodal_stresses(const Point *p, int npc, const PlaneLaw &law, const Lin
 // (stress_recovery.hpp): its quadrature points for P1 and Q1, the 3 interior points (2/3, 1/6,
 // 1/6) of a T6, the 2x2 Gauss points of a Q8 or Q9. Fills x (where) and sigma (4 per point);
 // returns the count (at most kMaxCellPoints).
+// weight (optional): for P1 and Q1, whose sampling points are their quadrature points, each
+// point's quadrature weight (the measure included), so that a caller can integrate with them.
 int cell_sampled_stresses(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar,
-                          const double *ue, Point *x, double *sigma);
+                          const double *ue, Point *x, double *sigma, double *weight = nullptr);
 
 // The recovery (Zienkiewicz-Zhu) error of a cell: the integral over the cell of
 // (sigma* - sigma_h)^T D^-1 (sigma* - sigma_h) w, where sigma_h is the cell's own stress and

@@ -95,7 +95,40 @@ void Model::estimate_error() {
     std::vector<double> compliance(16 * laws.size());
     for (size_t l = 0; l < laws.size(); ++l) law_compliance(laws[l], &compliance[16 * l]);
     cell_eta2[b].assign(size_t(mesh.n_cells()), 0.0);
-    recovered[b] = patch_recovered_stresses(mesh, laws, measure(), bbar, body_.u);
+    const RecoveredStress rs = patch_recovered_stresses(mesh, laws, measure(), bbar, body_.u);
+    recovered[b] = rs.nodal;
+    if (!rs.weight.empty()) {
+      // P1 and Q1: the samples are the quadrature points; sigma* there from the reference
+      // shapes, the same for every cell (cell_recovery_error's integral, without evaluating the
+      // cells' stresses a second time).
+      double xi[kMaxCellPoints], eta[kMaxCellPoints], w[kMaxCellPoints], shape[kMaxCellPoints][kMaxCellNodes];
+      const int points = quadrature_rule(npc, measure().axisymmetric, xi, eta, w);
+      for (int g = 0; g < points; ++g) {
+        double dxi[kMaxCellNodes], deta[kMaxCellNodes];
+        reference_shapes(npc, xi[g], eta[g], shape[g], dxi, deta);
+      }
+      const int k = laws[0].n_strain;
+      for (int c = 0; c < mesh.n_cells(); ++c) {
+        const int *v = mesh.cell(c);
+        const size_t l = laws.size() == 1 ? 0 : size_t(c);
+        const double *cmp = &compliance[16 * l];
+        double error = 0;
+        for (int g = 0, s = rs.sample_start[c]; s < rs.sample_start[c + 1]; ++g, ++s) {
+          double d[4];
+          for (int r = 0; r < k; ++r) {
+            double recovered_r = 0;
+            for (int a = 0; a < npc; ++a) recovered_r += shape[g][a] * rs.nodal[4 * size_t(v[a]) + r];
+            d[r] = recovered_r - rs.sigma[4 * size_t(s) + r];
+          }
+          double energy = 0;
+          for (int r = 0; r < k; ++r)
+            for (int q = 0; q < k; ++q) energy += d[r] * cmp[4 * r + q] * d[q];
+          error += rs.weight[s] * energy;
+        }
+        cell_eta2[b][c] = error;
+      }
+      return;
+    }
     Point p[kMaxCellNodes];
     double ue[2 * kMaxCellNodes], nodal[4 * kMaxCellNodes];
     for (int c = 0; c < mesh.n_cells(); ++c) {
@@ -103,7 +136,7 @@ void Model::estimate_error() {
       for (int a = 0; a < npc; ++a) {
         p[a] = mesh.node(v[a]);
         ue[2 * a] = body_.u[2 * size_t(v[a])], ue[2 * a + 1] = body_.u[2 * size_t(v[a]) + 1];
-        for (int k = 0; k < 4; ++k) nodal[4 * a + k] = recovered[b][4 * size_t(v[a]) + k];
+        for (int q = 0; q < 4; ++q) nodal[4 * a + q] = recovered[b][4 * size_t(v[a]) + q];
       }
       const size_t l = laws.size() == 1 ? 0 : size_t(c);
       cell_eta2[b][c] = cell_recovery_error(p, npc, laws[l], &compliance[16 * l], measure(), bbar, ue, nodal);

@@ -94,26 +94,32 @@ PatchFit fit_patch(Point centre, bool quadratic, const std::vector<Point> &x, co
 
 }  // namespace
 
-std::vector<double> patch_recovered_stresses(const Mesh &mesh, const std::vector<PlaneLaw> &laws,
-                                             const LineMeasure &measure, bool bbar, const std::vector<double> &u) {
+RecoveredStress patch_recovered_stresses(const Mesh &mesh, const std::vector<PlaneLaw> &laws,
+                                         const LineMeasure &measure, bool bbar, const std::vector<double> &u) {
   const int n_nodes = mesh.n_nodes(), n_cells = mesh.n_cells(), npc = mesh.nodes_per_cell();
   const int corners = mesh.corners_per_cell();
   const bool quadratic = mesh.quadratic();
   // Each cell's sampled stresses, and the cells around each corner node (CSR).
-  std::vector<int> sample_start(size_t(n_cells) + 1, 0);
+  RecoveredStress result;
+  std::vector<int> &sample_start = result.sample_start;
+  sample_start.assign(size_t(n_cells) + 1, 0);
   std::vector<Point> sample_x;
-  std::vector<double> sample_sigma;
+  std::vector<double> &sample_sigma = result.sigma;
+  const bool with_weights = !quadratic;
   // (reserved for the most a cell samples: no regrowth of these large arrays)
   const size_t per_cell = npc == 3 ? (measure.axisymmetric ? 3 : 1) : npc == 6 ? 3 : 4;
   sample_x.reserve(size_t(n_cells) * per_cell), sample_sigma.reserve(size_t(n_cells) * per_cell * 4);
+  if (with_weights) result.weight.reserve(size_t(n_cells) * per_cell);
+  double weight[kMaxCellPoints];
   Point p[kMaxCellNodes], x[kMaxCellPoints];
   double ue[2 * kMaxCellNodes], sigma[4 * kMaxCellPoints];
   for (int c = 0; c < n_cells; ++c) {
     const int *v = mesh.cell(c);
     for (int a = 0; a < npc; ++a) p[a] = mesh.node(v[a]), ue[2 * a] = u[2 * size_t(v[a])], ue[2 * a + 1] = u[2 * size_t(v[a]) + 1];
     const PlaneLaw &law = laws.size() == 1 ? laws[0] : laws[c];
-    const int n = cell_sampled_stresses(p, npc, law, measure, bbar, ue, x, sigma);
+    const int n = cell_sampled_stresses(p, npc, law, measure, bbar, ue, x, sigma, with_weights ? weight : nullptr);
     sample_x.insert(sample_x.end(), x, x + n);
+    if (with_weights) result.weight.insert(result.weight.end(), weight, weight + n);
     sample_sigma.insert(sample_sigma.end(), sigma, sigma + 4 * n);
     sample_start[c + 1] = int(sample_x.size());
   }
@@ -132,7 +138,8 @@ std::vector<double> patch_recovered_stresses(const Mesh &mesh, const std::vector
   const size_t wanted = quadratic ? 12 : 6;
   // A linear mesh's fits are evaluated at once; a quadratic mesh's are kept for its middles.
   std::vector<PatchFit> fits(quadratic ? size_t(n_nodes) : 0);
-  std::vector<double> out(4 * size_t(n_nodes), 0.0);
+  std::vector<double> &out = result.nodal;
+  out.assign(4 * size_t(n_nodes), 0.0);
   std::vector<int> patch, mark(n_cells, -1);
   std::vector<Point> px;
   std::vector<double> psigma;
@@ -158,7 +165,7 @@ std::vector<double> patch_recovered_stresses(const Mesh &mesh, const std::vector
     fit.evaluate(mesh.node(i), &out[4 * size_t(i)]);
     if (quadratic) fits[i] = fit;
   }
-  if (!quadratic) return out;
+  if (!quadratic) return result;
   // Middles and centres: the mean of their corners' polynomials there.
   std::vector<char> done(n_nodes, 0);
   for (int c = 0; c < n_cells; ++c) {
@@ -179,7 +186,7 @@ std::vector<double> patch_recovered_stresses(const Mesh &mesh, const std::vector
       for (int q = 0; q < 4; ++q) out[4 * size_t(node) + q] = sum[q];
     }
   }
-  return out;
+  return result;
 }
 
 }  // namespace mc

@@ -14,8 +14,19 @@
 
 namespace mc {
 
-// sigma* at every node, 4 per node (the components of cell_stress). u: 2 per node.
-std::vector<double> patch_recovered_stresses(const Mesh &mesh, const std::vector<PlaneLaw> &laws,
-                                             const LineMeasure &measure, bool bbar, const std::vector<double> &u);
+// sigma* at every node (4 per node: the components of cell_stress), and the cells' samples it
+// was fitted to. For P1 and Q1 the sampling points are the cells' quadrature points, and their
+// weights come along (weight non-empty), so that the error estimate integrates with the samples
+// instead of evaluating each cell's stresses again.
+struct RecoveredStress {
+  std::vector<double> nodal;
+  std::vector<int> sample_start;  // cell c's samples: [sample_start[c], sample_start[c + 1])
+  std::vector<double> sigma;      // 4 per sample
+  std::vector<double> weight;     // per sample (P1 and Q1 only)
+};
+
+// u: 2 per node.
+RecoveredStress patch_recovered_stresses(const Mesh &mesh, const std::vector<PlaneLaw> &laws,
+                                         const LineMeasure &measure, bool bbar, const std::vector<double> &u);
 
 }  // namespace mc
