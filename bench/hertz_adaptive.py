@@ -1,27 +1,31 @@
 #!/usr/bin/env python3
-"""Adaptive refinement against uniform refinement on the Hertz scene (docs/benchmarks.md,
-"Adaptive refinement"), with the scene runner.
+"""Adaptive refinement against uniform refinement on the Hertz scene and on the two-cylinder
+scene (docs/benchmarks.md, "Adaptive refinement"), with the scene runner.
 
-Three ways to refine examples/runner/hertz/hertz.geo (hertz.json's scene, no output files), for
-first-order (P1) and second-order (T6, gmsh -order 2) triangles:
-  - adaptive: mortarcontact-run's "adaptive" from the coarse mesh h = 0.1, h_far = 0.5, one run
-    per target error (the runner meshes, solves and remeshes until its estimate is below the
-    target); DOFs, estimate, p0 and times of every step as the runner prints them;
+--scene hertz (the default): examples/runner/hertz/hertz.geo (hertz.json's scene), coarse mesh
+h = 0.1, h_far = 0.5. --scene cylinders: examples/runner/cylinders_adaptive/cylinders.geo
+(cylinders_adaptive.json's scene without its "adaptive": R = 1 on R = 3, bench/cylinders_layout.c's
+bodies), coarse mesh h = 0.05, h_far = 0.2. No output files. Three ways to refine the scene's
+.geo, for first-order (P1) and second-order (T6, gmsh -order 2) triangles:
+  - adaptive: mortarcontact-run's "adaptive" from the coarse mesh, one run per target error (the
+    runner meshes, solves and remeshes until its estimate is below the target); DOFs, estimate,
+    p0 and times of every step as the runner prints them;
   - uniform: the same coarse mesh refined everywhere: h and h_far divided by sqrt(2) per size;
-  - graded by hand: hertz.geo's own field, h divided by sqrt(2) per size near the contact and
-    h_far = 0.5 kept (the scene's meshes of docs/scene_format.md).
+  - graded by hand: the .geo's own field, h divided by sqrt(2) per size near the contact and
+    the coarse h_far kept.
 For each: the DOFs and the time at which the estimate (MC_INFO_ERROR_ESTIMATE) first reaches
-each target, and p0 against the converged p0 of this finite scene (the Q9 reference of
-bench/hertz_quadratic, -0.179 % from Hertz's half-space value; docs/benchmarks.md): the first
-mesh from which |p0 error| stays below 1 % and 0.1 % (for the adaptive runs, the smallest such
-mesh over all of them). Times are wall seconds: for the adaptive run the whole of it (every
+each target, and p0 against the converged p0 of this finite scene (Hertz: the Q9 reference of
+bench/hertz_quadratic, -0.179 % from Hertz's half-space value; cylinders: -0.573 % from Hertz's
+value, T6 meshes graded to h = 0.001 and 0.0007, 8.4e5 and 1.6e6 DOFs, agreeing to 0.001 %;
+docs/benchmarks.md): the first mesh from which |p0 error| stays below 1 % and 0.1 % (for the
+adaptive runs, the smallest such mesh over all of them). Times are wall seconds: for the adaptive run the whole of it (every
 Gmsh run and solve, from the coarse mesh), for a fixed mesh Gmsh and the runner on that mesh
 alone. And the rate of the adaptive meshes: one run per target of a sequence (--sequence-p1,
 --sequence-t6), the estimate reached against the DOFs of the last step, fitted by least
 squares.
 
-usage: /usr/bin/python3 bench/hertz_adaptive.py [--runner build/examples/runner/mortarcontact-run]
-           [--gmsh gmsh] [--work /tmp/hertz_adaptive] [--orders 1 2] [--targets 0.01 0.001]
+usage: /usr/bin/python3 bench/hertz_adaptive.py [--scene hertz|cylinders] [--runner build/examples/runner/mortarcontact-run]
+           [--gmsh gmsh] [--work /tmp/<scene>_adaptive] [--orders 1 2] [--targets 0.01 0.001]
            [--max-dofs 1500000] [--sequence-p1 0.04 0.02 0.01 0.005]
            [--sequence-t6 0.02 0.01 0.005 0.002 0.001 0.0005] [--quick]
 """
@@ -33,16 +37,34 @@ import re
 import subprocess
 import time
 
-P0_REFERENCE = -0.179e-2  # the converged p0 of this scene against Hertz (bench/hertz_quadratic's Q9 reference)
-H0, H_FAR0 = 0.1, 0.5      # the coarse start mesh
+# Per scene: the .geo and the scene file under examples/runner, the converged p0 of the finite
+# scene against Hertz's value, the coarse start mesh (h at the contact, h_far far from it).
+SCENES = {
+    # bench/hertz_quadratic's Q9 reference
+    "hertz": {"geo": ("hertz", "hertz.geo"), "json": ("hertz", "hertz.json"), "p0_reference": -0.179e-2,
+              "h": 0.1, "h_far": 0.5},
+    # T6, mortar normals, cylinders.geo graded to h = 0.002, 0.001, 0.0007 (h_far 0.03 to 0.015,
+    # 2.8e5 to 1.6e6 DOFs): -0.572, -0.574, -0.573 % from Hertz
+    "cylinders": {"geo": ("cylinders_adaptive", "cylinders.geo"),
+                  "json": ("cylinders_adaptive", "cylinders_adaptive.json"), "p0_reference": -0.573e-2,
+                  "h": 0.05, "h_far": 0.2},
+}
+SCENE = SCENES["hertz"]
+P0_REFERENCE = SCENE["p0_reference"]  # the converged p0 of this scene against Hertz
+H0, H_FAR0 = SCENE["h"], SCENE["h_far"]  # the coarse start mesh
+
+
+def scene_path(here, key):
+    return os.path.abspath(os.path.join(here, "..", "examples", "runner", *SCENE[key]))
 
 
 def scene(here, work, mesh, adaptive=None):
-    with open(os.path.join(here, "..", "examples", "runner", "hertz", "hertz.json")) as f:
+    with open(scene_path(here, "json")) as f:
         s = json.load(f)
     for b in s["bodies"]:
         b["mesh"] = mesh
     s.pop("output", None)
+    s.pop("adaptive", None)
     if adaptive:
         s["adaptive"] = adaptive
     return s
@@ -55,11 +77,11 @@ def p0_vs_reference(p0_vs_hertz):
 def run_adaptive(args, here, order, target):
     work = os.path.join(args.work, "adaptive_p%d_%g" % (order, target))
     os.makedirs(work, exist_ok=True)
-    geo = os.path.abspath(os.path.join(here, "..", "examples", "runner", "hertz", "hertz.geo"))
-    s = scene(here, work, "hertz.msh", {
+    geo = scene_path(here, "geo")
+    s = scene(here, work, "scene.msh", {
         "geo": geo, "target_error": target, "order": order, "max_steps": 12, "max_dofs": args.max_dofs,
         "gmsh_arguments": ["-setnumber", "h", str(H0), "-setnumber", "h_far", str(H_FAR0)]})
-    path = os.path.join(work, "hertz.json")
+    path = os.path.join(work, "scene.json")
     with open(path, "w") as f:
         json.dump(s, f, indent=1)
     start = time.monotonic()
@@ -79,15 +101,15 @@ def run_adaptive(args, here, order, target):
 def run_fixed(args, here, order, h, h_far):
     work = os.path.join(args.work, "fixed_p%d" % order)
     os.makedirs(work, exist_ok=True)
-    geo = os.path.join(here, "..", "examples", "runner", "hertz", "hertz.geo")
-    path = os.path.join(work, "hertz.json")
+    geo = scene_path(here, "geo")
+    path = os.path.join(work, "scene.json")
     with open(path, "w") as f:
-        json.dump(scene(here, work, "hertz.msh"), f, indent=1)
+        json.dump(scene(here, work, "scene.msh"), f, indent=1)
     start = time.monotonic()
     command = [args.gmsh, "-2", "-format", "msh41", "-setnumber", "h", repr(h), "-setnumber", "h_far", repr(h_far)]
     if order == 2:
         command += ["-order", "2"]
-    subprocess.run(command + [geo, "-o", os.path.join(work, "hertz.msh")], check=True, stdout=subprocess.DEVNULL)
+    subprocess.run(command + [geo, "-o", os.path.join(work, "scene.msh")], check=True, stdout=subprocess.DEVNULL)
     gmsh = time.monotonic() - start
     out = subprocess.run([args.runner, "--quiet", path], check=True, capture_output=True, text=True).stdout
     wall = time.monotonic() - start
@@ -118,10 +140,12 @@ def first(rows, test):
 
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
+    global SCENE, P0_REFERENCE, H0, H_FAR0
     parser = argparse.ArgumentParser()
+    parser.add_argument("--scene", choices=sorted(SCENES), default="hertz")
     parser.add_argument("--runner", default=os.path.join(here, "..", "build", "examples", "runner", "mortarcontact-run"))
     parser.add_argument("--gmsh", default="gmsh")
-    parser.add_argument("--work", default="/tmp/hertz_adaptive")
+    parser.add_argument("--work", default=None, help="default /tmp/<scene>_adaptive")
     parser.add_argument("--orders", type=int, nargs="+", default=[1, 2])
     parser.add_argument("--targets", type=float, nargs="+", default=[0.01, 0.001])
     parser.add_argument("--max-dofs", type=int, default=1500000)
@@ -129,6 +153,10 @@ def main():
     parser.add_argument("--sequence-t6", type=float, nargs="*", default=[0.02, 0.01, 0.005, 0.002, 0.001, 0.0005])
     parser.add_argument("--quick", action="store_true", help="P1 and T6 to 1 %% only, fixed meshes to 2e5 DOFs")
     args = parser.parse_args()
+    SCENE = SCENES[args.scene]
+    P0_REFERENCE, H0, H_FAR0 = SCENE["p0_reference"], SCENE["h"], SCENE["h_far"]
+    if args.work is None:
+        args.work = "/tmp/%s_adaptive" % args.scene
     if args.quick:
         args.targets, args.max_dofs, args.sequence_p1, args.sequence_t6 = [0.01], 200000, [], []
     args.runner = os.path.abspath(args.runner)
@@ -175,8 +203,8 @@ def main():
                 k += 1
                 if row["estimate"] <= min(args.targets) or row["dofs"] * 2 > args.max_dofs:
                     break
-            print("\n%s %s (h, h_far of hertz.geo; gmsh + runner on each mesh alone), estimate ~ DOFs^%.2f over the "
-                  "finer half:" % (kind, name, -rate(rows)))
+            print("\n%s %s (h, h_far of %s; gmsh + runner on each mesh alone), estimate ~ DOFs^%.2f over the "
+                  "finer half:" % (kind, name, SCENE["geo"][1], -rate(rows)))
             print("| h | h_far | DOFs | estimate | p0 vs ref | gmsh + solve s |")
             print("|---|---|---|---|---|---|")
             for r in rows:
