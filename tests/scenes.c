@@ -2,6 +2,7 @@
 #include "scenes.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -440,3 +441,28 @@ void sc_isotropic_law(double young, double poisson, int plane, double D[9], doub
   }
 }
 
+
+mc_model *sc_axisymmetric_shrink_fit(const sc_mesh *shaft, const sc_mesh *hub, double young, double nu, double delta) {
+  mc_model *m = NULL;
+  mc_int k, n = shaft->n_side_nodes[SC_RIGHT];
+  double *offset = malloc(sizeof(double) * (size_t)n);
+  mc_status st = mc_create(&m);
+  for (k = 0; k < n; ++k) offset[k] = -delta;
+  if (st == MC_OK) st = mc_set_plane(m, MC_AXISYMMETRIC, 1);
+  if (st == MC_OK) st = sc_set_mesh(m, 1, shaft, 0);
+  if (st == MC_OK) st = sc_set_mesh(m, 2, hub, 0);
+  if (st == MC_OK) st = mc_set_material(m, 1, young, nu);
+  if (st == MC_OK) st = mc_set_material(m, 2, young, nu);
+  if (st == MC_OK) st = sc_fix_side(m, 1, shaft, SC_BOTTOM, MC_Y, 0);
+  if (st == MC_OK) st = sc_fix_side(m, 2, hub, SC_BOTTOM, MC_Y, 0);
+  if (st == MC_OK) st = mc_set_contact(m, 1, shaft->n_side_edges[SC_RIGHT], shaft->side_edges[SC_RIGHT]);
+  if (st == MC_OK) st = mc_set_contact(m, 2, hub->n_side_edges[SC_LEFT], hub->side_edges[SC_LEFT]);
+  if (st == MC_OK) st = mc_set_gap_offset(m, n, shaft->side_nodes[SC_RIGHT], offset);
+  free(offset);
+  if (st != MC_OK) {
+    fprintf(stderr, "sc_axisymmetric_shrink_fit: %s\n", mc_errmsg(m));
+    mc_destroy(m);
+    return NULL;
+  }
+  return m;
+}

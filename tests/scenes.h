@@ -109,6 +109,13 @@ void sc_errors(const sc_mesh *mesh, const double *u, sc_field exact, void *ctx, 
    sigma_zz = zz[0]*eps_xx + zz[1]*eps_yy (0 for plane stress). zz may be NULL. */
 void sc_isotropic_law(double young, double poisson, int plane, double D[9], double zz[2]);
 
+/* The axisymmetric shrink fit (test_axisymmetric, test_quadratic, test_error_estimate): a new
+   axisymmetric model with the solid shaft (body 1, its right side r = b the contact surface) and
+   the hub (body 2, its left side r = b), one material (young, nu), rollers on both bottoms
+   (z = 0), and the radial interference delta as gap offsets on every node of the shaft's
+   surface. Returns the model (NULL and a message on stderr if a call failed). */
+mc_model *sc_axisymmetric_shrink_fit(const sc_mesh *shaft, const sc_mesh *hub, double young, double nu, double delta);
+
 /* Deterministic uniform random numbers in [0, 1) (xorshift), independent of rand(). */
 double sc_random(unsigned *state);
 

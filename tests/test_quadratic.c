@@ -487,21 +487,9 @@ START_TEST(axisymmetric_shrink_fit_quadratic_lame) {
       sc_mesh shaft, hub;
       ck_assert_int_eq(sc_mesh_cells(&shaft, kinds[k], 8, 12, 0, 0, b, length, 0), 0);
       ck_assert_int_eq(sc_mesh_cells(&hub, kinds[k], 8, 17, b, 0, c - b, length, 1), 0);
-      mc_model *m = NULL;
-      ck_assert_int_eq(mc_create(&m), MC_OK);
-      OK(mc_set_plane(m, MC_AXISYMMETRIC, 1));
-      OK(sc_set_mesh(m, 1, &shaft, 0));
-      OK(sc_set_mesh(m, 2, &hub, 0));
-      OK(mc_set_material(m, 1, young, nu));
-      OK(mc_set_material(m, 2, young, nu));
-      OK(sc_fix_side(m, 1, &shaft, SC_BOTTOM, MC_Y, 0));
-      OK(sc_fix_side(m, 2, &hub, SC_BOTTOM, MC_Y, 0));
-      OK(mc_set_contact(m, 1, shaft.n_side_edges[SC_RIGHT], shaft.side_edges[SC_RIGHT]));
-      OK(mc_set_contact(m, 2, hub.n_side_edges[SC_LEFT], hub.side_edges[SC_LEFT]));
+      mc_model *m = sc_axisymmetric_shrink_fit(&shaft, &hub, young, nu, delta);
+      ck_assert_ptr_nonnull(m);
       const mc_int n = shaft.n_side_nodes[SC_RIGHT];
-      double *offset = malloc(sizeof(double) * (size_t)n);
-      for (mc_int j = 0; j < n; ++j) offset[j] = -delta;
-      OK(mc_set_gap_offset(m, n, shaft.side_nodes[SC_RIGHT], offset));
       OK(mc_set_option_int(m, MC_OPTION_METHOD, method));
       SUCCEEDS(mc_solve(m));
       contact_data cd = contact_get(m);
@@ -513,7 +501,6 @@ START_TEST(axisymmetric_shrink_fit_quadratic_lame) {
       if (method == MC_METHOD_MORTAR)
         ck_assert_msg(worst < 1e-3, "%s: a pressure %.3f %% off Lame", kind_name(kinds[k]), 100 * worst);
       contact_free(&cd);
-      free(offset);
       mc_destroy(m);
       sc_mesh_free(&shaft), sc_mesh_free(&hub);
     }
