@@ -17,6 +17,7 @@
  * the axisymmetric contact solve against the plane-strain solve of the same meshes
  * (MC_INFO_TIME_TOTAL). docs/benchmarks.md, "Axisymmetric: sphere on a flat", holds a run.
  */
+#include "cell_kind_name.h"
 #include "mortarcontact.h"
 #include "sphere_on_flat.h"
 #include <math.h>
@@ -31,10 +32,6 @@ typedef struct kind_row {
   double err; /* max(|p0 error|, |a error|) */
 } kind_row;
 
-static const char *kind_name(int npc) {
-  return npc == 3 ? "P1" : npc == 4 ? "Q1" : npc == 6 ? "T6" : npc == 8 ? "Q8" : npc == 9 ? "Q9" : "?";
-}
-
 /* The cell kinds side by side: see the file header. */
 static int compare_kinds(int argc, char **argv) {
   static kind_row rows[128];
@@ -43,7 +40,7 @@ static int compare_kinds(int argc, char **argv) {
     const char *colon = strchr(argv[i], ':');
     int npc = 0;
     for (int k = 3; k <= 9; ++k)
-      if (colon && colon - argv[i] == 2 && !strncmp(argv[i], kind_name(k), 2)) npc = k;
+      if (colon && colon - argv[i] == 2 && !strncmp(argv[i], cell_kind_name(k), 2)) npc = k;
     if (!npc) {
       fprintf(stderr, "cells: expected KIND:h,h,... (KIND: P1 Q1 T6 Q8 Q9), got %s\n", argv[i]);
       return 2;
@@ -65,7 +62,7 @@ static int compare_kinds(int argc, char **argv) {
     kind_row *w = &rows[i];
     int st = sphere_on_flat_solve_cells(w->h, w->npc, MC_METHOD_MORTAR, MC_NORMAL_MORTAR, MC_AXISYMMETRIC, &w->r);
     if (st) {
-      printf("| %s | %g | failed (%d) |\n", kind_name(w->npc), w->h, st);
+      printf("| %s | %g | failed (%d) |\n", cell_kind_name(w->npc), w->h, st);
       return 1;
     }
     w->err = fmax(fabs(w->r.p0 / w->r.p0_hertz - 1), fabs(w->r.a / w->r.a_hertz - 1));
@@ -83,7 +80,7 @@ static int compare_kinds(int argc, char **argv) {
   for (int k = m - 1; k >= 0; --k) env[k] = fmax(rows[p1[k]].err, k + 1 < m ? env[k + 1] : 0);
   for (int i = 0; i < n; ++i) {
     const kind_row *w = &rows[i];
-    printf("| %s | %g | %ld | %.5g | %+.2f %% | %.5g | %+.2f %% | %.2f %% | %.3f |", kind_name(w->npc), w->h, w->r.dofs,
+    printf("| %s | %g | %ld | %.5g | %+.2f %% | %.5g | %+.2f %% | %.2f %% | %.3f |", cell_kind_name(w->npc), w->h, w->r.dofs,
            w->r.p0, 100 * (w->r.p0 / w->r.p0_hertz - 1), w->r.a, 100 * (w->r.a / w->r.a_hertz - 1), 100 * w->err,
            w->r.seconds);
     double dofs = NAN;

@@ -58,6 +58,7 @@
  *   its numbers mean nothing). Exit status 1 if a solve failed or a measure is not finite.
  */
 #define _POSIX_C_SOURCE 200809L
+#include "cell_kind_name.h"
 #include "bench_timing.h"
 #include "contact_half_width.h"
 #include "hertz_scene.h"
@@ -89,17 +90,6 @@ typedef struct solution {
   double estimate;               /* MC_INFO_ERROR_ESTIMATE (relative) */
   long far_points;
 } solution;
-
-static const char *kind_name(int npc) {
-  switch (npc) {
-  case 3: return "P1";
-  case 4: return "Q1";
-  case 6: return "T6";
-  case 8: return "Q8";
-  case 9: return "Q9";
-  }
-  return "?";
-}
 
 static int kind_npc(const char *s, size_t len) {
   static const char *names[] = {"P1", "Q1", "T6", "Q8", "Q9"};
@@ -496,7 +486,7 @@ static void solve(solution *r, int repeat, double ratio, hertz_scene *keep) {
   hertz_scene s;
   double times[MAX_REPEAT];
   if (hertz_scene_build_cells(&s, r->h1, ratio * r->h1, r->npc) != 0) {
-    snprintf(r->message, sizeof r->message, "hertz_scene_build_cells(h1 = %g, %s) failed", r->h1, kind_name(r->npc));
+    snprintf(r->message, sizeof r->message, "hertz_scene_build_cells(h1 = %g, %s) failed", r->h1, cell_kind_name(r->npc));
     return;
   }
   for (int k = 0; k < repeat; ++k) {
@@ -651,7 +641,7 @@ int main(int argc, char **argv) {
   /* the reference, then the checks against it */
   solve(&ref, 1, ratio, &ref_scene);
   if (!ref.ok) {
-    printf("reference %s h1 = %g failed: %s\n", kind_name(ref.npc), ref.h1, ref.message);
+    printf("reference %s h1 = %g failed: %s\n", cell_kind_name(ref.npc), ref.h1, ref.message);
     return 1;
   }
   {
@@ -665,7 +655,7 @@ int main(int argc, char **argv) {
   printf("Reference: %s h1 = %g, %ld DOFs, %.2f s: p0 = %.8g (%+.3f %% from Hertz), a_moment = %.8g (%+.3f %%; the "
          "reference a), contact_half_width over the corners %.8g (%+.3f %%), over every position %.8g (%+.3f %%), "
          "W = %.10g\n",
-         kind_name(ref.npc), ref.h1, ref.dofs, ref.t_wall, ref.p0, 100 * rel(ref.p0, p0_hertz), ref.a_moment,
+         cell_kind_name(ref.npc), ref.h1, ref.dofs, ref.t_wall, ref.p0, 100 * rel(ref.p0, p0_hertz), ref.a_moment,
          100 * rel(ref.a_moment, a_hertz), ref.a_vertex, 100 * rel(ref.a_vertex, a_hertz), ref.a,
          100 * rel(ref.a, a_hertz), ref.energy);
   if (n_checks)
@@ -676,12 +666,12 @@ int main(int argc, char **argv) {
     solution *r = &checks[c];
     solve(r, 1, ratio, NULL);
     if (!r->ok) {
-      printf("| %s | %g | FAILED: %s |\n", kind_name(r->npc), r->h1, r->message);
+      printf("| %s | %g | FAILED: %s |\n", cell_kind_name(r->npc), r->h1, r->message);
       continue;
     }
     double d, nb;
     profile_l2(r, &ref, 0.5, &d, &nb);
-    printf("| %s | %g | %ld | %.2f | %+.4f %% | %+.2f %% | %+.4f %% | %.2e | %.2e | %+.2e |\n", kind_name(r->npc), r->h1,
+    printf("| %s | %g | %ld | %.2f | %+.4f %% | %+.2f %% | %+.4f %% | %.2e | %.2e | %+.2e |\n", cell_kind_name(r->npc), r->h1,
            r->dofs, r->t_wall, 100 * rel(r->p0, ref.p0), 100 * rel(r->a_vertex, a_ref), 100 * rel(r->a_moment, a_ref),
            d / nb, sqrt(r->local_err2 / r->local_ref2), rel(r->energy, ref.energy));
     fflush(stdout);
@@ -700,7 +690,7 @@ int main(int argc, char **argv) {
     solution *r = &runs[i];
     solve(r, repeat, ratio, NULL);
     if (!r->ok) {
-      printf("| %s | %g | FAILED: %s |\n", kind_name(r->npc), r->h1, r->message);
+      printf("| %s | %g | FAILED: %s |\n", cell_kind_name(r->npc), r->h1, r->message);
       failed = 1;
       continue;
     }
@@ -711,7 +701,7 @@ int main(int argc, char **argv) {
     err_w[i] = sqrt(fabs(r->energy - ref.energy) / ref.energy);
     if (!isfinite(err_p0[i]) || !isfinite(err_energy[i]) || r->far_points) failed = 1;
     printf("| %s | %g | %ld | %.4f | %+.3f %% | %+.3f %% | %+.2f %% | %+.2f %% | %+.3f %% | %.2e | %.2e | %.2e |\n",
-           kind_name(r->npc), r->h1, r->dofs, r->t_wall, 100 * err_p0[i], 100 * rel(r->p0, p0_hertz), 100 * err_a[i],
+           cell_kind_name(r->npc), r->h1, r->dofs, r->t_wall, 100 * err_p0[i], 100 * rel(r->p0, p0_hertz), 100 * err_a[i],
            100 * rel(r->a_vertex, a_hertz), 100 * err_am[i], err_l2[i], err_energy[i], err_w[i]);
     if (region[0] == -4) {
       /* --global: the estimate against the energy error of both bodies (relative to the
@@ -727,7 +717,7 @@ int main(int argc, char **argv) {
               "\"a_all_positions\": %.17g, \"a_moment\": %.17g, \"energy\": %.17g, "
               "\"force_sum\": %.17g, \"err_p0\": %.6g, \"err_a\": %.6g, \"err_a_moment\": %.6g, \"err_l2\": %.6g, "
               "\"err_energy_local\": %.6g, \"err_energy_global\": %.6g, \"far_points\": %ld, \"repeat\": %d}",
-              i ? ",\n" : "", kind_name(r->npc), r->h1, ratio * r->h1, r->dofs, r->positions, r->active, r->iterations,
+              i ? ",\n" : "", cell_kind_name(r->npc), r->h1, ratio * r->h1, r->dofs, r->positions, r->active, r->iterations,
               r->t_wall, r->t_library, r->p0, json_number(r->a_vertex), json_number(r->a), r->a_moment,
               r->energy, r->force_sum, err_p0[i], json_number(err_a[i]), err_am[i], err_l2[i],
               err_energy[i], err_w[i], r->far_points, repeat);
@@ -744,7 +734,7 @@ int main(int argc, char **argv) {
   for (int i = 1; i < n_runs; ++i) {
     const solution *r0 = &runs[i - 1], *r1 = &runs[i];
     if (r0->npc != r1->npc || !r0->ok || !r1->ok) continue;
-    printf("| %s | %g -> %g | %ld -> %ld |", kind_name(r1->npc), r0->h1, r1->h1, r0->dofs, r1->dofs);
+    printf("| %s | %g -> %g | %ld -> %ld |", cell_kind_name(r1->npc), r0->h1, r1->h1, r0->dofs, r1->dofs);
     for (int k = 0; k < 5; ++k)
       printf(" %.2f / %.2f |", slope(fabs(errs[k][i - 1]), fabs(errs[k][i]), r0->h1, r1->h1),
              -slope(fabs(errs[k][i - 1]), fabs(errs[k][i]), (double)r0->dofs, (double)r1->dofs));
@@ -754,7 +744,7 @@ int main(int argc, char **argv) {
     int any = 0;
     for (int i = 0; i < n_runs; ++i) any |= runs[i].ok && runs[i].npc == kinds[q];
     if (!any) continue;
-    printf("| %s | all sizes, least squares | |", kind_name(kinds[q]));
+    printf("| %s | all sizes, least squares | |", cell_kind_name(kinds[q]));
     for (int k = 0; k < 5; ++k)
       printf(" %.2f / %.2f |", fitted_slope(runs, errs[k], n_runs, kinds[q], 0), -fitted_slope(runs, errs[k], n_runs, kinds[q], 1));
     printf("\n");
@@ -772,7 +762,7 @@ int main(int argc, char **argv) {
   printf("\nAt equal error: DOFs (and time s) from which on the error stays at or below the level (log-log "
          "interpolated between the two sizes where it gets there; '<=': already at the coarsest size; '-': not "
          "within the sizes run); in brackets the ratio to P1's\n\n| error | level |");
-  for (int q = 0; q < 5; ++q) printf(" %s |", kind_name(kinds[q]));
+  for (int q = 0; q < 5; ++q) printf(" %s |", cell_kind_name(kinds[q]));
   printf("\n|---|---|---|---|---|---|---|\n");
   for (size_t m = 0; m < sizeof measures / sizeof measures[0]; ++m)
     for (int l = 0; l < 5 && measures[m].levels[l] > 0; ++l) {

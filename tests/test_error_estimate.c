@@ -11,6 +11,7 @@
  *   hold most of the true error;
  * - MC_OPTION_ERROR_ESTIMATE = 0: no estimate, mc_get_error_indicator refuses; a host body has none.
  */
+#include "cell_kind_name.h"
 #include "check_helpers.h"
 #include "host_assembly.h"
 #include "mortarcontact.h"
@@ -22,10 +23,6 @@
 #include <string.h>
 
 #define PI 3.14159265358979323846
-
-static const char *kind_name(int npc) {
-  return npc == 3 ? "P1" : npc == 4 ? "Q1" : npc == 6 ? "T6" : npc == 8 ? "Q8" : "Q9";
-}
 
 static double info_real(mc_model *m, int info) {
   double v = 0;
@@ -181,10 +178,10 @@ START_TEST(effectivity_axisymmetric_shrink_fit) {
       const double ratio = e.estimate / e.true_error;
       printf("axisymmetric shrink fit, %s, %ld DOFs: true energy error %.3e, estimate %.3e (relative %.2e), "
              "effectivity %.3f; the hub's indicators against its cells' true errors: correlation %.3f\n",
-             kind_name(kinds[k]), e.dofs, e.true_error, e.estimate, e.relative, ratio, e.correlation);
-      ck_assert_msg(ratio >= 0.7 && ratio <= 1.5, "%s: effectivity %.3f", kind_name(kinds[k]), ratio);
+             cell_kind_name(kinds[k]), e.dofs, e.true_error, e.estimate, e.relative, ratio, e.correlation);
+      ck_assert_msg(ratio >= 0.7 && ratio <= 1.5, "%s: effectivity %.3f", cell_kind_name(kinds[k]), ratio);
       ck_assert_msg(e.correlation >= 0.9, "%s: indicators against true cell errors: correlation %.3f",
-                    kind_name(kinds[k]), e.correlation);
+                    cell_kind_name(kinds[k]), e.correlation);
     }
 }
 END_TEST
@@ -267,7 +264,7 @@ static double plane_strain_shrink_fit(int npc, int level, long *dofs_out) {
   OK(mc_get_info_int(m, MC_INFO_DOFS, &dofs));
   *dofs_out = (long)dofs;
   printf("plane-strain shrink fit (quarter rings), %s, %ld DOFs: true energy error %.3e, estimate %.3e, effectivity %.3f\n",
-         kind_name(npc), (long)dofs, sqrt(err2), absolute_estimate(m), ratio);
+         cell_kind_name(npc), (long)dofs, sqrt(err2), absolute_estimate(m), ratio);
   mc_destroy(m);
   sc_mesh_free(&shaft), sc_mesh_free(&hub);
   return ratio;
@@ -279,7 +276,7 @@ START_TEST(effectivity_plane_strain_shrink_fit) {
     for (int level = 1; level < 3; ++level) { /* (the coarsest, 2 cells across the shaft: 1.7 to 2.4) */
       long dofs;
       const double ratio = plane_strain_shrink_fit(kinds[k], level, &dofs);
-      ck_assert_msg(ratio >= 0.7 && ratio <= 1.5, "%s: effectivity %.3f", kind_name(kinds[k]), ratio);
+      ck_assert_msg(ratio >= 0.7 && ratio <= 1.5, "%s: effectivity %.3f", cell_kind_name(kinds[k]), ratio);
     }
 }
 END_TEST
@@ -317,8 +314,8 @@ START_TEST(patch_tests_estimate_round_off) {
   const int pairs[6][2] = {{3, 3}, {4, 6}, {6, 4}, {8, 9}, {9, 3}, {6, 8}};
   for (int k = 0; k < 6; ++k) {
     const double e = patch_estimate(pairs[k][0], pairs[k][1]);
-    printf("contact patch test, %s on %s: estimate %.2e\n", kind_name(pairs[k][0]), kind_name(pairs[k][1]), e);
-    ck_assert_msg(e <= 1e-10, "%s on %s: estimate %g", kind_name(pairs[k][0]), kind_name(pairs[k][1]), e);
+    printf("contact patch test, %s on %s: estimate %.2e\n", cell_kind_name(pairs[k][0]), cell_kind_name(pairs[k][1]), e);
+    ck_assert_msg(e <= 1e-10, "%s on %s: estimate %g", cell_kind_name(pairs[k][0]), cell_kind_name(pairs[k][1]), e);
   }
 }
 END_TEST

@@ -22,6 +22,7 @@
  * - bad input, each refused naming the argument and index, the model usable after it; the calls
  *   a host body refuses.
  */
+#include "cell_kind_name.h"
 #include "check_helpers.h"
 #include "hertz_scene.h"
 #include "host_assembly.h"
@@ -34,15 +35,6 @@
 #include <string.h>
 
 static const int kKinds[5] = {3, 4, 6, 8, 9};
-static const char *kind_name(int npc) {
-  switch (npc) {
-    case 3: return "P1";
-    case 4: return "Q1";
-    case 6: return "T6";
-    case 8: return "Q8";
-    default: return "Q9";
-  }
-}
 static double max_abs_of(const double *v, size_t n) {
   double s = 0;
   for (size_t i = 0; i < n; ++i) s = fmax(s, fabs(v[i]));
@@ -601,12 +593,12 @@ static void run_comparison(const scene_def *s, const run_options *o, worst_of *w
   for (int k = 0; k < 2; ++k) {
     const variant *v = &o->v[k];
     if (host[k])
-      snprintf(what[k], sizeof what[k], "host %s (%s, %s, restrained %s, %s%s%s)", kind_name(s->b[k].npc),
+      snprintf(what[k], sizeof what[k], "host %s (%s, %s, restrained %s, %s%s%s)", cell_kind_name(s->b[k].npc),
                kInputName[v->input], kNumberingName[v->numbering], v->given ? "given" : "absent",
                v->subset ? "contact nodes only" : "all nodes", v->nodal_force ? ", nodal forces" : "",
                k == 0 ? ", floating" : "");
     else
-      snprintf(what[k], sizeof what[k], "mesh %s%s", kind_name(s->b[k].npc),
+      snprintf(what[k], sizeof what[k], "mesh %s%s", cell_kind_name(s->b[k].npc),
                o->curved && s->b[k].npc > 4 ? " (mc_set_contact_curved)" : "");
   }
   printf("%s, base %d, %s, %s%s; body 1 %s; body 2 %s: host - mesh: u %.1e, p %.1e, contact load %.1e; K u - f - r %.1e; "
@@ -873,8 +865,8 @@ START_TEST(layered_orthotropic_host_body_patch_test) {
       layered_patch(kKinds[k], kKinds[(k + 3) % 5], method, solver, &ep, &eu, &er);
       printf("layered orthotropic %s host body%s on a mesh %s, %s, %s: pressure %.1e p, displacement %.1e, K u - f - r "
              "%.1e\n",
-             kind_name(kKinds[k]), kKinds[k] == 3 || kKinds[k] == 6 ? "" : " (two sub-layers per cell)",
-             kind_name(kKinds[(k + 3) % 5]), kMethodName[method], solver == MC_INTERFACE_SPARSE ? "sparse" : "condensed", ep,
+             cell_kind_name(kKinds[k]), kKinds[k] == 3 || kKinds[k] == 6 ? "" : " (two sub-layers per cell)",
+             cell_kind_name(kKinds[(k + 3) % 5]), kMethodName[method], solver == MC_INTERFACE_SPARSE ? "sparse" : "condensed", ep,
              eu, er);
       worst_p = fmax(worst_p, ep), worst_u = fmax(worst_u, eu), worst_res = fmax(worst_res, er);
     }

@@ -14,6 +14,7 @@
  * - bad input: nodes per cell, a folded curved cell, a mid-edge node shared inconsistently, an
  *   edge named by a mid-edge node, dual mortar on a quadratic body 1; the model stays usable.
  */
+#include "cell_kind_name.h"
 #include "check_helpers.h"
 #include "contact_checks.h"
 #include "mortarcontact.h"
@@ -27,16 +28,6 @@
 #define PI 3.14159265358979323846
 
 static const int kKinds[5] = {3, 4, 6, 8, 9};
-static const char *kind_name(int npc) {
-  switch (npc) {
-    case 3: return "P1";
-    case 4: return "Q1";
-    case 6: return "T6";
-    case 8: return "Q8";
-    default: return "Q9";
-  }
-}
-
 /* ---- a linear field ------------------------------------------------------------------------- */
 
 /* u = A x + c with a general A (plane), or u_r = a r, u_z = b z + c (axisymmetric): uniform
@@ -112,11 +103,11 @@ static void check_linear_field(int npc, int curved, int axisymmetric) {
   for (mc_int i = 0; i < mesh.n_nodes; ++i)
     for (int k = 0; k < 4; ++k) ds_node = fmax(ds_node, fabs(nodal[4 * i + k] - s[k]));
   printf("linear field, %s, %s, %s: displacement error %.1e, cell stress %.1e, nodal stress %.1e (relative)\n",
-         kind_name(npc), curved ? "curved" : "straight", axisymmetric ? "axisymmetric" : "plane strain", du / scale,
+         cell_kind_name(npc), curved ? "curved" : "straight", axisymmetric ? "axisymmetric" : "plane strain", du / scale,
          ds_cell / s_scale, ds_node / s_scale);
-  ck_assert_msg(du <= 1e-10 * scale, "%s: displacement off by %g", kind_name(npc), du / scale);
-  ck_assert_msg(ds_cell <= 1e-10 * s_scale, "%s: cell stress off by %g", kind_name(npc), ds_cell / s_scale);
-  ck_assert_msg(ds_node <= 1e-10 * s_scale, "%s: nodal stress off by %g", kind_name(npc), ds_node / s_scale);
+  ck_assert_msg(du <= 1e-10 * scale, "%s: displacement off by %g", cell_kind_name(npc), du / scale);
+  ck_assert_msg(ds_cell <= 1e-10 * s_scale, "%s: cell stress off by %g", cell_kind_name(npc), ds_cell / s_scale);
+  ck_assert_msg(ds_node <= 1e-10 * s_scale, "%s: nodal stress off by %g", cell_kind_name(npc), ds_node / s_scale);
   free(values), free(u), free(sigma), free(nodal);
   mc_destroy(m);
   sc_mesh_free(&mesh);
@@ -165,19 +156,19 @@ START_TEST(uniform_pressure_on_quadratic_edges_is_consistent) {
     edge_load_reactions(kKinds[k], 0, p, r); /* straight: the pressure pushes up with p per length */
     const double share[3] = {1.0 / 6, 1.0 / 6, 2.0 / 3};
     for (int a = 0; a < 3; ++a) {
-      ck_assert_msg(fabs(r[2 * a]) <= 1e-14, "%s: tangential reaction %g", kind_name(kKinds[k]), r[2 * a]);
+      ck_assert_msg(fabs(r[2 * a]) <= 1e-14, "%s: tangential reaction %g", cell_kind_name(kKinds[k]), r[2 * a]);
       ck_assert_msg(fabs(r[2 * a + 1] + share[a] * p) <= 1e-14, "%s: node %d reaction %g, expected %g",
-                    kind_name(kKinds[k]), a, r[2 * a + 1], -share[a] * p);
+                    cell_kind_name(kKinds[k]), a, r[2 * a + 1], -share[a] * p);
     }
     /* curved (the middle 0.15 below the chord): the resultant of a pressure on any curve from
        (0,0) to (1,0) is p (0, 1); the ends get less and the middle more, and x-forces appear */
     edge_load_reactions(kKinds[k], -0.15, p, r);
     printf("%s edge, middle 0.15 off the chord: reactions (%.6f, %.6f) (%.6f, %.6f) (%.6f, %.6f), sum (%.2e, %.15f)\n",
-           kind_name(kKinds[k]), r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7]);
-    ck_assert_msg(fabs(r[6]) <= 1e-14 && fabs(r[7] + p) <= 1e-14, "%s curved: resultant (%g, %g)", kind_name(kKinds[k]),
+           cell_kind_name(kKinds[k]), r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7]);
+    ck_assert_msg(fabs(r[6]) <= 1e-14 && fabs(r[7] + p) <= 1e-14, "%s curved: resultant (%g, %g)", cell_kind_name(kKinds[k]),
                   r[6], r[7]);
     /* the edge bulges out of the cell: the pressure pushes its ends towards each other */
-    ck_assert_msg(r[0] < 0 && r[2] > 0, "%s curved: the ends are not pushed together", kind_name(kKinds[k]));
+    ck_assert_msg(r[0] < 0 && r[2] > 0, "%s curved: the ends are not pushed together", cell_kind_name(kKinds[k]));
   }
 }
 END_TEST
@@ -255,7 +246,7 @@ START_TEST(flat_patch_test_every_pair_of_kinds) {
         const patch_errors e = flat_patch(kKinds[i], kKinds[j], solver);
         printf("flat patch, %s on %s, %s: %d contact nodes; errors: pressure %.1e p, stress %.1e p, nodal stress "
                "%.1e p, displacement %.1e\n",
-               kind_name(kKinds[i]), kind_name(kKinds[j]), solver == MC_INTERFACE_SPARSE ? "sparse" : "condensed",
+               cell_kind_name(kKinds[i]), cell_kind_name(kKinds[j]), solver == MC_INTERFACE_SPARSE ? "sparse" : "condensed",
                e.nodes, e.pressure, e.stress, e.nodal_stress, e.displacement);
         ck_assert_int_eq(e.nodes, kKinds[i] > 4 ? 11 : 6);
         worst.pressure = fmax(worst.pressure, e.pressure), worst.stress = fmax(worst.stress, e.stress);
@@ -336,8 +327,8 @@ START_TEST(zigzag_hydrostatic_patch_test_quadratic) {
     }
     printf("zigzag hydrostatic patch, %s on %s: %d contact positions; errors: pressures %.1e p, nodal stresses %.1e p, "
            "reactions %.1e p h\n",
-           kind_name(npc), kind_name(npc2), (int)c.n, pressure, stress, reaction);
-    ck_assert_msg(pressure <= 1e-10 && stress <= 1e-10 && reaction <= 1e-10, "%s: not exact", kind_name(npc));
+           cell_kind_name(npc), cell_kind_name(npc2), (int)c.n, pressure, stress, reaction);
+    ck_assert_msg(pressure <= 1e-10 && stress <= 1e-10 && reaction <= 1e-10, "%s: not exact", cell_kind_name(npc));
     contact_free(&c);
     mc_destroy(m);
     sc_mesh_free(&b1), sc_mesh_free(&b2);
@@ -497,9 +488,9 @@ START_TEST(axisymmetric_shrink_fit_quadratic_lame) {
       double worst = 0;
       for (mc_int j = 0; j < cd.n; ++j) worst = fmax(worst, fabs(cd.pressure[j] / lame - 1));
       printf("axisymmetric shrink fit, %s, %s: %d contact positions, every pressure within %.4f %% of Lame\n",
-             kind_name(kinds[k]), method == MC_METHOD_MORTAR ? "mortar" : "node-to-segment", (int)cd.n, 100 * worst);
+             cell_kind_name(kinds[k]), method == MC_METHOD_MORTAR ? "mortar" : "node-to-segment", (int)cd.n, 100 * worst);
       if (method == MC_METHOD_MORTAR)
-        ck_assert_msg(worst < 1e-3, "%s: a pressure %.3f %% off Lame", kind_name(kinds[k]), 100 * worst);
+        ck_assert_msg(worst < 1e-3, "%s: a pressure %.3f %% off Lame", cell_kind_name(kinds[k]), 100 * worst);
       contact_free(&cd);
       mc_destroy(m);
       sc_mesh_free(&shaft), sc_mesh_free(&hub);

@@ -17,41 +17,23 @@ usage: check_runner_cylinders_adaptive.py RUNNER GMSH RUNNER_SOURCE_DIR WORK_DIR
 
 import os
 import re
-import shutil
-import subprocess
 import sys
+
+from adaptive_target_run import check, p0_relative_error, run_to_target
 
 P0_REFERENCE = -0.573  # % from Hertz: the converged p0 of this scene
 
 
-def check(condition, message):
-    if not condition:
-        sys.exit("FAILED: " + message)
-
-
 def main():
     runner, gmsh, source, work = sys.argv[1:5]
-    shutil.rmtree(work, ignore_errors=True)
-    os.makedirs(work)
-    for name in ("cylinders.geo", "cylinders_adaptive.json"):
-        shutil.copy(os.path.join(source, "cylinders_adaptive", name), work)
-    result = subprocess.run([runner, "--gmsh", gmsh, "cylinders_adaptive.json"], cwd=work, stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True, check=False)
-    out = result.stdout
-    print(out)
-    check(result.returncode == 0, "the runner exited with %d:\n%s" % (result.returncode, result.stderr))
-    m = re.search(r"target reached at step (\d+): error estimate ([\d.]+) % <= 0.5 %", out)
-    check(m is not None, "no 'target reached' line")
-    check(int(m.group(1)) <= 5, "%s refinement steps, at most 5 expected" % m.group(1))
-    check(float(m.group(2)) <= 0.5, "estimate %s %% above the target" % m.group(2))
-    p0 = float(re.search(r"p0 = .*relative error (\S+) %", out).group(1))
+    out, _ = run_to_target(runner, gmsh, work, [os.path.join(source, "cylinders_adaptive", name)
+                                                for name in ("cylinders.geo", "cylinders_adaptive.json")],
+                           "cylinders_adaptive")
+    p0 = p0_relative_error(out)
     p0_vs_reference = 100 * ((1 + p0 / 100) / (1 + P0_REFERENCE / 100) - 1)
     check(abs(p0_vs_reference) <= 0.5, "p0 %+.3f %% from the converged value (0.5 %% allowed)" % p0_vs_reference)
     force = re.search(r"contact force on body 1: \((\S+), (\S+)\)", out)
     check(force is not None and abs(float(force.group(2)) - 0.01) <= 1e-8, "the contact force is not the load")
-    for name in ("cylinders_adaptive_steps.pvd", "cylinders_adaptive.pvd", "cylinders_adaptive_pressure.csv",
-                 "cylinders_adaptive_step%s_body1.vtu" % m.group(1)):
-        check(os.path.getsize(os.path.join(work, name)) > 0, "no " + name)
     print("ok")
 
 

@@ -16,38 +16,20 @@ usage: check_runner_hertz_adaptive.py RUNNER GMSH RUNNER_SOURCE_DIR WORK_DIR
 """
 
 import os
-import re
-import shutil
 import subprocess
 import sys
 
-
-def check(condition, message):
-    if not condition:
-        sys.exit("FAILED: " + message)
+from adaptive_target_run import check, p0_relative_error, run_to_target
 
 
 def main():
     runner, gmsh, source, work = sys.argv[1:5]
-    shutil.rmtree(work, ignore_errors=True)
-    os.makedirs(work)
-    shutil.copy(os.path.join(source, "hertz", "hertz.geo"), work)
-    shutil.copy(os.path.join(source, "hertz_adaptive", "hertz_adaptive.json"), work)
-    result = subprocess.run([runner, "--gmsh", gmsh, "hertz_adaptive.json"], cwd=work, stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True, check=False)
-    out = result.stdout
-    print(out)
-    check(result.returncode == 0, "the runner exited with %d:\n%s" % (result.returncode, result.stderr))
-    m = re.search(r"target reached at step (\d+): error estimate ([\d.]+) % <= 0.5 %", out)
-    check(m is not None, "no 'target reached' line")
-    check(int(m.group(1)) <= 5, "%s refinement steps, at most 5 expected" % m.group(1))
-    check(float(m.group(2)) <= 0.5, "estimate %s %% above the target" % m.group(2))
-    p0 = float(re.search(r"p0 = .*relative error (\S+) %", out).group(1))
+    out, _ = run_to_target(runner, gmsh, work, [os.path.join(source, "hertz", "hertz.geo"),
+                                                os.path.join(source, "hertz_adaptive", "hertz_adaptive.json")],
+                           "hertz_adaptive")
+    p0 = p0_relative_error(out)
     check(abs(p0) <= 0.3, "p0 %+.3f %% from Hertz (0.3 %% allowed)" % p0)
     check("contact force on body 1: (0, 0.01)" in out, "the contact force is not the load")
-    for name in ("hertz_adaptive_steps.pvd", "hertz_adaptive.pvd", "hertz_adaptive_pressure.csv",
-                 "hertz_adaptive_step%s_body1.vtu" % m.group(1)):
-        check(os.path.getsize(os.path.join(work, name)) > 0, "no " + name)
     png = os.path.join(work, "hertz_adaptive_steps.png")
     subprocess.run([sys.executable, os.path.join(source, "hertz_adaptive", "plot_steps.py"),
                     os.path.join(work, "hertz_adaptive_steps.pvd"), png], check=True)

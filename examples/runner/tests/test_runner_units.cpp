@@ -810,18 +810,22 @@ END_TEST
 // Body 1's top pushed down by 0.004 plus an interference of 0.006 (gap offset): the two blocks,
 // free to expand sideways, are compressed by 0.01 in total under uniaxial stress (plane strain):
 // 0.01 = (1 - nu^2) p (h1/E1 + h2/E2), which linear elements reproduce exactly.
-START_TEST(runner_interference_gap_offset_exact) {
-  const std::string out = data_dir + "/out_interference";
-  const std::string command = "rm -rf '" + out + "' && '" + runner + "' --quiet '" + data_dir + "/interference.json'";
+static void check_interference_exact(const std::string &scene, const std::string &out) {
+  const std::string command = "rm -rf '" + out + "' && '" + runner + "' --quiet '" + data_dir + "/" + scene + "'";
   ck_assert_int_eq(std::system(command.c_str()), 0);
   std::string text;
   const auto rows = read_csv(out + "/pressure.csv", &text);
   const double nu = 0.3, expected = 0.01 / ((1 - nu * nu) * (1 / 2.0 + 1 / 5.0));
   ck_assert_int_eq(rows.size(), 3);
   for (const auto &r : rows) {
-    ck_assert_msg(std::fabs(r[2] / expected - 1) < 1e-12, "pressure %.17g, expected %.17g", r[2], expected);
-    ck_assert_msg(std::fabs(r[3]) < 1e-14, "gap %.3g at x = %g", r[3], r[0]);
+    ck_assert_msg(std::fabs(r[2] / expected - 1) < 1e-12, "%s: pressure %.17g, expected %.17g", scene.c_str(), r[2],
+                  expected);
+    ck_assert_msg(std::fabs(r[3]) < 1e-14, "%s: gap %.3g at x = %g", scene.c_str(), r[3], r[0]);
   }
+}
+
+START_TEST(runner_interference_gap_offset_exact) {
+  check_interference_exact("interference.json", data_dir + "/out_interference");
 }
 END_TEST
 
@@ -829,18 +833,7 @@ END_TEST
 // exact only if the support of body 1's top holds its mid-edge node too and the gap offset
 // reaches the mid-edge node of the contact surface (without it: pressure 0.0094, gaps -0.004).
 START_TEST(runner_second_order_interference_exact) {
-  const std::string out = data_dir + "/out_quadratic_interference";
-  const std::string command =
-      "rm -rf '" + out + "' && '" + runner + "' --quiet '" + data_dir + "/quadratic_interference.json'";
-  ck_assert_int_eq(std::system(command.c_str()), 0);
-  std::string text;
-  const auto rows = read_csv(out + "/pressure.csv", &text);
-  const double nu = 0.3, expected = 0.01 / ((1 - nu * nu) * (1 / 2.0 + 1 / 5.0));
-  ck_assert_int_eq(rows.size(), 3);
-  for (const auto &r : rows) {
-    ck_assert_msg(std::fabs(r[2] / expected - 1) < 1e-12, "pressure %.17g, expected %.17g", r[2], expected);
-    ck_assert_msg(std::fabs(r[3]) < 1e-14, "gap %.3g at x = %g", r[3], r[0]);
-  }
+  check_interference_exact("quadratic_interference.json", data_dir + "/out_quadratic_interference");
 }
 END_TEST
 
