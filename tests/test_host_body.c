@@ -585,6 +585,8 @@ static void run_comparison(const scene_def *s, const run_options *o, worst_of *w
     set_options(m, o);
     if (o->threads) OK(mc_set_option_int(m, MC_OPTION_THREADS, o->threads));
     SUCCEEDS(mc_solve(m));
+    if (o->host_mask == 3) /* no cells to draw: refused before any file is opened */
+      FAILS(mc_write_vtu(m, "never_written.vtu"), MC_ERROR_STATE, "no mesh body to write");
   }
   results got = read_results(mh, s, host, base);
   differences d = compare(s, &ref, &got);
@@ -1051,6 +1053,17 @@ START_TEST(bad_host_input_is_refused_clearly) {
       FAILS(mc_set_contact(m, 1, b->n_contact, edges), MC_ERROR_CONTACT, "node 1");
       printf("contact node without equations: %s\n", mc_errmsg(m));
       SUCCEEDS(mc_set_contact(m, 1, b->n_contact - 1, edges + 2)); /* without that edge */
+      /* an edge from a node to itself, an edge given twice (either way round) */
+      const mc_int self[2] = {edges[2], edges[2]}, twice[4] = {edges[2], edges[3], edges[3], edges[2]};
+      const mc_int curved_self[3] = {edges[2], edges[3], edges[2]};
+      FAILS(mc_set_contact(m, 1, 1, self), MC_ERROR_CONTACT, "uses a node twice");
+      FAILS(mc_set_contact_curved(m, 1, 1, curved_self), MC_ERROR_CONTACT, "uses a node twice");
+      printf("curved edge using a node twice: %s\n", mc_errmsg(m));
+      char needle[64];
+      snprintf(needle, sizeof needle, "edge (%d, %d) is given twice", (int)(edges[2] < edges[3] ? edges[2] : edges[3]),
+               (int)(edges[2] < edges[3] ? edges[3] : edges[2]));
+      FAILS(mc_set_contact(m, 1, 2, twice), MC_ERROR_CONTACT, needle);
+      FAILS(mc_solve(m), MC_ERROR_STATE, "body 1 is a host body without stiffness");
       free(edges);
     }
     mc_destroy(m2);

@@ -544,6 +544,30 @@ START_TEST(bad_quadratic_input_is_refused_clearly) {
   FAILS(mc_set_contact(m, 1, 1, bad_edge), MC_ERROR_CONTACT, "is named by its two corner nodes");
   const double p = 1;
   FAILS(mc_add_pressure(m, 1, 1, bad_edge, &p), MC_ERROR_MESH, "mid-edge");
+  /* mc_set_contact_curved: the middle must be that edge's, every id in range, the cells quadratic */
+  {
+    const mc_int *bottom = q8.side_nodes[SC_BOTTOM]; /* corner, middle, corner, middle, corner */
+    const mc_int wrong_middle[3] = {bottom[0], bottom[2], bottom[3]};
+    FAILS(mc_set_contact_curved(m, 1, 1, wrong_middle), MC_ERROR_CONTACT, "is not the middle of that edge");
+    printf("curved edge with another edge's middle: %s\n", mc_errmsg(m));
+    const mc_int out_of_range[3] = {bottom[0], bottom[2], q8.n_nodes};
+    FAILS(mc_set_contact_curved(m, 1, 1, out_of_range), MC_ERROR_ARGUMENT, "edges[2]");
+    const mc_int good[3] = {bottom[0], bottom[2], bottom[1]};
+    SUCCEEDS(mc_set_contact_curved(m, 1, 1, good));
+    mc_model *linear = NULL;
+    ck_assert_int_eq(mc_create(&linear), MC_OK);
+    sc_mesh q1;
+    ck_assert_int_eq(sc_mesh_cells(&q1, 4, 2, 1, 0, 0, 2, 1, 0), 0);
+    {
+      mc_model *m = linear; /* for the macros' messages */
+      SUCCEEDS(sc_set_mesh(m, 1, &q1, 0));
+      const mc_int *b = q1.side_nodes[SC_BOTTOM];
+      const mc_int three[3] = {b[0], b[1], b[2]};
+      FAILS(mc_set_contact_curved(m, 1, 1, three), MC_ERROR_CONTACT, "body 1 has linear cells");
+    }
+    mc_destroy(linear);
+    sc_mesh_free(&q1);
+  }
   /* dual mortar on a quadratic body 1 */
   OK(mc_set_material(m, 1, 1, 0.3));
   OK(mc_set_material(m, 2, 1, 0.3));
