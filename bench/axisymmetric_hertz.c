@@ -3,7 +3,8 @@
  *
  *   build/bench/axisymmetric_hertz [speed] [h ...]   (default h: 0.04 0.02 0.01 0.007 0.005;
  *                                                      "speed": the speed table only)
- *   build/bench/axisymmetric_hertz cells KIND:h,h,... [KIND:h,...]   (KIND: P1 Q1 T6 Q8 Q9)
+ *   build/bench/axisymmetric_hertz cells [--multiplier linear|quadratic] KIND:h,h,... [KIND:h,...]
+ *                                        (KIND: P1 Q1 T6 Q8 Q9; MC_OPTION_MULTIPLIER, default linear)
  *
  * "cells": the cell kinds side by side (mortar, sphere_on_flat_solve_cells; h a cell's size):
  * DOFs, p0 and a fitted against Hertz, the larger of the two errors, and for each kind other
@@ -35,8 +36,17 @@ typedef struct kind_row {
 /* The cell kinds side by side: see the file header. */
 static int compare_kinds(int argc, char **argv) {
   static kind_row rows[128];
-  int n = 0;
+  int n = 0, multiplier = MC_MULTIPLIER_LINEAR;
   for (int i = 0; i < argc; ++i) {
+    if (!strcmp(argv[i], "--multiplier") && i + 1 < argc) {
+      ++i;
+      if (!strcmp(argv[i], "linear")) multiplier = MC_MULTIPLIER_LINEAR;
+      else if (strcmp(argv[i], "quadratic")) {
+        fprintf(stderr, "cells: --multiplier takes linear or quadratic, got %s\n", argv[i]);
+        return 2;
+      }
+      continue;
+    }
     const char *colon = strchr(argv[i], ':');
     int npc = 0;
     for (int k = 3; k <= 9; ++k)
@@ -60,7 +70,7 @@ static int compare_kinds(int argc, char **argv) {
          "error | DOFs / P1's |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (int i = 0; i < n; ++i) {
     kind_row *w = &rows[i];
-    int st = sphere_on_flat_solve_cells(w->h, w->npc, MC_METHOD_MORTAR, MC_NORMAL_MORTAR, MC_AXISYMMETRIC, &w->r);
+    int st = sphere_on_flat_solve_cells(w->h, w->npc, MC_METHOD_MORTAR, MC_NORMAL_MORTAR, MC_AXISYMMETRIC, multiplier, &w->r);
     if (st) {
       printf("| %s | %g | failed (%d) |\n", cell_kind_name(w->npc), w->h, st);
       return 1;

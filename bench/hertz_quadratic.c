@@ -70,6 +70,15 @@
 #include <unistd.h>
 
 #define MAX_REPEAT 15
+
+/* --multiplier: MC_OPTION_MULTIPLIER of every solve (the reference's too). */
+static int multiplier = MC_MULTIPLIER_LINEAR;
+/* --growth KIND:g: the meshes' growth outside the fine zone per cell kind (hertz_scene_build_graded;
+   the reference keeps the default 1.15). Indexed by nodes per cell. */
+static double growth_of[10] = {1.15, 1.15, 1.15, 1.15, 1.15, 1.15, 1.15, 1.15, 1.15, 1.15};
+/* --fine KIND:w: the half-width of the uniformly fine zone per cell kind (default 0.4; the
+   reference keeps 0.4). */
+static double fine_of[10] = {0.4, 0.4, 0.4, 0.4, 0.4, 0.4, 0.4, 0.4, 0.4, 0.4};
 #define MAX_RUNS 96
 
 typedef struct solution {
@@ -412,6 +421,7 @@ static void run_once(const hertz_scene *s, int last, solution *r, double *t_wall
   TRY(mc_set_contact(m, 2, s->n_contact_edges[1], s->contact_edges[1]));
   TRY(mc_set_option_int(m, MC_OPTION_METHOD, MC_METHOD_MORTAR));
   TRY(mc_set_option_int(m, MC_OPTION_CONTACT_NORMAL, MC_NORMAL_MORTAR));
+  TRY(mc_set_option_int(m, MC_OPTION_MULTIPLIER, multiplier));
   TRY(mc_solve(m));
   /* results read back, as a host would */
   for (int b = 0; b < 2; ++b) {
@@ -485,8 +495,10 @@ static int have_ref;
 static void solve(solution *r, int repeat, double ratio, hertz_scene *keep) {
   hertz_scene s;
   double times[MAX_REPEAT];
-  if (hertz_scene_build_cells(&s, r->h1, ratio * r->h1, r->npc) != 0) {
-    snprintf(r->message, sizeof r->message, "hertz_scene_build_cells(h1 = %g, %s) failed", r->h1, cell_kind_name(r->npc));
+  const double growth = keep ? 1.15 : growth_of[r->npc], fine = keep ? 0.4 : fine_of[r->npc];
+  if (hertz_scene_build_graded(&s, r->h1, ratio * r->h1, r->npc, growth, fine) != 0) {
+    snprintf(r->message, sizeof r->message, "hertz_scene_build_graded(h1 = %g, %s, growth %g) failed", r->h1,
+             cell_kind_name(r->npc), growth);
     return;
   }
   for (int k = 0; k < repeat; ++k) {
@@ -597,6 +609,22 @@ int main(int argc, char **argv) {
     else if (!strcmp(argv[i], "--ratio") && i + 1 < argc) ratio = atof(argv[++i]);
     else if (!strcmp(argv[i], "--json") && i + 1 < argc) json_path = argv[++i];
     else if (!strcmp(argv[i], "--quick")) quick = 1;
+    else if ((!strcmp(argv[i], "--growth") || !strcmp(argv[i], "--fine")) && i + 1 < argc) {
+      const int growth = !strcmp(argv[i], "--growth");
+      const char *spec = argv[++i], *colon = strchr(spec, ':');
+      int npc = 0;
+      for (int k = 3; k <= 9; ++k)
+        if (colon && colon - spec == 2 && !strncmp(spec, cell_kind_name(k), 2)) npc = k;
+      const double v = colon ? atof(colon + 1) : 0;
+      if (!npc || (growth && !(v >= 1.01 && v <= 3)) || (!growth && !(v > 0 && v <= 0.5))) goto usage;
+      (growth ? growth_of : fine_of)[npc] = v;
+    }
+    else if (!strcmp(argv[i], "--multiplier") && i + 1 < argc) {
+      ++i;
+      if (!strcmp(argv[i], "linear")) multiplier = MC_MULTIPLIER_LINEAR;
+      else if (!strcmp(argv[i], "quadratic")) multiplier = MC_MULTIPLIER_QUADRATIC;
+      else goto usage;
+    }
     else if (!strcmp(argv[i], "--global")) {
       /* the energy error over both bodies whole (for the error estimate's effectivity) */
       region[0] = -4, region[1] = 4, region[2] = -4, region[3] = 1;

@@ -100,8 +100,19 @@ enum {
   MC_OPTION_THREADS = 10,       /* int: threads for the two bodies' work; default 0 (see below) */
   MC_OPTION_INTERFACE_SOLVER = 11, /* int: MC_INTERFACE_*; how the contact problem is solved; default
                                      MC_INTERFACE_AUTO (see below) */
-  MC_OPTION_ERROR_ESTIMATE = 12  /* int: 1 (default) every solve estimates its error (MC_INFO_ERROR_ESTIMATE,
+  MC_OPTION_ERROR_ESTIMATE = 12, /* int: 1 (default) every solve estimates its error (MC_INFO_ERROR_ESTIMATE,
                                     mc_get_error_indicator); 0 skips it */
+  MC_OPTION_MULTIPLIER = 13      /* int: MC_MULTIPLIER_*; the contact multipliers of a body 1 with
+                                    quadratic cells (MC_METHOD_MORTAR); default MC_MULTIPLIER_QUADRATIC */
+};
+
+/* Values of MC_OPTION_MULTIPLIER: the space of the contact pressure when body 1 has quadratic
+   cells (T6, Q8, Q9). Bodies of linear cells always use the paper's space (theory §2b). */
+enum {
+  MC_MULTIPLIER_LINEAR = 0,   /* continuous piecewise linear on the edges' corners (one value per
+                                 edge): the cone is exact, the pressure as coarse as the corners */
+  MC_MULTIPLIER_QUADRATIC = 1 /* continuous piecewise quadratic, a value at every trace node
+                                 (corners and mid-edge nodes): nonnegative at the nodes */
 };
 
 /* Values of MC_OPTION_INTERFACE_SOLVER, and of MC_INFO_INTERFACE_SOLVER (which one ran).

@@ -321,6 +321,13 @@ mc_status mc_set_option_int(mc_model *m, int option, int64_t value) {
         model.options.method = int(value);
         model.structure_changed();
         break;
+      case MC_OPTION_MULTIPLIER:
+        if (value != MC_MULTIPLIER_LINEAR && value != MC_MULTIPLIER_QUADRATIC)
+          fail(MC_ERROR_ARGUMENT, "value = %lld: MC_OPTION_MULTIPLIER takes MC_MULTIPLIER_LINEAR (0) or "
+               "MC_MULTIPLIER_QUADRATIC (1)", (long long)value);
+        model.options.multiplier = int(value);
+        model.structure_changed();
+        break;
       case MC_OPTION_MAX_ITERATIONS:
         if (value < 1 || value > 1000000)
           fail(MC_ERROR_ARGUMENT, "value = %lld: MC_OPTION_MAX_ITERATIONS takes 1 to 1000000", (long long)value);
@@ -396,7 +403,7 @@ mc_status mc_set_option_real(mc_model *m, int option, double value) {
       if (option == MC_OPTION_METHOD || option == MC_OPTION_MAX_ITERATIONS || option == MC_OPTION_ORDERING ||
           option == MC_OPTION_Q1_INTEGRATION || option == MC_OPTION_CONTACT_NORMAL ||
           option == MC_OPTION_CONTACT_SURFACE || option == MC_OPTION_THREADS || option == MC_OPTION_INTERFACE_SOLVER ||
-          option == MC_OPTION_ERROR_ESTIMATE)
+          option == MC_OPTION_ERROR_ESTIMATE || option == MC_OPTION_MULTIPLIER)
         fail(MC_ERROR_ARGUMENT, "option = %d is integer-valued: use mc_set_option_int", option);
       fail(MC_ERROR_ARGUMENT, "option = %d: not a real option", option);
     }

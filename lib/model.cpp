@@ -156,7 +156,7 @@ void Model::build_structure(const std::function<void(int, BodyWork &)> &then) {
     surface_options.feature_angle_degrees = options.feature_angle;
     cs->geometry = build_contact_geometry(body[0].mesh, body[0].contact, body[1].mesh, body[1].contact,
                                           options.contact_normal, surface_options, measure());
-    cs->rows = build_constraint_rows(cs->geometry, options.method, measure());
+    cs->rows = build_constraint_rows(cs->geometry, options.method, options.multiplier, measure());
     const ConstraintRows &rows = cs->rows;
     for (int b = 0; b < 2; ++b) cs->b_start[b].push_back(0);
     for (int r = 0; r < rows.size(); ++r) {

@@ -103,6 +103,7 @@ struct Options {
   int threads = 0;  // MC_OPTION_THREADS: 0 automatic, 1 serial, n: at most n threads
   int interface_solver = MC_INTERFACE_AUTO;  // MC_OPTION_INTERFACE_SOLVER
   bool error_estimate = true;                // MC_OPTION_ERROR_ESTIMATE
+  int multiplier = MC_MULTIPLIER_LINEAR;     // MC_OPTION_MULTIPLIER
 };
 
 struct Infos {

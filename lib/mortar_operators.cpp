@@ -319,12 +319,20 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, co
 // in Lame's pressure with 32 Q8 cells around, 0.16 % with 64); n_i, the multiplier node's normal,
 // is the direction its force is reported along.
 // A run of one or two elements has one multiplier, constant along it.
-void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, ConstraintRows &rows) {
+void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, bool quadratic, ConstraintRows &rows) {
   const int n = int(run.trace.size());
   const bool closed = run.closed, single = !closed && n <= 3;
   const MultiplierSpace space(run, true);
   const int first = closed ? 0 : single ? 0 : 1, last = closed ? n - 1 : single ? 0 : n - 2;
-  const int count = last - first + 1;
+  const int corners = last - first + 1;
+  // The quadratic multipliers' middles: one per element that is neither an end element nor the
+  // whole of a single run (those stay constant, as in M_h^1), rows corners + own_middle[e].
+  std::vector<int> own_middle(run.elements.size(), -1);
+  int middles = 0;
+  if (quadratic && !single)
+    for (int e = 0; e < int(run.elements.size()); ++e)
+      if (closed || (e > 0 && e < n - 2)) own_middle[e] = middles++;
+  const int count = corners + middles;
   // Entries (node or position, scalar weight, vector weight); merged per row below.
   struct Entry {
     int id;
@@ -351,17 +359,25 @@ void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, Constrain
       line_shapes(count1, q.xi1, phi1, ds);
       int node2[3];
       const int count2 = mortar_trace(g, q.mortar, node2, phi2);
-      const double hat[2] = {1 - q.s, q.s};
-      auto add = [&](int i, double w) {
-        const int r = single ? 0 : i - first;
+      // The multiplier space's local functions: the hats of the two trace points, or the
+      // quadratic ones of the element's two ends and its middle.
+      const double s = q.s;
+      const double local[3] = {quadratic ? (1 - s) * (1 - 2 * s) : 1 - s, quadratic ? s * (2 * s - 1) : s, 4 * s * (1 - s)};
+      auto add_row = [&](int r, double w) {
         for (int a = 0; a < count1; ++a) body1[r].push_back({pos[a], w * phi1[a], scaled(q.normal, w * phi1[a])});
         for (int a = 0; a < count2; ++a) body2[r].push_back({node2[a], w * phi2[a], scaled(q.normal, w * phi2[a])});
         gap[r] += w * q.gap, total[r] += w;
       };
+      auto add = [&](int i, double w) { add_row(single ? 0 : i - first, w); };
       for (int t = 0; t < 2; ++t) {
-        if (single) add(0, q.weight * hat[t]);
-        else space.feed(e, e + t, q.weight * hat[t], add);
+        if (single) add(0, q.weight * local[t]);
+        else space.feed(e, e + t, q.weight * local[t], add);
       }
+      if (!quadratic) continue;
+      // The middle's function: its own multiplier, or the end element's constant one.
+      if (own_middle[e] >= 0) add_row(corners + own_middle[e], q.weight * local[2]);
+      else if (single) add(0, q.weight * local[2]);
+      else space.feed(e, e == 0 ? 0 : e + 1, q.weight * local[2], add);
     }
   // mu at the run's positions (ConstraintRows::pressure_of_position): at the ends of each element
   // the multipliers' values (the share of a trace point's hat each one takes there), averaged
@@ -380,6 +396,14 @@ void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, Constrain
     else space.feed(e, e + t, 1.0, add);
     return c;
   };
+  // The multiplier fed by element e's middle function (quadratic space).
+  auto middle_values = [&](int e) {
+    if (own_middle[e] >= 0) {
+      const int r = corners + own_middle[e];
+      return Coefficients{{row0 + r, 1 / total[r]}};
+    }
+    return end_values(e, e == 0 ? 0 : 1);
+  };
   std::vector<Coefficients> at_trace(n);
   std::vector<int> elements_at(n, 0);
   for (int e = 0; e < int(run.elements.size()); ++e) {
@@ -397,23 +421,37 @@ void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, Constrain
     const double s_mid = qa.s + (0.5 - qa.xi1) * (qb.s - qa.s) / (qb.xi1 - qa.xi1);
     if (s_mid <= 1e-9 || s_mid >= 1 - 1e-9) continue;  // outside, or a trace point of its own (the loop below)
     Coefficients &out = rows.pressure_of_position[mid];
-    for (auto &[r, v] : c0) out.emplace_back(r, (1 - s_mid) * v);
-    for (auto &[r, v] : c1) out.emplace_back(r, s_mid * v);
+    if (!quadratic) {
+      for (auto &[r, v] : c0) out.emplace_back(r, (1 - s_mid) * v);
+      for (auto &[r, v] : c1) out.emplace_back(r, s_mid * v);
+      continue;
+    }
+    const double s = s_mid;
+    for (auto &[r, v] : c0) out.emplace_back(r, (1 - s) * (1 - 2 * s) * v);
+    for (auto &[r, v] : c1) out.emplace_back(r, s * (2 * s - 1) * v);
+    for (auto &[r, v] : middle_values(e)) out.emplace_back(r, 4 * s * (1 - s) * v);
   }
   for (int k = 0; k < n; ++k) {
     if (!run.trace[k].is_position() || elements_at[k] == 0) continue;
     Coefficients &out = rows.pressure_of_position[run.trace[k].a];
     for (auto &[r, v] : at_trace[k]) out.emplace_back(r, v / elements_at[k]);
   }
+  // A middle row's element, and its position (the body-1 edge's mid-edge node).
+  std::vector<int> middle_position(middles, -1);
+  for (int e = 0; e < int(run.elements.size()); ++e)
+    if (own_middle[e] >= 0 && !run.elements[e].empty())
+      middle_position[own_middle[e]] = g.segment_positions[run.elements[e].front().segment1][2];
   for (int r = 0; r < count; ++r) {
     // The row's trace point: its multiplier's node (the middle one of a single multiplier on
-    // two elements; none on one element).
-    const int k = single ? (n == 3 ? 1 : -1) : first + r;
-    if (!(total[r] > 0))
+    // two elements; none on one element); a middle row's mid-edge node.
+    const bool middle = r >= corners;
+    const int k = middle ? -1 : single ? (n == 3 ? 1 : -1) : first + r;
+    const int mid = middle ? middle_position[r - corners] : -1;
+    if (!(total[r] > 0) || (middle && mid < 0))
       fail(MC_ERROR_CONTACT,
            "the contact constraint at body-1 contact node %d has no measure: body 2's surface covers too little of "
            "the body-1 edges around it",
-           g.nodes[run.trace[k >= 0 ? k : 0].a]);
+           g.nodes[mid >= 0 ? mid : run.trace[k >= 0 ? k : 0].a]);
     merged(body1[r]), merged(body2[r]);
     const double scale = 1 / total[r];
     for (const Entry &e : body1[r])
@@ -423,16 +461,17 @@ void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, Constrain
       if (e.w != 0 || e.v.x != 0 || e.v.y != 0)
         rows.body2_node.push_back(e.id), rows.weight2.push_back(e.w * scale), rows.vector2.push_back(scaled(e.v, scale));
     rows.start2.push_back(int(rows.body2_node.size()));
-    rows.normal.push_back(k >= 0 ? run.trace[k].normal : unit(plus(run.trace.front().normal, run.trace.back().normal)));
+    rows.normal.push_back(middle ? g.normals[mid]
+                          : k >= 0 ? run.trace[k].normal : unit(plus(run.trace.front().normal, run.trace.back().normal)));
     rows.gap0.push_back(gap[r] / total[r]);
-    rows.own_position.push_back(k >= 0 && run.trace[k].is_position() ? run.trace[k].a : -1);
+    rows.own_position.push_back(middle ? mid : k >= 0 && run.trace[k].is_position() ? run.trace[k].a : -1);
     rows.aux.push_back(-1);
   }
 }
 
 }  // namespace
 
-ConstraintRows build_constraint_rows(const ContactGeometry &g, int method, const LineMeasure &measure) {
+ConstraintRows build_constraint_rows(const ContactGeometry &g, int method, int multiplier, const LineMeasure &measure) {
   ConstraintRows rows;
   if (method == MC_METHOD_NODE_TO_SEGMENT) {
     // Each body-1 node that sees body 2, against the point it projects to.
@@ -451,7 +490,7 @@ ConstraintRows build_constraint_rows(const ContactGeometry &g, int method, const
          "a body of linear cells body 1");
   for (const ContactRun &run : g.runs) {
     if (g.quadratic_nonmortar) {
-      weak_mortar_rows(g, run, rows);
+      weak_mortar_rows(g, run, multiplier == MC_MULTIPLIER_QUADRATIC, rows);
       continue;
     }
     // Runs of one element carry no multiplier: only the end conditions of (3.2) remain.

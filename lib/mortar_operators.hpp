@@ -59,6 +59,8 @@ struct ConstraintRows {
 };
 
 // measure: the weight of the mortar integrals (the dual basis is biorthogonal in it).
-ConstraintRows build_constraint_rows(const ContactGeometry &geometry, int method, const LineMeasure &measure);
+// multiplier: MC_MULTIPLIER_*, a quadratic body 1's multiplier space (unused for a linear one).
+ConstraintRows build_constraint_rows(const ContactGeometry &geometry, int method, int multiplier,
+                                     const LineMeasure &measure);
 
 }  // namespace mc

@@ -19,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The grading of hertz_scene_build_cells (hertz_scene_build_graded takes others). */
 #define GROWTH 1.15          /* ratio of successive cells outside the fine zone */
 #define FINE_HALF_WIDTH 0.4  /* physical half-width of the uniformly fine zone */
 #define MAX_SCALED_CELLS 8   /* how many of the last growth cells absorb the length mismatch */
@@ -27,12 +28,12 @@
 /*
  * Positions 0 = p[0] < ... < p[n] = len of a graded 1D grid: n_u uniform cells
  * of size w/n_u (n_u = round(w/h), so the fine zone ends exactly at w), then
- * cells growing by GROWTH. A pure geometric sequence almost never ends exactly
+ * cells growing by `growth`. A pure geometric sequence almost never ends exactly
  * at len, so the last few cells are rescaled: only the coarse tail moves and the
  * fine zone plus the first growth cells keep their exact sizes.
  * Returns NULL on allocation failure; *n receives the number of cells.
  */
-static double *graded_axis(double w, double h, double len, int *n)
+static double *graded_axis(double w, double h, double len, double growth, int *n)
 {
   int n_u = (int)floor(w / h + 0.5);
   if (n_u < 1) n_u = 1;
@@ -42,7 +43,7 @@ static double *graded_axis(double w, double h, double len, int *n)
   /* N_hi: first count of growth cells whose total reaches the rest. */
   int n_hi = 0;
   double s_hi = 0.0, a = hu;
-  while (s_hi < rest) { a *= GROWTH; s_hi += a; ++n_hi; }
+  while (s_hi < rest) { a *= growth; s_hi += a; ++n_hi; }
   const double s_lo = s_hi - a; /* total of n_hi - 1 cells, < rest */
 
   /* The nearer of the two totals distorts the tail least; shrinking (n_hi) can
@@ -55,7 +56,7 @@ static double *graded_axis(double w, double h, double len, int *n)
     d = malloc((size_t)n_g * sizeof *d);
     if (!d) return NULL;
     double total = 0.0, c = hu;
-    for (int k = 0; k < n_g; ++k) { c *= GROWTH; d[k] = c; total += c; }
+    for (int k = 0; k < n_g; ++k) { c *= growth; d[k] = c; total += c; }
     const int m = n_g < MAX_SCALED_CELLS ? n_g : MAX_SCALED_CELLS;
     double tail = 0.0;
     for (int k = n_g - m; k < n_g; ++k) tail += d[k];
@@ -80,10 +81,10 @@ static double *graded_axis(double w, double h, double len, int *n)
 
 /* Symmetric axis on [-len, len] with 0 a node: mirrored exactly so the mesh is
    symmetric bit for bit. Returns 2n+1 positions, *n_cells = 2n. */
-static double *symmetric_axis(double w, double h, double len, int *n_cells)
+static double *symmetric_axis(double w, double h, double len, double growth, int *n_cells)
 {
   int n;
-  double *p = graded_axis(w, h, len, &n);
+  double *p = graded_axis(w, h, len, growth, &n);
   if (!p) return NULL;
   double *x = malloc((size_t)(2 * n + 1) * sizeof *x);
   if (x) {
@@ -188,13 +189,13 @@ static void renumber(int *ids, int n, const int *new_id)
   for (int k = 0; k < n; ++k) ids[k] = new_id[ids[k]];
 }
 
-static int build_block(hertz_scene *sc, double h2, int npc)
+static int build_block(hertz_scene *sc, double h2, int npc, double growth, double fine)
 {
   hertz_mesh *m = &sc->body[1];
   const int o = npc > 4 ? 2 : 1;
   int nx, ny;
-  double *x0 = symmetric_axis(FINE_HALF_WIDTH, h2, 4.0, &nx);
-  double *p0 = graded_axis(FINE_HALF_WIDTH, h2, 4.0, &ny);
+  double *x0 = symmetric_axis(fine, h2, 4.0, growth, &nx);
+  double *p0 = graded_axis(fine, h2, 4.0, growth, &ny);
   double *x = x0 ? refined_axis(x0, nx, o) : NULL, *p = p0 ? refined_axis(p0, ny, o) : NULL;
   int *new_id = NULL;
   int rc = 1;
@@ -238,14 +239,14 @@ done:
   return rc;
 }
 
-static int build_disc(hertz_scene *sc, double h1, int npc)
+static int build_disc(hertz_scene *sc, double h1, int npc, double growth, double fine)
 {
   hertz_mesh *m = &sc->body[0];
   const double r2 = sqrt(2.0);
   const int o = npc > 4 ? 2 : 1;
   int ns, nt;
-  double *s0 = symmetric_axis(FINE_HALF_WIDTH * r2, h1 * r2, 1.0, &ns);
-  double *q0 = graded_axis(FINE_HALF_WIDTH * r2, h1 * r2, 1.0, &nt); /* t = -1 + q */
+  double *s0 = symmetric_axis(fine * r2, h1 * r2, 1.0, growth, &ns);
+  double *q0 = graded_axis(fine * r2, h1 * r2, 1.0, growth, &nt); /* t = -1 + q */
   double *s = s0 ? refined_axis(s0, ns, o) : NULL, *q = q0 ? refined_axis(q0, nt, o) : NULL;
   int *new_id = NULL;
   int rc = 1;
@@ -319,20 +320,28 @@ done:
   return rc;
 }
 
-int hertz_scene_build_cells(hertz_scene *s, double h1, double h2, int nodes_per_cell)
+int hertz_scene_build_graded(hertz_scene *s, double h1, double h2, int nodes_per_cell, double growth,
+                             double fine_half_width)
 {
   if (!s) return 1;
   memset(s, 0, sizeof *s);
   /* Upper bound: coarser spacings leave no room for a graded tail in body 1
-     (fine zone 0.4 sqrt(2) of the unit square side). !(a > 0) also rejects NaN. */
+     (fine zone fine_half_width sqrt(2) of the unit square side, at most 0.5). !(a > 0) also
+     rejects NaN. */
   const int npc = nodes_per_cell;
-  if (!(h1 > 0.0) || !(h2 > 0.0) || h1 > 0.2 || h2 > 0.2 || (npc != 3 && npc != 4 && npc != 6 && npc != 8 && npc != 9))
+  if (!(h1 > 0.0) || !(h2 > 0.0) || h1 > 0.2 || h2 > 0.2 || (npc != 3 && npc != 4 && npc != 6 && npc != 8 && npc != 9) ||
+      !(growth >= 1.01 && growth <= 3.0) || !(fine_half_width >= h1 && fine_half_width >= h2 && fine_half_width <= 0.5))
     return 1;
-  if (build_disc(s, h1, npc) || build_block(s, h2, npc)) {
+  if (build_disc(s, h1, npc, growth, fine_half_width) || build_block(s, h2, npc, growth, fine_half_width)) {
     hertz_scene_free(s);
     return 2;
   }
   return 0;
+}
+
+int hertz_scene_build_cells(hertz_scene *s, double h1, double h2, int nodes_per_cell)
+{
+  return hertz_scene_build_graded(s, h1, h2, nodes_per_cell, GROWTH, FINE_HALF_WIDTH);
 }
 
 int hertz_scene_build(hertz_scene *s, double h1, double h2, int quads)

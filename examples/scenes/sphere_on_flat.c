@@ -29,7 +29,8 @@ static void fit_profile(int n, const double *r, const double *p, double *p0, dou
   *a = sqrt(-intercept / slope);
 }
 
-int sphere_on_flat_solve_cells(double h, int nodes_per_cell, int method, int normal, int plane, sphere_result *res) {
+int sphere_on_flat_solve_cells(double h, int nodes_per_cell, int method, int normal, int plane, int multiplier,
+                               sphere_result *res) {
   hertz_scene s;
   mc_model *m = NULL;
   int st, b, j;
@@ -65,6 +66,7 @@ int sphere_on_flat_solve_cells(double h, int nodes_per_cell, int method, int nor
   TRY(mc_add_pressure(m, 1, s.n_top_edges, s.top_edges, top));
   TRY(mc_set_option_int(m, MC_OPTION_METHOD, method));
   TRY(mc_set_option_int(m, MC_OPTION_CONTACT_NORMAL, normal));
+  TRY(mc_set_option_int(m, MC_OPTION_MULTIPLIER, multiplier));
   TRY(mc_solve(m));
   {
     int64_t dofs = 0, active = 0;
@@ -85,9 +87,13 @@ int sphere_on_flat_solve_cells(double h, int nodes_per_cell, int method, int nor
     mc_get_contact_pressure(m, p);
     mc_get_contact_force(m, f);
     mc_get_contact_normal(m, normals);
-    /* a quadratic body 1: the profile on the corners (the multiplier's nodes) only */
+    /* a quadratic body 1 with linear multipliers: the profile on the corners (the multiplier's
+       nodes) only; otherwise every position carries a multiplier value */
     char *corner = calloc((size_t)s.body[0].n_nodes, 1);
-    for (j = 0; j < 2 * s.n_contact_edges[0]; ++j) corner[s.contact_edges[0][j]] = 1;
+    if (multiplier == MC_MULTIPLIER_LINEAR && nodes_per_cell > 4)
+      for (j = 0; j < 2 * s.n_contact_edges[0]; ++j) corner[s.contact_edges[0][j]] = 1;
+    else
+      for (j = 0; j < s.body[0].n_nodes; ++j) corner[j] = 1;
     double r_last = 0, r_next = INFINITY, *rc = malloc(sizeof(double) * (size_t)n), *pc = malloc(sizeof(double) * (size_t)n);
     int nc = 0;
     for (j = 0; j < n; ++j) {
@@ -118,7 +124,7 @@ int sphere_on_flat_solve(double h, int quads, int method, int normal, int plane,
     memset(r, 0, sizeof *r);
     return -1;
   }
-  return sphere_on_flat_solve_cells(h, quads ? 4 : 3, method, normal, plane, r);
+  return sphere_on_flat_solve_cells(h, quads ? 4 : 3, method, normal, plane, MC_MULTIPLIER_LINEAR, r);
 }
 
 int sphere_on_flat(double h, int quads, int method, sphere_result *r) {
