@@ -41,7 +41,8 @@ static int compare_kinds(int argc, char **argv) {
     if (!strcmp(argv[i], "--multiplier") && i + 1 < argc) {
       ++i;
       if (!strcmp(argv[i], "linear")) multiplier = MC_MULTIPLIER_LINEAR;
-      else if (strcmp(argv[i], "quadratic")) {
+      else if (!strcmp(argv[i], "quadratic")) multiplier = MC_MULTIPLIER_QUADRATIC;
+      else {
         fprintf(stderr, "cells: --multiplier takes linear or quadratic, got %s\n", argv[i]);
         return 2;
       }

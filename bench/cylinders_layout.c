@@ -17,6 +17,8 @@
  * p0 d^2 / a^2 (d the spacing of the positions): 0.3 % at d = a / 13. p0: the largest nodal pressure; Hertz:
  * 1/R* = 1/1 + 1/3, 1/E* = 2 (1 - nu^2) / E.
  *
+ * A quadratic body 1 is solved with both MC_OPTION_MULTIPLIER values.
+ *
  * usage: cylinders_layout [h ...]       (default h = 0.01; PROFILE=1 in the environment also prints
  *        each solve's nonzero nodal pressures against x)
  */
@@ -68,7 +70,7 @@ typedef struct outcome {
 
 /* coarse: a quadratic mesh with half the cells each way, of twice the size (the same nodes as the
    linear mesh of h). */
-static outcome solve(int npc, int criss, double h, int coarse) {
+static outcome solve(int npc, int criss, double h, int coarse, int multiplier) {
   const int n_half = coarse ? 20 : 40, ny = coarse ? 12 : 24;
   if (coarse) h *= 2;
   shape s1 = {1, 0.6, 0.6, 0, 0, 1}, s2 = {3, 1.5, 1.5, 0, 0, 0};
@@ -115,6 +117,7 @@ static outcome solve(int npc, int criss, double h, int coarse) {
   mc_add_traction(m, 1, cells_across, top, traction);
   mc_set_contact(m, 1, cells_across, arc1);
   mc_set_contact(m, 2, cells_across, arc2);
+  mc_set_option_int(m, MC_OPTION_MULTIPLIER, multiplier);
   if (mc_solve(m) != MC_OK) {
     fprintf(stderr, "solve: %s\n", mc_errmsg(m));
     exit(1);
@@ -154,16 +157,18 @@ int main(int argc, char **argv) {
   const double P = 0.01, nu = 0.3, r_star = 1.0 / (1.0 + 1.0 / 3.0), e_star = 1 / (2 * (1 - nu * nu));
   const double a = sqrt(4 * P * r_star / (PI * e_star)), p0 = 2 * P / (PI * a);
   printf("two cylinders R = 1 on R = 3, h = %g at the contact point (a = %.4f, %.1f cells across a)\n\n", h, a, a / h);
-  printf("| cells | triangles | cell size at contact | DOFs | contact positions | p0 vs Hertz | ripple: largest |p_j - (p_j-1 + p_j+1)/2| inside 0.6 a | time (s) |\n");
-  printf("|---|---|---:|---:|---:|---:|---:|---:|\n");
+  printf("| cells | triangles | multipliers | cell size at contact | DOFs | contact positions | p0 vs Hertz | ripple: largest |p_j - (p_j-1 + p_j+1)/2| inside 0.6 a | time (s) |\n");
+  printf("|---|---|---|---:|---:|---:|---:|---:|---:|\n");
   const int kinds[5] = {3, 6, 4, 8, 9};
   for (int k = 0; k < 5; ++k)
     for (int coarse = kinds[k] > 4; coarse >= 0; --coarse)
-    for (int criss = 0; criss < (kinds[k] == 3 || kinds[k] == 6 ? 2 : 1); ++criss) {
-      const outcome o = solve(kinds[k], criss, h, coarse);
+    for (int criss = 0; criss < (kinds[k] == 3 || kinds[k] == 6 ? 2 : 1); ++criss)
+    for (int multiplier = MC_MULTIPLIER_LINEAR; multiplier <= (kinds[k] > 4 ? MC_MULTIPLIER_QUADRATIC : MC_MULTIPLIER_LINEAR); ++multiplier) {
+      const outcome o = solve(kinds[k], criss, h, coarse, multiplier);
       const char *name = kinds[k] == 3 ? "P1" : kinds[k] == 6 ? "T6" : kinds[k] == 4 ? "Q1" : kinds[k] == 8 ? "Q8" : "Q9";
-      printf("| %s | %s | %g | %ld | %d | %+.2f %% | %.2f %% of p0 | %.3f |\n", name,
-             kinds[k] == 3 || kinds[k] == 6 ? (criss ? "criss-cross" : "one-way") : "-", coarse ? 2 * h : h, o.dofs, o.positions,
+      printf("| %s | %s | %s | %g | %ld | %d | %+.2f %% | %.2f %% of p0 | %.3f |\n", name,
+             kinds[k] == 3 || kinds[k] == 6 ? (criss ? "criss-cross" : "one-way") : "-",
+             kinds[k] <= 4 ? "paper's" : multiplier == MC_MULTIPLIER_LINEAR ? "linear" : "quadratic", coarse ? 2 * h : h, o.dofs, o.positions,
              100 * (o.p0 / p0 - 1), 100 * o.ripple, o.seconds);
     }
   printf("\n");

@@ -18,8 +18,8 @@
  *             position (a quadratic body 1: the multiplier field, P1 on the corners, linear at
  *             the middles);
  *   a         contact_half_width below (bench/hertz_sweep.c's estimator) over the positions
- *             that carry the multiplier: all of them for P1 and Q1, the cells' corners for T6,
- *             Q8 and Q9 (a middle's pressure is its corners' mean, and p^2 extrapolated through
+ *             that carry the multiplier: all of them for P1 and Q1 and with --multiplier
+ *             quadratic, the cells' corners for T6, Q8 and Q9 with linear multipliers (a middle's pressure is its corners' mean, and p^2 extrapolated through
  *             a corner and a middle scatters by tens of %; the all-positions value is in the
  *             JSON as a_all_positions);
  *   a_moment  2 sqrt(sum f_j x_j^2 / sum f_j) from the contact forces (exact for Hertz's
@@ -49,7 +49,11 @@
  * time from which on each kind's error stays below a level, and their ratios to P1's.
  *
  * usage: hertz_quadratic [--repeat n] [--ratio r] [--ref KIND:h1] [--check KIND:h1 ...]
- *                        [--json file] [--quick] [--global] [KIND:h1,h1,... ...]
+ *                        [--json file] [--quick] [--global]
+ *                        [--multiplier linear|quadratic] [--growth KIND:g] [--fine KIND:w] [KIND:h1,h1,... ...]
+ *   --multiplier linear|quadratic: MC_OPTION_MULTIPLIER of the solves (the reference: linear);
+ *   --growth KIND:g, --fine KIND:w: that kind's meshes with growth g outside a fine zone of
+ *   half-width w (hertz_scene_build_graded; defaults 1.15 and 0.4, the reference's always);
  *   --global: the energy error over both bodies whole instead of the box around the contact, and
  *   beside it MC_INFO_ERROR_ESTIMATE and its effectivity (estimate / error)
  *   KIND: P1, Q1, T6, Q8, Q9. Defaults: see default_runs below (about 70 s with --repeat 5,
@@ -71,7 +75,8 @@
 
 #define MAX_REPEAT 15
 
-/* --multiplier: MC_OPTION_MULTIPLIER of every solve (the reference's too). */
+/* --multiplier: MC_OPTION_MULTIPLIER of every solve but the reference's (always the default,
+   MC_MULTIPLIER_LINEAR, so that runs with either value share one reference). */
 static int multiplier = MC_MULTIPLIER_LINEAR;
 /* --growth KIND:g: the meshes' growth outside the fine zone per cell kind (hertz_scene_build_graded;
    the reference keeps the default 1.15). Indexed by nodes per cell. */
@@ -447,6 +452,7 @@ static void run_once(const hertz_scene *s, int last, solution *r, double *t_wall
     r->x = malloc(sizeof(double) * n), r->p = malloc(sizeof(double) * n), r->vertex = malloc((size_t)n + 1);
     char *corner = calloc((size_t)s->body[0].n_nodes, 1);
     for (int e = 0; e < 2 * s->n_contact_edges[0]; ++e) corner[s->contact_edges[0][e]] = 1;
+    if (multiplier == MC_MULTIPLIER_QUADRATIC) memset(corner, 1, (size_t)s->body[0].n_nodes); /* a value at every node */
     /* sorted by x (insertion sort: the positions come in order along the surface) */
     for (mc_int j = 0; j < n; ++j) {
       double xj = s->body[0].xy[2 * nodes[j]], pj = pressure[j];
@@ -667,7 +673,10 @@ int main(int argc, char **argv) {
   fflush(stdout);
 
   /* the reference, then the checks against it */
+  const int requested_multiplier = multiplier;
+  multiplier = MC_MULTIPLIER_LINEAR;
   solve(&ref, 1, ratio, &ref_scene);
+  multiplier = requested_multiplier;
   if (!ref.ok) {
     printf("reference %s h1 = %g failed: %s\n", cell_kind_name(ref.npc), ref.h1, ref.message);
     return 1;

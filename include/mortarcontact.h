@@ -103,7 +103,7 @@ enum {
   MC_OPTION_ERROR_ESTIMATE = 12, /* int: 1 (default) every solve estimates its error (MC_INFO_ERROR_ESTIMATE,
                                     mc_get_error_indicator); 0 skips it */
   MC_OPTION_MULTIPLIER = 13      /* int: MC_MULTIPLIER_*; the contact multipliers of a body 1 with
-                                    quadratic cells (MC_METHOD_MORTAR); default MC_MULTIPLIER_QUADRATIC */
+                                    quadratic cells (MC_METHOD_MORTAR); default MC_MULTIPLIER_LINEAR */
 };
 
 /* Values of MC_OPTION_MULTIPLIER: the space of the contact pressure when body 1 has quadratic

@@ -77,7 +77,8 @@ enum class Option : int {
   feature_angle = MC_OPTION_FEATURE_ANGLE,
   threads = MC_OPTION_THREADS,
   interface_solver = MC_OPTION_INTERFACE_SOLVER,
-  error_estimate = MC_OPTION_ERROR_ESTIMATE
+  error_estimate = MC_OPTION_ERROR_ESTIMATE,
+  multiplier = MC_OPTION_MULTIPLIER
 };
 
 /// Values of Option::method.
@@ -106,6 +107,9 @@ enum class InterfaceSolver : int {
   condensed = MC_INTERFACE_CONDENSED,
   sparse = MC_INTERFACE_SPARSE
 };
+
+/// Values of Option::multiplier: the contact multipliers of a body 1 with quadratic cells.
+enum class Multiplier : int { linear = MC_MULTIPLIER_LINEAR, quadratic = MC_MULTIPLIER_QUADRATIC };
 
 enum class Info : int {
   dofs = MC_INFO_DOFS,

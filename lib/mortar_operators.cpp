@@ -302,6 +302,14 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, co
   rows.aux_count += last - first + 1;
 }
 
+// The quadratic multipliers' functions on an element at its coordinate s: the Lagrange ones of its
+// two ends and its middle (interpolatory: the multiplier's value at a node is its coefficient).
+// Tried instead: the Bernstein ones, (1 - s)^2, s^2, 2 s (1 - s), whose nonnegative coefficients
+// make the pressure nonnegative everywhere; same space, no better on Hertz (notes).
+void quadratic_multiplier_functions(double s, double f[3]) {
+  f[0] = (1 - s) * (1 - 2 * s), f[1] = s * (2 * s - 1), f[2] = 4 * s * (1 - s);
+}
+
 // Rows of one run when body 1's trace is quadratic (T6, Q8, Q9): the multipliers stay the
 // paper's M_h^1, continuous piecewise linear on the trace points (Gamma_c's vertex nodes) with
 // the end modification, but the constraint is the weak one, for each multiplier psi_i
@@ -362,7 +370,8 @@ void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, bool quad
       // The multiplier space's local functions: the hats of the two trace points, or the
       // quadratic ones of the element's two ends and its middle.
       const double s = q.s;
-      const double local[3] = {quadratic ? (1 - s) * (1 - 2 * s) : 1 - s, quadratic ? s * (2 * s - 1) : s, 4 * s * (1 - s)};
+      double local[3] = {1 - s, s, 0};
+      if (quadratic) quadratic_multiplier_functions(s, local);
       auto add_row = [&](int r, double w) {
         for (int a = 0; a < count1; ++a) body1[r].push_back({pos[a], w * phi1[a], scaled(q.normal, w * phi1[a])});
         for (int a = 0; a < count2; ++a) body2[r].push_back({node2[a], w * phi2[a], scaled(q.normal, w * phi2[a])});
@@ -426,10 +435,11 @@ void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, bool quad
       for (auto &[r, v] : c1) out.emplace_back(r, s_mid * v);
       continue;
     }
-    const double s = s_mid;
-    for (auto &[r, v] : c0) out.emplace_back(r, (1 - s) * (1 - 2 * s) * v);
-    for (auto &[r, v] : c1) out.emplace_back(r, s * (2 * s - 1) * v);
-    for (auto &[r, v] : middle_values(e)) out.emplace_back(r, 4 * s * (1 - s) * v);
+    double f[3];
+    quadratic_multiplier_functions(s_mid, f);
+    for (auto &[r, v] : c0) out.emplace_back(r, f[0] * v);
+    for (auto &[r, v] : c1) out.emplace_back(r, f[1] * v);
+    for (auto &[r, v] : middle_values(e)) out.emplace_back(r, f[2] * v);
   }
   for (int k = 0; k < n; ++k) {
     if (!run.trace[k].is_position() || elements_at[k] == 0) continue;

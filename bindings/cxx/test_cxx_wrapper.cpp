@@ -1,9 +1,10 @@
 // Tests of include/mortarcontact.hpp: ownership (move-only, destroyed once: run under ASan and
 // valgrind as a memcheck test), errors as exceptions with the status and the message, the
 // vector and pointer overloads, the getters' sizes, options (the interface solver forced either
-// way, and which one ran; the error estimate on and off), the log callback, a contact solve (the README's scene: uniform
-// pressure 0.1 transmitted exactly), and the same scene with body 1 a host body (its stiffness
-// assembled here, given as coordinate entries in both storages and as element matrices).
+// way, and which one ran; the error estimate on and off; the multipliers' values), the log
+// callback, a contact solve (the README's scene: uniform pressure 0.1 transmitted exactly), and
+// the same scene with body 1 a host body (its stiffness assembled here, given as coordinate
+// entries in both storages and as element matrices).
 // Whether every C function and constant has its wrapper: check_cxx_wrapper.py (cxx_wrapper_coverage).
 #include <mortarcontact.hpp>
 
@@ -208,6 +209,22 @@ void test_interface_solver_forced() {
   m.solve();
   const std::int64_t ran = m.get_info_int(mc::Info::interface_solver);
   EXPECT(ran == MC_INTERFACE_CONDENSED || ran == MC_INTERFACE_SPARSE);  // automatic: one of the two
+}
+
+// Option::multiplier takes either space (the README scene's body 1 has linear cells, which keep
+// the paper's: the same exact answer with both); 2 is not a value, and the message says which option.
+void test_multiplier_values() {
+  for (mc::Multiplier space : {mc::Multiplier::quadratic, mc::Multiplier::linear}) {
+    mc::Model m;
+    set_readme_scene(m);
+    m.set_option_int(mc::Option::multiplier, space);
+    m.solve();
+    expect_uniform_pressure(m, 0.1, __LINE__);
+  }
+  mc::Model m;
+  const std::string message = EXPECT_ERROR(mc::Status::error_argument, m.set_option_int(mc::Option::multiplier, 2));
+  EXPECT(message.find("MC_OPTION_MULTIPLIER") != std::string::npos);
+  EXPECT_ERROR(mc::Status::error_argument, m.set_option_real(mc::Option::multiplier, 1.0));
 }
 
 // Info::error_estimate and get_error_indicator (Option::error_estimate, on by default): a 3x3 Q1
@@ -529,6 +546,7 @@ int main() {
   test_readme_scene_vector_overloads();
   test_readme_scene_pointer_overloads_one_based();
   test_interface_solver_forced();
+  test_multiplier_values();
   test_error_estimate();
   test_loads_and_material_variants();
   test_log_callback();

@@ -49,7 +49,8 @@ module mortarcontact
   integer, parameter, public :: MC_OPTION_METHOD = 1, MC_OPTION_TOLERANCE = 2, &
        MC_OPTION_MAX_ITERATIONS = 3, MC_OPTION_ORDERING = 4, MC_OPTION_Q1_INTEGRATION = 6, &
        MC_OPTION_CONTACT_NORMAL = 7, MC_OPTION_CONTACT_SURFACE = 8, MC_OPTION_FEATURE_ANGLE = 9, &
-       MC_OPTION_THREADS = 10, MC_OPTION_INTERFACE_SOLVER = 11, MC_OPTION_ERROR_ESTIMATE = 12
+       MC_OPTION_THREADS = 10, MC_OPTION_INTERFACE_SOLVER = 11, MC_OPTION_ERROR_ESTIMATE = 12, &
+       MC_OPTION_MULTIPLIER = 13
   integer, parameter, public :: MC_METHOD_MORTAR = 0, MC_METHOD_DUAL_MORTAR = 1, &
        MC_METHOD_NODE_TO_SEGMENT = 2
   integer, parameter, public :: MC_NORMAL_NONMORTAR = 0, MC_NORMAL_MORTAR = 1
@@ -58,6 +59,7 @@ module mortarcontact
   integer, parameter, public :: MC_Q1_FULL = 0, MC_Q1_BBAR = 1
   integer, parameter, public :: MC_INTERFACE_AUTO = 0, MC_INTERFACE_CONDENSED = 1, &
        MC_INTERFACE_SPARSE = 2
+  integer, parameter, public :: MC_MULTIPLIER_LINEAR = 0, MC_MULTIPLIER_QUADRATIC = 1
   integer, parameter, public :: MC_MATRIX_FULL = 1, MC_MATRIX_TRIANGLE = 2
   integer, parameter, public :: MC_LOG_PHASE = 1, MC_LOG_ITERATION = 2
   integer, parameter, public :: MC_INFO_DOFS = 1, MC_INFO_FACTOR_NNZ = 2, MC_INFO_ITERATIONS = 3, &

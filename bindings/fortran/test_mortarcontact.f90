@@ -2,8 +2,9 @@
 ! from the library, 1-based ids, a single-body solve, the README's two-square contact scene
 ! with MC_OPTION_INTERFACE_SOLVER forced to each path (MC_INFO_INTERFACE_SOLVER says which ran),
 ! the error estimate (MC_INFO_ERROR_ESTIMATE, mc_get_error_indicator, MC_OPTION_ERROR_ESTIMATE),
-! and that scene with body 1 a host body held as a Smith and Griffiths program holds it (nf, g_g,
-! storkm, loads(0:neq)), given through each of the host-body calls, index bases 1 and 0.
+! MC_OPTION_MULTIPLIER's values, and that scene with body 1 a host body held as a Smith and
+! Griffiths program holds it (nf, g_g, storkm, loads(0:neq)), given through each of the host-body
+! calls, index bases 1 and 0.
 ! The contact patch test is examples/fortran/patch_test.f90 (also run by ctest).
 
 !> The log callback of the test: counts messages by level and keeps the phase messages.
@@ -103,6 +104,11 @@ program test_mortarcontact
   call expect(mc_set_option_int(m, MC_OPTION_METHOD, int(MC_METHOD_MORTAR, mc_int64)), MC_OK, 'option, int64')
   call expect(mc_set_option_real(m, MC_OPTION_TOLERANCE, 1d-12), MC_OK, 'real option')
   call expect(mc_set_option_int(m, 4242, 1), MC_ERROR_ARGUMENT, 'unknown option')
+  ! the multipliers of a quadratic body 1: MC_MULTIPLIER_LINEAR (default) or _QUADRATIC; 2 is not a value
+  call expect(mc_set_option_int(m, MC_OPTION_MULTIPLIER, MC_MULTIPLIER_QUADRATIC), MC_OK, 'quadratic multipliers')
+  call expect(mc_set_option_int(m, MC_OPTION_MULTIPLIER, MC_MULTIPLIER_LINEAR), MC_OK, 'linear multipliers')
+  call expect(mc_set_option_int(m, MC_OPTION_MULTIPLIER, 2), MC_ERROR_ARGUMENT, 'multiplier 2')
+  call check(index(mc_errmsg(m), 'MC_OPTION_MULTIPLIER') > 0, 'message: ' // mc_errmsg(m))
 
   ! A unit square, bottom clamped, pulled up on top (1-based ids).
   call expect(mc_set_plane(m, MC_PLANE_STRAIN, 1d0), MC_OK, 'mc_set_plane')

@@ -235,6 +235,7 @@ void set_options(mc_model *m, const Scene &scene) {
         "mc_set_option_int");
   setup(m, mc_set_option_int(m, MC_OPTION_ERROR_ESTIMATE, s.error_estimate ? 1 : 0), scene, "solver.error_estimate",
         "mc_set_option_int");
+  setup(m, mc_set_option_int(m, MC_OPTION_MULTIPLIER, s.multiplier), scene, "solver.multiplier", "mc_set_option_int");
 }
 
 // ---- results ------------------------------------------------------------------------------

@@ -283,11 +283,12 @@ Body parse_body(const Value &v, int index, const std::string &base_dir) {
 Solver parse_solver(const Value &v) {
   // Defaults: the library's (mortarcontact.h).
   Solver s{MC_METHOD_MORTAR, 1e-10, 200, MC_NORMAL_NONMORTAR, MC_Q1_FULL, MC_ORDERING_AUTO, MC_SURFACE_SMOOTH, 40, 0,
-           MC_INTERFACE_AUTO, true};
+           MC_INTERFACE_AUTO, true, MC_MULTIPLIER_LINEAR};
   if (!v.has("solver")) return s;
   Value o = v.child("solver");
   o.expect_object({"method", "tolerance", "max_iterations", "contact_normal", "q1_integration", "ordering",
-                   "contact_surface", "feature_angle", "threads", "interface_solver", "error_estimate"});
+                   "contact_surface", "feature_angle", "threads", "interface_solver", "error_estimate",
+                   "multiplier"});
   if (o.has("method"))
     s.method = o.child("method").choice({{"mortar", MC_METHOD_MORTAR},
                                          {"dual_mortar", MC_METHOD_DUAL_MORTAR},
@@ -309,6 +310,8 @@ Solver parse_solver(const Value &v) {
                                                              {"condensed", MC_INTERFACE_CONDENSED},
                                                              {"sparse", MC_INTERFACE_SPARSE}});
   if (o.has("error_estimate")) s.error_estimate = o.child("error_estimate").boolean();
+  if (o.has("multiplier"))
+    s.multiplier = o.child("multiplier").choice({{"linear", MC_MULTIPLIER_LINEAR}, {"quadratic", MC_MULTIPLIER_QUADRATIC}});
   return s;
 }
 

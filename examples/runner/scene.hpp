@@ -56,6 +56,7 @@ struct Solver {
   int threads;         // MC_OPTION_THREADS: 0 automatic, 1 serial, n at most n
   int interface_solver;  // MC_INTERFACE_*: MC_OPTION_INTERFACE_SOLVER
   bool error_estimate;   // MC_OPTION_ERROR_ESTIMATE: estimate the error (and write the indicators)
+  int multiplier;        // MC_MULTIPLIER_*: MC_OPTION_MULTIPLIER (a body 1 of second-order cells)
 };
 
 struct Output {

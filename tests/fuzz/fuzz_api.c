@@ -374,8 +374,8 @@ enum {
   OP_CLEAR_LOADS,    /* body                                                        */
   OP_CONTACT_SIDE,   /* body, byte side, byte first, byte count (0: all)            */
   OP_CONTACT_RAW,    /* body, count n, 2n ids                                       */
-  OP_OPTION_INT,     /* byte option (b % 13), byte kind: < 200: b % 6 - 1; else 8 raw bytes */
-  OP_OPTION_REAL,    /* byte option (b % 13), real value                            */
+  OP_OPTION_INT,     /* byte option (b % 14), byte kind: < 200: b % 6 - 1; else 8 raw bytes */
+  OP_OPTION_REAL,    /* byte option (b % 14), real value                            */
   OP_SOLVE,          /* - (then queries every result)                               */
   OP_QUERY,          /* - (queries every result)                                    */
   OP_GAP_OFFSET,     /* count n, n ids, n reals (needs mc_set_gap_offset)           */
@@ -633,7 +633,7 @@ static void op_contact_raw(harness *h, stream *s) {
 
 static void op_option_int(harness *h, stream *s) {
   mc_model *m = h->m;
-  int option = read_u8(s) % 13; /* 0 .. 12: every option (MC_OPTION_ERROR_ESTIMATE = 12) and bad ones (0, 5) */
+  int option = read_u8(s) % 14; /* 0 .. 13: every option (MC_OPTION_MULTIPLIER = 13) and bad ones (0, 5) */
   uint8_t kind = read_u8(s);
   /* -1 .. 4: every value of the enum options (MC_INTERFACE_AUTO .. _SPARSE = 0 .. 2) and bad ones */
   int64_t value = kind < 200 ? (int64_t)(kind % 6) - 1 : (int64_t)read_bytes(s, 8);
@@ -964,7 +964,7 @@ static void run(harness *h, stream *s) {
       case OP_CONTACT_RAW: op_contact_raw(h, s); break;
       case OP_OPTION_INT: op_option_int(h, s); break;
       case OP_OPTION_REAL: {
-        int option = read_u8(s) % 13; /* 0 .. 12: every option (MC_OPTION_ERROR_ESTIMATE = 12) and bad ones (0, 5) */
+        int option = read_u8(s) % 14; /* 0 .. 13: every option (MC_OPTION_MULTIPLIER = 13) and bad ones (0, 5) */
         CALL(mc_set_option_real(m, option, read_real(s)));
         break;
       }

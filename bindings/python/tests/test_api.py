@@ -219,6 +219,18 @@ class TestModel(unittest.TestCase):
                 m.set_option_real(mc.MC_OPTION_ERROR_ESTIMATE, 1.0)
             self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
             self.assertIsInstance(m.get_info(mc.MC_INFO_ERROR_ESTIMATE), float)  # a real info
+            # the multipliers of a quadratic body 1: an integer option, MC_MULTIPLIER_LINEAR (default)
+            # or MC_MULTIPLIER_QUADRATIC
+            for space in (mc.MC_MULTIPLIER_QUADRATIC, mc.MC_MULTIPLIER_LINEAR):
+                m.set_option(mc.MC_OPTION_MULTIPLIER, space)
+            for bad in (2, -1):
+                with self.assertRaises(mc.MortarContactError) as cm:
+                    m.set_option(mc.MC_OPTION_MULTIPLIER, bad)
+                self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
+                self.assertIn("MC_OPTION_MULTIPLIER", str(cm.exception))
+            with self.assertRaises(mc.MortarContactError) as cm:
+                m.set_option_real(mc.MC_OPTION_MULTIPLIER, 1.0)
+            self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
 
     def test_single_body_solve_one_based(self):
         """A unit square, bottom clamped, pulled up on top; ids 1-based. No contact."""

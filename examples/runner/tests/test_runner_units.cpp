@@ -461,6 +461,7 @@ START_TEST(valid_scene_parsed_with_defaults) {
   ck_assert_double_eq(s.solver.tolerance, 1e-10);
   ck_assert_int_eq(s.solver.threads, 0);  // MC_OPTION_THREADS: automatic
   ck_assert_int_eq(s.solver.interface_solver, MC_INTERFACE_AUTO);  // MC_OPTION_INTERFACE_SOLVER
+  ck_assert_int_eq(s.solver.multiplier, MC_MULTIPLIER_LINEAR);     // MC_OPTION_MULTIPLIER
   ck_assert_int_eq(parse_scene(scene_text("\"dual_mortar\"", "\"dual_mortar\", \"threads\": 1"), "s.json").solver.threads, 1);
   ck_assert_str_eq(s.bodies[0].mesh_path.c_str(), "dir/m.msh");  // relative to the scene file
   ck_assert_str_eq(s.output.pressure_csv.c_str(), "dir/out/p.csv");
@@ -500,6 +501,22 @@ START_TEST(interface_solver_parsed) {
              "solver.interface_solver: \"dense\" is not one of \"auto\", \"condensed\", \"sparse\"");
   ASSERT_HAS(scene_error(scene_text("\"method\": \"dual_mortar\"", "\"interface_solver\": 2")),
              "solver.interface_solver: must be a string");
+}
+END_TEST
+
+START_TEST(multiplier_parsed) {
+  const std::pair<const char *, int> values[2] = {{"linear", MC_MULTIPLIER_LINEAR},
+                                                  {"quadratic", MC_MULTIPLIER_QUADRATIC}};
+  for (const auto &v : values) {
+    const Scene s = parse_scene(scene_text("\"method\": \"dual_mortar\"", std::string("\"method\": \"dual_mortar\", "
+                                           "\"multiplier\": \"") + v.first + "\""),
+                                "dir/s.json");
+    ck_assert_int_eq(s.solver.multiplier, v.second);
+  }
+  ASSERT_HAS(scene_error(scene_text("\"method\": \"dual_mortar\"", "\"multiplier\": \"cubic\"")),
+             "solver.multiplier: \"cubic\" is not one of \"linear\", \"quadratic\"");
+  ASSERT_HAS(scene_error(scene_text("\"method\": \"dual_mortar\"", "\"multiplier\": 1")),
+             "solver.multiplier: must be a string");
 }
 END_TEST
 
@@ -911,6 +928,7 @@ int main(int argc, char **argv) {
   tcase_add_test(tc, valid_scene_parsed_with_defaults);
   tcase_add_test(tc, contact_surface_options_parsed);
   tcase_add_test(tc, interface_solver_parsed);
+  tcase_add_test(tc, multiplier_parsed);
   tcase_add_test(tc, scene_errors_name_the_key);
   tcase_add_test(tc, adaptive_scene_parsed);
   tcase_add_test(tc, size_field_equidistributes);
