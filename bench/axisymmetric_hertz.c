@@ -9,7 +9,8 @@
  * "cells": the cell kinds side by side (mortar, sphere_on_flat_solve_cells; h a cell's size):
  * DOFs, p0 and a fitted against Hertz, the larger of the two errors, and for each kind other
  * than P1 the DOFs P1 needs for that larger error (log-log interpolated between the two P1
- * sizes where P1's error, from that size on, gets there), docs/benchmarks.md "Axisymmetric:
+ * sizes where P1's error, from that size on, gets there); then the same with a_moment (from the
+ * contact forces, no fit) in place of the fitted a. docs/benchmarks.md "Axisymmetric:
  * quadratic cells".
  *
  * For each spacing h (both bodies' fine spacing near the contact, examples/scenes) and each
@@ -30,8 +31,24 @@ typedef struct kind_row {
   int npc;
   double h;
   sphere_result r;
-  double err; /* max(|p0 error|, |a error|) */
+  double err[2]; /* max(|p0 error|, |a error|) with a fitted, and with a_moment */
 } kind_row;
+
+/* The DOFs P1 needs for a larger error `e` (measure `which`): log-log interpolated between the
+   two P1 sizes where P1's error, from that size on (envelope env over the P1 rows p1, by DOFs),
+   gets there; NAN beyond P1's finest; *at_coarsest when already P1's coarsest does. */
+static double p1_dofs_at(const kind_row *rows, const int *p1, int m, const double *env, double e, int *at_coarsest) {
+  *at_coarsest = 0;
+  if (m == 0 || !isfinite(e)) return NAN;
+  if (env[0] <= e) return *at_coarsest = 1, (double)rows[p1[0]].r.dofs;
+  for (int k = 1; k < m; ++k)
+    if (env[k] <= e) {
+      double t = env[k] > 0 ? log(e / env[k - 1]) / log(env[k] / env[k - 1]) : 1;
+      double lo = log((double)rows[p1[k - 1]].r.dofs), hi = log((double)rows[p1[k]].r.dofs);
+      return exp(lo + t * (hi - lo));
+    }
+  return NAN;
+}
 
 /* The cell kinds side by side: see the file header. */
 static int compare_kinds(int argc, char **argv) {
@@ -68,7 +85,8 @@ static int compare_kinds(int argc, char **argv) {
     }
   }
   printf("| cells | h | DOFs | p0 fitted | error | a fitted | error | larger error | solve s (library) | P1 DOFs at that "
-         "error | DOFs / P1's |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+         "error | DOFs / P1's | a_moment error | larger of p0's and a_moment's | P1 DOFs at that error | DOFs / P1's |\n"
+         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (int i = 0; i < n; ++i) {
     kind_row *w = &rows[i];
     int st = sphere_on_flat_solve_cells(w->h, w->npc, MC_METHOD_MORTAR, MC_NORMAL_MORTAR, MC_AXISYMMETRIC, multiplier, &w->r);
@@ -76,7 +94,8 @@ static int compare_kinds(int argc, char **argv) {
       printf("| %s | %g | failed (%d) |\n", cell_kind_name(w->npc), w->h, st);
       return 1;
     }
-    w->err = fmax(fabs(w->r.p0 / w->r.p0_hertz - 1), fabs(w->r.a / w->r.a_hertz - 1));
+    w->err[0] = fmax(fabs(w->r.p0 / w->r.p0_hertz - 1), fabs(w->r.a / w->r.a_hertz - 1));
+    w->err[1] = fmax(fabs(w->r.p0 / w->r.p0_hertz - 1), fabs(w->r.a_moment / w->r.a_hertz - 1));
   }
   /* P1's envelope: from each P1 size on (by DOFs), the largest error */
   int p1[128], m = 0;
@@ -87,27 +106,23 @@ static int compare_kinds(int argc, char **argv) {
       int t = p1[k];
       p1[k] = p1[k - 1], p1[k - 1] = t;
     }
-  double env[128];
-  for (int k = m - 1; k >= 0; --k) env[k] = fmax(rows[p1[k]].err, k + 1 < m ? env[k + 1] : 0);
+  double env[2][128];
+  for (int e = 0; e < 2; ++e)
+    for (int k = m - 1; k >= 0; --k) env[e][k] = fmax(rows[p1[k]].err[e], k + 1 < m ? env[e][k + 1] : 0);
   for (int i = 0; i < n; ++i) {
     const kind_row *w = &rows[i];
     printf("| %s | %g | %ld | %.5g | %+.2f %% | %.5g | %+.2f %% | %.2f %% | %.3f |", cell_kind_name(w->npc), w->h, w->r.dofs,
-           w->r.p0, 100 * (w->r.p0 / w->r.p0_hertz - 1), w->r.a, 100 * (w->r.a / w->r.a_hertz - 1), 100 * w->err,
+           w->r.p0, 100 * (w->r.p0 / w->r.p0_hertz - 1), w->r.a, 100 * (w->r.a / w->r.a_hertz - 1), 100 * w->err[0],
            w->r.seconds);
-    double dofs = NAN;
-    const char *prefix = "";
-    if (w->npc != 3 && m > 0) {
-      if (env[0] <= w->err) dofs = (double)rows[p1[0]].r.dofs, prefix = "<= ";
-      for (int k = 1; k < m && !isfinite(dofs); ++k)
-        if (env[k] <= w->err) {
-          double t = env[k] > 0 ? log(w->err / env[k - 1]) / log(env[k] / env[k - 1]) : 1;
-          double lo = log((double)rows[p1[k - 1]].r.dofs), hi = log((double)rows[p1[k]].r.dofs);
-          dofs = exp(lo + t * (hi - lo));
-        }
+    for (int e = 0; e < 2; ++e) {
+      if (e == 1) printf(" %+.2f %% | %.2f %% |", 100 * (w->r.a_moment / w->r.a_hertz - 1), 100 * w->err[1]);
+      int coarsest;
+      const double dofs = w->npc == 3 ? NAN : p1_dofs_at(rows, p1, m, env[e], w->err[e], &coarsest);
+      if (w->npc == 3 || !isfinite(w->err[e])) printf(" - | - |");
+      else if (!isfinite(dofs)) printf(" beyond P1's finest | - |");
+      else printf(" %s%.0f | %.2f |", coarsest ? "<= " : "", dofs, w->r.dofs / dofs);
     }
-    if (w->npc == 3 || !isfinite(w->err)) printf(" - | - |\n");
-    else if (!isfinite(dofs)) printf(" beyond P1's finest | - |\n");
-    else printf(" %s%.0f | %.2f |\n", prefix, dofs, w->r.dofs / dofs);
+    printf("\n");
     fflush(stdout);
   }
   return 0;

@@ -96,9 +96,11 @@ int sphere_on_flat_solve_cells(double h, int nodes_per_cell, int method, int nor
       for (j = 0; j < s.body[0].n_nodes; ++j) corner[j] = 1;
     double r_last = 0, r_next = INFINITY, *rc = malloc(sizeof(double) * (size_t)n), *pc = malloc(sizeof(double) * (size_t)n);
     int nc = 0;
+    double moment = 0;
     for (j = 0; j < n; ++j) {
       r[j] = s.body[0].xy[2 * nodes[j]];
       res->total_force -= f[j] * normals[2 * j + 1]; /* axial share; the normals point down */
+      moment -= f[j] * normals[2 * j + 1] * r[j] * r[j];
       if (p[j] > res->p_max) res->p_max = p[j];
       if (!corner[nodes[j]]) continue;
       rc[nc] = r[j], pc[nc++] = p[j];
@@ -108,6 +110,7 @@ int sphere_on_flat_solve_cells(double h, int nodes_per_cell, int method, int nor
     for (j = 0; j < nc; ++j)
       if (rc[j] > r_last && rc[j] < r_next) r_next = rc[j];
     res->a_nodes = 0.5 * (r_last + r_next);
+    res->a_moment = res->total_force > 0 ? sqrt(2.5 * moment / res->total_force) : 0;
     fit_profile(nc, rc, pc, &res->p0, &res->a);
     free(nodes), free(p), free(f), free(normals), free(r), free(corner), free(rc), free(pc);
   }

@@ -22,6 +22,9 @@ typedef struct sphere_result {
   double load, total_force;  /* the applied force and the sum of the contact forces (axial) */
   double p0, a;              /* fitted to the pressure profile: p^2 = p0^2 (1 - r^2 / a^2) */
   double a_nodes;            /* midway between the outermost loaded node and the next one */
+  double a_moment;           /* sqrt(5/2 sum f r^2 / sum f) over the axial contact forces: exact for
+                                Hertz's p0 sqrt(1 - r^2/a^2) (its r^2-moment is 2 a^2 / 5), and it
+                                needs no fit (bench/hertz_quadratic's a_moment, axisymmetric) */
   double p_max;              /* the largest nodal pressure */
   double axis_pressure;      /* the nodal pressure at the axis node */
   double p0_hertz, a_hertz;
