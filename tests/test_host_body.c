@@ -523,6 +523,7 @@ typedef struct run_options {
   int resolve;   /* also re-solve both with the load times 1.7 */
   int threads;   /* MC_OPTION_THREADS of the host model (0: not set) */
   int curved;    /* the host model's quadratic mesh bodies: contact by mc_set_contact_curved */
+  int multiplier; /* MC_OPTION_MULTIPLIER of both models */
   variant v[2];  /* per body */
 } run_options;
 
@@ -534,6 +535,7 @@ typedef struct worst_of {
 static void set_options(mc_model *m, const run_options *o) {
   OK(mc_set_option_int(m, MC_OPTION_METHOD, o->method));
   OK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, o->solver));
+  OK(mc_set_option_int(m, MC_OPTION_MULTIPLIER, o->multiplier));
 }
 
 static void note(worst_of *w, differences d, const results *h) {
@@ -603,10 +605,11 @@ static void run_comparison(const scene_def *s, const run_options *o, worst_of *w
       snprintf(what[k], sizeof what[k], "mesh %s%s", cell_kind_name(s->b[k].npc),
                o->curved && s->b[k].npc > 4 ? " (mc_set_contact_curved)" : "");
   }
-  printf("%s, base %d, %s, %s%s; body 1 %s; body 2 %s: host - mesh: u %.1e, p %.1e, contact load %.1e; K u - f - r %.1e; "
+  printf("%s, base %d, %s, %s%s%s; body 1 %s; body 2 %s: host - mesh: u %.1e, p %.1e, contact load %.1e; K u - f - r %.1e; "
          "displacement - equation solution %.1e\n",
          s->name, base, kMethodName[o->method], o->solver == MC_INTERFACE_SPARSE ? "sparse" : "condensed",
-         o->threads == 2 ? ", two threads" : "", what[0], what[1],
+         o->threads == 2 ? ", two threads" : "",
+         o->multiplier == MC_MULTIPLIER_QUADRATIC && s->b[0].npc > 4 ? ", quadratic multipliers" : "", what[0], what[1],
          d.u, d.p, d.r, got.residual, got.disp_vs_eq);
 
   if (o->resolve) { /* a new load vector: no factorization, the same answer as the mesh bodies' */
@@ -689,6 +692,7 @@ START_TEST(flat_patch_host_equals_mesh) {
         s.thickness = n % 6 == 5 ? 0.25 : 1;
         o.threads = n % 5 == 4 ? 2 : 0;
         o.curved = base == 1;
+        o.multiplier = (n / 2) % 2 ? MC_MULTIPLIER_QUADRATIC : MC_MULTIPLIER_LINEAR;
         run_comparison(&s, &o, &worst);
       }
     scene_free(&s);
@@ -745,6 +749,7 @@ START_TEST(hertz_host_equals_mesh) {
       }
       o.threads = n % 4 == 3 ? 2 : 0;
       o.curved = mask != 3;
+      o.multiplier = mask == 2 ? MC_MULTIPLIER_LINEAR : MC_MULTIPLIER_QUADRATIC; /* each quadratic kind with both */
       run_comparison(&s, &o, &worst);
     }
     scene_free(&s);
