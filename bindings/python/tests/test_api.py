@@ -199,38 +199,29 @@ class TestModel(unittest.TestCase):
             with self.assertRaises(mc.MortarContactError) as cm:
                 m.set_option(mc.MC_OPTION_CONTACT_SURFACE, 2)
             self.assertIn("MC_OPTION_CONTACT_SURFACE", str(cm.exception))
-            # the interface solver: an integer option (set_option picks the integer call)
-            for path in (mc.MC_INTERFACE_AUTO, mc.MC_INTERFACE_CONDENSED, mc.MC_INTERFACE_SPARSE):
-                m.set_option(mc.MC_OPTION_INTERFACE_SOLVER, path)
-            for bad in (3, -1):
-                with self.assertRaises(mc.MortarContactError) as cm:
-                    m.set_option(mc.MC_OPTION_INTERFACE_SOLVER, bad)
-                self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
-                self.assertIn("MC_OPTION_INTERFACE_SOLVER", str(cm.exception))
+            # the integer options with a few values: each accepted, the rest refused naming the
+            # option, and the real-valued call refused (set_option picks the integer call)
+            self._check_int_option(m, mc.MC_OPTION_INTERFACE_SOLVER, "MC_OPTION_INTERFACE_SOLVER",
+                                   (mc.MC_INTERFACE_AUTO, mc.MC_INTERFACE_CONDENSED, mc.MC_INTERFACE_SPARSE), (3, -1))
             self.assertEqual(m.get_info(mc.MC_INFO_INTERFACE_SOLVER), 0)  # an integer info; no solve yet
-            # the error estimate: an integer option, 1 (default) or 0
-            for on in (0, 1):
-                m.set_option(mc.MC_OPTION_ERROR_ESTIMATE, on)
-            with self.assertRaises(mc.MortarContactError) as cm:
-                m.set_option(mc.MC_OPTION_ERROR_ESTIMATE, 2)
-            self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
-            self.assertIn("MC_OPTION_ERROR_ESTIMATE", str(cm.exception))
-            with self.assertRaises(mc.MortarContactError) as cm:
-                m.set_option_real(mc.MC_OPTION_ERROR_ESTIMATE, 1.0)
-            self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
+            # the error estimate: 1 (default) or 0
+            self._check_int_option(m, mc.MC_OPTION_ERROR_ESTIMATE, "MC_OPTION_ERROR_ESTIMATE", (0, 1), (2,))
             self.assertIsInstance(m.get_info(mc.MC_INFO_ERROR_ESTIMATE), float)  # a real info
-            # the multipliers of a quadratic body 1: an integer option, MC_MULTIPLIER_LINEAR (default)
-            # or MC_MULTIPLIER_QUADRATIC
-            for space in (mc.MC_MULTIPLIER_QUADRATIC, mc.MC_MULTIPLIER_LINEAR):
-                m.set_option(mc.MC_OPTION_MULTIPLIER, space)
-            for bad in (2, -1):
-                with self.assertRaises(mc.MortarContactError) as cm:
-                    m.set_option(mc.MC_OPTION_MULTIPLIER, bad)
-                self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
-                self.assertIn("MC_OPTION_MULTIPLIER", str(cm.exception))
+            # the multipliers of a quadratic body 1: MC_MULTIPLIER_LINEAR (default) or _QUADRATIC
+            self._check_int_option(m, mc.MC_OPTION_MULTIPLIER, "MC_OPTION_MULTIPLIER",
+                                   (mc.MC_MULTIPLIER_QUADRATIC, mc.MC_MULTIPLIER_LINEAR), (2, -1))
+
+    def _check_int_option(self, m, option, name, good, bad):
+        for value in good:
+            m.set_option(option, value)
+        for value in bad:
             with self.assertRaises(mc.MortarContactError) as cm:
-                m.set_option_real(mc.MC_OPTION_MULTIPLIER, 1.0)
+                m.set_option(option, value)
             self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
+            self.assertIn(name, str(cm.exception))
+        with self.assertRaises(mc.MortarContactError) as cm:
+            m.set_option_real(option, 1.0)
+        self.assertEqual(cm.exception.status, mc.MC_ERROR_ARGUMENT)
 
     def test_single_body_solve_one_based(self):
         """A unit square, bottom clamped, pulled up on top; ids 1-based. No contact."""

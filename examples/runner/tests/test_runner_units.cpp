@@ -488,35 +488,37 @@ START_TEST(contact_surface_options_parsed) {
 }
 END_TEST
 
+// A solver key taking names: each name parsed to its value (read back by `field`), an unknown
+// name and a non-string refused with the messages the runner prints.
+template <size_t N, class Field>
+static void check_solver_names(const char *key, const std::pair<const char *, int> (&values)[N], const char *bad,
+                               const char *names, Field field) {
+  const std::string quoted = std::string("\"") + key + "\": ";
+  for (const auto &v : values) {
+    const Scene s = parse_scene(scene_text("\"method\": \"dual_mortar\"",
+                                           "\"method\": \"dual_mortar\", " + quoted + "\"" + v.first + "\""),
+                                "dir/s.json");
+    ck_assert_int_eq(field(s.solver), v.second);
+  }
+  ASSERT_HAS(scene_error(scene_text("\"method\": \"dual_mortar\"", quoted + "\"" + bad + "\"")),
+             std::string("solver.") + key + ": \"" + bad + "\" is not one of " + names);
+  ASSERT_HAS(scene_error(scene_text("\"method\": \"dual_mortar\"", quoted + "2")),
+             std::string("solver.") + key + ": must be a string");
+}
+
 START_TEST(interface_solver_parsed) {
   const std::pair<const char *, int> values[3] = {
       {"auto", MC_INTERFACE_AUTO}, {"condensed", MC_INTERFACE_CONDENSED}, {"sparse", MC_INTERFACE_SPARSE}};
-  for (const auto &v : values) {
-    const Scene s = parse_scene(scene_text("\"method\": \"dual_mortar\"", std::string("\"method\": \"dual_mortar\", "
-                                           "\"interface_solver\": \"") + v.first + "\""),
-                                "dir/s.json");
-    ck_assert_int_eq(s.solver.interface_solver, v.second);
-  }
-  ASSERT_HAS(scene_error(scene_text("\"method\": \"dual_mortar\"", "\"interface_solver\": \"dense\"")),
-             "solver.interface_solver: \"dense\" is not one of \"auto\", \"condensed\", \"sparse\"");
-  ASSERT_HAS(scene_error(scene_text("\"method\": \"dual_mortar\"", "\"interface_solver\": 2")),
-             "solver.interface_solver: must be a string");
+  check_solver_names("interface_solver", values, "dense", "\"auto\", \"condensed\", \"sparse\"",
+                     [](const auto &solver) { return solver.interface_solver; });
 }
 END_TEST
 
 START_TEST(multiplier_parsed) {
   const std::pair<const char *, int> values[2] = {{"linear", MC_MULTIPLIER_LINEAR},
                                                   {"quadratic", MC_MULTIPLIER_QUADRATIC}};
-  for (const auto &v : values) {
-    const Scene s = parse_scene(scene_text("\"method\": \"dual_mortar\"", std::string("\"method\": \"dual_mortar\", "
-                                           "\"multiplier\": \"") + v.first + "\""),
-                                "dir/s.json");
-    ck_assert_int_eq(s.solver.multiplier, v.second);
-  }
-  ASSERT_HAS(scene_error(scene_text("\"method\": \"dual_mortar\"", "\"multiplier\": \"cubic\"")),
-             "solver.multiplier: \"cubic\" is not one of \"linear\", \"quadratic\"");
-  ASSERT_HAS(scene_error(scene_text("\"method\": \"dual_mortar\"", "\"multiplier\": 1")),
-             "solver.multiplier: must be a string");
+  check_solver_names("multiplier", values, "cubic", "\"linear\", \"quadratic\"",
+                     [](const auto &solver) { return solver.multiplier; });
 }
 END_TEST
 
