@@ -3,7 +3,8 @@
  *
  *   build/bench/axisymmetric_hertz [speed] [h ...]   (default h: 0.04 0.02 0.01 0.007 0.005;
  *                                                      "speed": the speed table only)
- *   build/bench/axisymmetric_hertz cells [--multiplier linear|quadratic] KIND:h,h,... [KIND:h,...]
+ *   build/bench/axisymmetric_hertz cells [--multiplier linear|quadratic] [--method mortar|dual] KIND:h,h,...
+ *                                        (--method dual: T6, Q8, Q9 by dual mortar, P1 by mortar)
  *                                        (KIND: P1 Q1 T6 Q8 Q9; MC_OPTION_MULTIPLIER, default linear)
  *
  * "cells": the cell kinds side by side (mortar, sphere_on_flat_solve_cells; h a cell's size):
@@ -53,8 +54,17 @@ static double p1_dofs_at(const kind_row *rows, const int *p1, int m, const doubl
 /* The cell kinds side by side: see the file header. */
 static int compare_kinds(int argc, char **argv) {
   static kind_row rows[128];
-  int n = 0, multiplier = MC_MULTIPLIER_LINEAR;
+  int n = 0, multiplier = MC_MULTIPLIER_LINEAR, dual = 0;
   for (int i = 0; i < argc; ++i) {
+    if (!strcmp(argv[i], "--method") && i + 1 < argc) {
+      ++i;
+      if (!strcmp(argv[i], "dual")) dual = 1;
+      else if (strcmp(argv[i], "mortar")) {
+        fprintf(stderr, "cells: --method takes mortar or dual, got %s\n", argv[i]);
+        return 2;
+      }
+      continue;
+    }
     if (!strcmp(argv[i], "--multiplier") && i + 1 < argc) {
       ++i;
       if (!strcmp(argv[i], "linear")) multiplier = MC_MULTIPLIER_LINEAR;
@@ -89,7 +99,8 @@ static int compare_kinds(int argc, char **argv) {
          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (int i = 0; i < n; ++i) {
     kind_row *w = &rows[i];
-    int st = sphere_on_flat_solve_cells(w->h, w->npc, MC_METHOD_MORTAR, MC_NORMAL_MORTAR, MC_AXISYMMETRIC, multiplier, &w->r);
+    const int method = dual && w->npc > 4 ? MC_METHOD_DUAL_MORTAR : MC_METHOD_MORTAR; /* P1 stays the paper's */
+    int st = sphere_on_flat_solve_cells(w->h, w->npc, method, MC_NORMAL_MORTAR, MC_AXISYMMETRIC, multiplier, &w->r);
     if (st) {
       printf("| %s | %g | failed (%d) |\n", cell_kind_name(w->npc), w->h, st);
       return 1;

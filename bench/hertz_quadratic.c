@@ -50,8 +50,10 @@
  *
  * usage: hertz_quadratic [--repeat n] [--ratio r] [--ref KIND:h1] [--check KIND:h1 ...]
  *                        [--json file] [--quick] [--global]
- *                        [--multiplier linear|quadratic] [--growth KIND:g] [--fine KIND:w] [KIND:h1,h1,... ...]
+ *                        [--multiplier linear|quadratic] [--method mortar|dual] [--growth KIND:g] [--fine KIND:w] [KIND:h1,h1,... ...]
  *   --multiplier linear|quadratic: MC_OPTION_MULTIPLIER of the solves (the reference: linear);
+ *   --method dual: T6, Q8 and Q9 by MC_METHOD_DUAL_MORTAR (their quadratic trace's dual basis;
+ *   P1, Q1 and the reference keep MC_METHOD_MORTAR);
  *   --growth KIND:g, --fine KIND:w: that kind's meshes with growth g outside a fine zone of
  *   half-width w (hertz_scene_build_graded; defaults 1.15 and 0.4, the reference's always);
  *   --global: the energy error over both bodies whole instead of the box around the contact, and
@@ -78,6 +80,9 @@
 /* --multiplier: MC_OPTION_MULTIPLIER of every solve but the reference's (always the default,
    MC_MULTIPLIER_LINEAR, so that runs with either value share one reference). */
 static int multiplier = MC_MULTIPLIER_LINEAR;
+/* --method dual: the quadratic kinds (T6, Q8, Q9; not the reference) by MC_METHOD_DUAL_MORTAR,
+   the dual basis of their quadratic trace; P1 and Q1 keep the paper's mortar. */
+static int dual = 0;
 /* --growth KIND:g: the meshes' growth outside the fine zone per cell kind (hertz_scene_build_graded;
    the reference keeps the default 1.15). Indexed by nodes per cell. */
 static double growth_of[10] = {1.15, 1.15, 1.15, 1.15, 1.15, 1.15, 1.15, 1.15, 1.15, 1.15};
@@ -424,7 +429,7 @@ static void run_once(const hertz_scene *s, int last, solution *r, double *t_wall
   TRY(mc_add_traction(m, 1, s->n_top_edges, s->top_edges, traction));
   TRY(mc_set_contact(m, 1, s->n_contact_edges[0], s->contact_edges[0]));
   TRY(mc_set_contact(m, 2, s->n_contact_edges[1], s->contact_edges[1]));
-  TRY(mc_set_option_int(m, MC_OPTION_METHOD, MC_METHOD_MORTAR));
+  TRY(mc_set_option_int(m, MC_OPTION_METHOD, dual && s->body[0].nodes_per_cell > 4 ? MC_METHOD_DUAL_MORTAR : MC_METHOD_MORTAR));
   TRY(mc_set_option_int(m, MC_OPTION_CONTACT_NORMAL, MC_NORMAL_MORTAR));
   TRY(mc_set_option_int(m, MC_OPTION_MULTIPLIER, multiplier));
   TRY(mc_solve(m));
@@ -452,7 +457,7 @@ static void run_once(const hertz_scene *s, int last, solution *r, double *t_wall
     r->x = malloc(sizeof(double) * n), r->p = malloc(sizeof(double) * n), r->vertex = malloc((size_t)n + 1);
     char *corner = calloc((size_t)s->body[0].n_nodes, 1);
     for (int e = 0; e < 2 * s->n_contact_edges[0]; ++e) corner[s->contact_edges[0][e]] = 1;
-    if (multiplier == MC_MULTIPLIER_QUADRATIC) memset(corner, 1, (size_t)s->body[0].n_nodes); /* a value at every node */
+    if (multiplier == MC_MULTIPLIER_QUADRATIC || dual) memset(corner, 1, (size_t)s->body[0].n_nodes); /* a value at every node */
     /* sorted by x (insertion sort: the positions come in order along the surface) */
     for (mc_int j = 0; j < n; ++j) {
       double xj = s->body[0].xy[2 * nodes[j]], pj = pressure[j];
@@ -625,6 +630,12 @@ int main(int argc, char **argv) {
       if (!npc || (growth && !(v >= 1.01 && v <= 3)) || (!growth && !(v > 0 && v <= 0.5))) goto usage;
       (growth ? growth_of : fine_of)[npc] = v;
     }
+    else if (!strcmp(argv[i], "--method") && i + 1 < argc) {
+      ++i;
+      if (!strcmp(argv[i], "dual")) dual = 1;
+      else if (!strcmp(argv[i], "mortar")) dual = 0;
+      else goto usage;
+    }
     else if (!strcmp(argv[i], "--multiplier") && i + 1 < argc) {
       ++i;
       if (!strcmp(argv[i], "linear")) multiplier = MC_MULTIPLIER_LINEAR;
@@ -673,10 +684,10 @@ int main(int argc, char **argv) {
   fflush(stdout);
 
   /* the reference, then the checks against it */
-  const int requested_multiplier = multiplier;
-  multiplier = MC_MULTIPLIER_LINEAR;
+  const int requested_multiplier = multiplier, requested_dual = dual;
+  multiplier = MC_MULTIPLIER_LINEAR, dual = 0;
   solve(&ref, 1, ratio, &ref_scene);
-  multiplier = requested_multiplier;
+  multiplier = requested_multiplier, dual = requested_dual;
   if (!ref.ok) {
     printf("reference %s h1 = %g failed: %s\n", cell_kind_name(ref.npc), ref.h1, ref.message);
     return 1;

@@ -166,7 +166,9 @@ enum { MC_INTERFACE_AUTO = 0, MC_INTERFACE_CONDENSED = 1, MC_INTERFACE_SPARSE = 
 /* Values of MC_OPTION_METHOD: how the non-penetration condition is discretized. */
 enum {
   MC_METHOD_MORTAR = 0,          /* the paper's cone K_h: nodal values of u1.n + pi_h^1(u2.n) (3.2) */
-  MC_METHOD_DUAL_MORTAR = 1,     /* same, with Wohlmuth's biorthogonal multiplier basis (diagonal D) */
+  MC_METHOD_DUAL_MORTAR = 1,     /* same, with Wohlmuth's biorthogonal multiplier basis (diagonal D); a
+                                    body 1 of quadratic cells: the dual basis of its quadratic trace,
+                                    a value at every contact node */
   MC_METHOD_NODE_TO_SEGMENT = 2  /* pointwise: each body-1 node against the body-2 point it projects to */
 };
 

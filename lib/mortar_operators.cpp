@@ -193,7 +193,7 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, co
       for (auto &[node, value] : w) end_row[e].emplace_back(node, value);
     }
   // The multipliers (rows of D and M) that trace point k's test function on element e feeds.
-  const MultiplierSpace space(run, method == MC_METHOD_MORTAR);
+  const MultiplierSpace space(run, true);  // shared ends for both bases (mortar_spaces.hpp)
   // D (band: trace points i-1, i, i+1 of row i, cyclic on a loop) and M (sparse: row i over the
   // body-2 nodes that its multiplier's support faces).
   std::vector<double> lower(n, 0.0), diag(n, 0.0), upper(n, 0.0);
@@ -286,14 +286,9 @@ ConstraintRows build_constraint_rows(const ContactGeometry &g, int method, int m
       }
     return rows;
   }
-  if (g.quadratic_nonmortar && method == MC_METHOD_DUAL_MORTAR)
-    fail(MC_ERROR_ARGUMENT,
-         "MC_OPTION_METHOD = MC_METHOD_DUAL_MORTAR: body 1 (the non-mortar side) has quadratic cells, and the "
-         "dual basis is defined for linear traces only: use MC_METHOD_MORTAR or MC_METHOD_NODE_TO_SEGMENT, or make "
-         "a body of linear cells body 1");
   for (const ContactRun &run : g.runs) {
     if (g.quadratic_nonmortar) {
-      weak_mortar_rows(g, run, multiplier == MC_MULTIPLIER_QUADRATIC, rows);
+      weak_mortar_rows(g, run, multiplier == MC_MULTIPLIER_QUADRATIC, method == MC_METHOD_DUAL_MORTAR, rows);
       continue;
     }
     // Runs of one element carry no multiplier: only the end conditions of (3.2) remain.

@@ -8,6 +8,9 @@
 //                  end elements): end values by interpolation, interior values D^-1 (M - D_E P_E);
 //                  on a closed loop (no ends) all values D^-1 M with M_h^1 = W_h^1
 //   dual mortar  : the same with Wohlmuth's biorthogonal test functions (D diagonal)
+// A body 1 with quadratic cells has weak rows instead (weak_mortar_rows.cpp): one per multiplier,
+// integral of psi_i ((u1 - u2) . n - g0) <= 0, with the paper's linear multipliers, quadratic
+// ones (MC_OPTION_MULTIPLIER) or the quadratic space's dual basis (dual mortar).
 //   node-to-segment: interpolation of u2 at the point each body-1 node projects to (no pi_h)
 #pragma once
 #include "contact_geometry.hpp"

@@ -5,6 +5,7 @@
 #include "mortar_spaces.hpp"
 #include "plane_vectors.hpp"
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace mc {
@@ -21,8 +22,11 @@ void quadratic_multiplier_functions(double s, double f[3]) {
 
 }  // namespace
 
-// Rows of one run when body 1's trace is quadratic (T6, Q8, Q9): the multipliers stay the
-// paper's M_h^1, continuous piecewise linear on the trace points (Gamma_c's vertex nodes) with
+// Rows of one run when body 1's trace is quadratic (T6, Q8, Q9). Three multiplier spaces, one
+// form of row: the paper's linear M_h^1 (the default, described here), the quadratic space
+// (MC_MULTIPLIER_QUADRATIC: a multiplier at every corner and at every interior element's middle,
+// end elements constant) and its dual basis (MC_METHOD_DUAL_MORTAR). With the paper's space the
+// multipliers stay the paper's M_h^1, continuous piecewise linear on the trace points (Gamma_c's vertex nodes) with
 // the end modification, but the constraint is the weak one, for each multiplier psi_i
 //     integral over Gamma_c of psi_i ((u1 - u2) . n_i - g0) <= 0,
 // since a quadratic W_h^1 has more nodes than M_h^1 has functions and pi_h of (3.2) is not
@@ -52,7 +56,8 @@ void quadratic_multiplier_functions(double s, double f[3]) {
 // two multipliers instead (what the paper's rows do, MultiplierSpace) leaves a constraint
 // pinned at the corner, the partial element's, as theta -> 0: measured 3.7 % in the
 // displacements (Q8 on Q8) between body 2 ending 1e-5 of an edge before a corner and at it.
-void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, bool quadratic, ConstraintRows &rows) {
+void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, bool quadratic, bool dual, ConstraintRows &rows) {
+  if (dual) quadratic = true;  // the dual basis is the quadratic space's
   const int n = int(run.trace.size());
   const bool closed = run.closed, single = !closed && n <= 3;
   const MultiplierSpace space(run, false);
@@ -93,7 +98,40 @@ void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, bool quad
   };
   std::vector<std::vector<Entry>> body1(count), body2(count);
   std::vector<double> gap(count, 0.0), total(count, 0.0);
-  for (int e = 0; e < int(run.elements.size()); ++e)
+  for (int e = 0; e < int(run.elements.size()); ++e) {
+    // The element's multiplier functions as combinations of its quadratic ones N_b: the identity,
+    // or for dual mortar Wohlmuth's biorthogonal basis psi_a = sum_b A_ab N_b, A = D M^-1 with
+    // M_ab = int N_a N_b and D = diag(int N_a) in the element's measure (its quadrature weights,
+    // 2 pi r included), so that int psi_a N_b = delta_ab int N_a: each row then tests body 1's
+    // trace at its own node only. (Quadratic in 2D: the integrals of N are h/6, h/6, 2h/3, all
+    // positive, so D is regular; ../shared/design/quadratic.md.) Sum_a psi_a = 1, so an end
+    // element, whose functions all feed one multiplier, stays constant.
+    double dual_a[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    if (dual) {
+      double m[3][3] = {}, d[3] = {};
+      for (const QuadraturePoint &q : run.elements[e]) {
+        double f[3];
+        quadratic_multiplier_functions(q.s, f);
+        for (int a = 0; a < 3; ++a) {
+          d[a] += q.weight * f[a];
+          for (int b = 0; b < 3; ++b) m[a][b] += q.weight * f[a] * f[b];
+        }
+      }
+      // M^-1 by cofactors (symmetric positive definite: det > 0 on an element of positive measure)
+      const double c00 = m[1][1] * m[2][2] - m[1][2] * m[2][1], c01 = m[1][2] * m[2][0] - m[1][0] * m[2][2],
+                   c02 = m[1][0] * m[2][1] - m[1][1] * m[2][0];
+      const double det = m[0][0] * c00 + m[0][1] * c01 + m[0][2] * c02;
+      if (std::fabs(det) > 0) {
+        double inv[3][3];
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b) {
+            const int a1 = (b + 1) % 3, a2 = (b + 2) % 3, b1 = (a + 1) % 3, b2 = (a + 2) % 3;
+            inv[a][b] = (m[a1][b1] * m[a2][b2] - m[a1][b2] * m[a2][b1]) / det;
+          }
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b) dual_a[a][b] = d[a] * inv[a][b];
+      }
+    }
     for (const QuadraturePoint &q : run.elements[e]) {
       const std::array<int, 3> &pos = g.segment_positions[q.segment1];
       const int count1 = pos[2] >= 0 ? 3 : 2;
@@ -104,7 +142,11 @@ void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, bool quad
       // The multiplier space's local functions: the hats of the two trace points, or the
       // quadratic ones of the element's two ends and its middle.
       double local[3] = {1 - q.s, q.s, 0};
-      if (quadratic) quadratic_multiplier_functions(q.s, local);
+      if (quadratic) {
+        double f[3];
+        quadratic_multiplier_functions(q.s, f);
+        for (int a = 0; a < 3; ++a) local[a] = dual_a[a][0] * f[0] + dual_a[a][1] * f[1] + dual_a[a][2] * f[2];
+      }
       auto add_row = [&](int r, double w) {
         for (int a = 0; a < count1; ++a) body1[r].push_back({pos[a], w * phi1[a], scaled(q.normal, w * phi1[a])});
         for (int a = 0; a < count2; ++a) body2[r].push_back({node2[a], w * phi2[a], scaled(q.normal, w * phi2[a])});
@@ -112,6 +154,7 @@ void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, bool quad
       };
       for (int t = 0; t < (quadratic ? 3 : 2); ++t) feed(e, t, q.weight * local[t], add_row);
     }
+  }
   // The end groups (see above), in the order they are applied.
   struct Blend {
     std::vector<int> group;

@@ -12,7 +12,7 @@
  * - shrink fit of two closed rings with curved Q8 edges, 32 cells around: every nodal pressure
  *   within 0.5 % of Lame;
  * - bad input: nodes per cell, a folded curved cell, a mid-edge node shared inconsistently, an
- *   edge named by a mid-edge node, dual mortar on a quadratic body 1; the model stays usable.
+ *   edge named by a mid-edge node; the model stays usable (and every method solves).
  */
 #include "cell_kind_name.h"
 #include "check_helpers.h"
@@ -28,6 +28,16 @@
 #define PI 3.14159265358979323846
 
 static const int kKinds[5] = {3, 4, 6, 8, 9};
+
+/* The contact spaces of a quadratic body 1 (docs/theory.md section 2b): the paper's linear
+   multipliers, quadratic ones (MC_OPTION_MULTIPLIER), and dual mortar (the dual basis of the
+   quadratic trace). For a linear body 1 the first is the paper's mortar, the last its dual. */
+enum { SPACE_LINEAR, SPACE_QUADRATIC, SPACE_DUAL, SPACE_COUNT };
+static const char *const kSpaceName[SPACE_COUNT] = {"linear multipliers", "quadratic multipliers", "dual mortar"};
+static void set_space(mc_model *m, int space) {
+  OK(mc_set_option_int(m, MC_OPTION_METHOD, space == SPACE_DUAL ? MC_METHOD_DUAL_MORTAR : MC_METHOD_MORTAR));
+  OK(mc_set_option_int(m, MC_OPTION_MULTIPLIER, space == SPACE_QUADRATIC ? MC_MULTIPLIER_QUADRATIC : MC_MULTIPLIER_LINEAR));
+}
 /* ---- a linear field ------------------------------------------------------------------------- */
 
 /* u = A x + c with a general A (plane), or u_r = a r, u_z = b z + c (axisymmetric): uniform
@@ -184,7 +194,7 @@ typedef struct patch_errors {
   int nodes;
 } patch_errors;
 
-static patch_errors flat_patch(int npc1, int npc2, int solver, int multiplier) {
+static patch_errors flat_patch(int npc1, int npc2, int solver, int space) {
   const double p = 0.2, nu = 0.3, e[2] = {1, 3};
   sc_mesh b[2];
   ck_assert_int_eq(sc_mesh_cells(&b[0], npc1, 5, 3, 0, 0, 1, 0.5, 1), 0);
@@ -204,7 +214,7 @@ static patch_errors flat_patch(int npc1, int npc2, int solver, int multiplier) {
   OK(mc_set_contact(m, 1, b[0].n_side_edges[SC_BOTTOM], b[0].side_edges[SC_BOTTOM]));
   OK(mc_set_contact(m, 2, b[1].n_side_edges[SC_TOP], b[1].side_edges[SC_TOP]));
   OK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, solver));
-  OK(mc_set_option_int(m, MC_OPTION_MULTIPLIER, multiplier));
+  set_space(m, space);
   SUCCEEDS(mc_solve(m));
   const mc_int n_nodes[2] = {b[0].n_nodes, b[1].n_nodes};
   const double load1[2] = {0, -p}, none[2] = {0, 0};
@@ -241,16 +251,16 @@ static patch_errors flat_patch(int npc1, int npc2, int solver, int multiplier) {
 
 START_TEST(flat_patch_test_every_pair_of_kinds) {
   patch_errors worst = {0, 0, 0, 0, 0};
-  for (int multiplier = MC_MULTIPLIER_LINEAR; multiplier <= MC_MULTIPLIER_QUADRATIC; ++multiplier)
+  for (int space = 0; space < SPACE_COUNT; ++space)
   for (int solver = MC_INTERFACE_CONDENSED; solver <= MC_INTERFACE_SPARSE; ++solver)
     for (int i = 0; i < 5; ++i)
       for (int j = 0; j < 5; ++j) {
-        if (multiplier == MC_MULTIPLIER_QUADRATIC && kKinds[i] <= 4) continue; /* the option is a quadratic body 1's */
-        const patch_errors e = flat_patch(kKinds[i], kKinds[j], solver, multiplier);
-        printf("flat patch, %s on %s, %s, %s multipliers: %d contact nodes; errors: pressure %.1e p, stress %.1e p, "
+        if (space == SPACE_QUADRATIC && kKinds[i] <= 4) continue; /* the option is a quadratic body 1's */
+        const patch_errors e = flat_patch(kKinds[i], kKinds[j], solver, space);
+        printf("flat patch, %s on %s, %s, %s: %d contact nodes; errors: pressure %.1e p, stress %.1e p, "
                "nodal stress %.1e p, displacement %.1e\n",
                cell_kind_name(kKinds[i]), cell_kind_name(kKinds[j]), solver == MC_INTERFACE_SPARSE ? "sparse" : "condensed",
-               multiplier == MC_MULTIPLIER_LINEAR ? "linear" : "quadratic", e.nodes, e.pressure, e.stress, e.nodal_stress,
+               kSpaceName[space], e.nodes, e.pressure, e.stress, e.nodal_stress,
                e.displacement);
         ck_assert_int_eq(e.nodes, kKinds[i] > 4 ? 11 : 6);
         worst.pressure = fmax(worst.pressure, e.pressure), worst.stress = fmax(worst.stress, e.stress);
@@ -295,7 +305,7 @@ static void press_side(mc_model *m, int body, const sc_mesh *mesh, int side, dou
    face, body 2 4 (not matching). */
 START_TEST(zigzag_hydrostatic_patch_test_quadratic) {
   const double p = 0.3, nu = 0.3;
-  for (int multiplier = MC_MULTIPLIER_LINEAR; multiplier <= MC_MULTIPLIER_QUADRATIC; ++multiplier)
+  for (int space = 0; space < SPACE_COUNT; ++space)
   for (int k = 2; k < 5; ++k) {
     const int npc = kKinds[k], npc2 = kKinds[(k + 1) % 5]; /* T6 on Q8, Q8 on Q9, Q9 on P1 */
     sc_mesh b1, b2;
@@ -316,7 +326,7 @@ START_TEST(zigzag_hydrostatic_patch_test_quadratic) {
     OK(mc_fix(m, 2, 1, &right, MC_Y, NULL));
     OK(mc_set_contact(m, 1, b1.n_side_edges[SC_BOTTOM], b1.side_edges[SC_BOTTOM]));
     OK(mc_set_contact(m, 2, b2.n_side_edges[SC_TOP], b2.side_edges[SC_TOP]));
-    OK(mc_set_option_int(m, MC_OPTION_MULTIPLIER, multiplier));
+    set_space(m, space);
     SUCCEEDS(mc_solve(m));
     contact_data c = contact_get(m);
     double pressure = 0, stress = 0, reaction = 0;
@@ -331,9 +341,9 @@ START_TEST(zigzag_hydrostatic_patch_test_quadratic) {
       reaction = fmax(reaction, max_abs(r, 2 * (size_t)mesh[b]->n_nodes) / (p * 2.0 / 12));
       free(sigma), free(r);
     }
-    printf("zigzag hydrostatic patch, %s on %s, %s multipliers: %d contact positions; errors: pressures %.1e p, nodal "
+    printf("zigzag hydrostatic patch, %s on %s, %s: %d contact positions; errors: pressures %.1e p, nodal "
            "stresses %.1e p, reactions %.1e p h\n",
-           cell_kind_name(npc), cell_kind_name(npc2), multiplier == MC_MULTIPLIER_LINEAR ? "linear" : "quadratic", (int)c.n,
+           cell_kind_name(npc), cell_kind_name(npc2), kSpaceName[space], (int)c.n,
            pressure, stress, reaction);
     ck_assert_msg(pressure <= 1e-10 && stress <= 1e-10 && reaction <= 1e-10, "%s: not exact", cell_kind_name(npc));
     contact_free(&c);
@@ -349,7 +359,7 @@ END_TEST
    narrower body 2 (7 x 3 cells on [x0, x0 + 0.7] x [-0.5, 0], clamped): body 2's ends lie inside
    body-1 edges, in contact. Returns body 1's displacements; the contact forces must balance the
    load and satisfy KKT. */
-static double *partly_covered(int npc1, int npc2, double x0, int multiplier, mc_int *n_nodes) {
+static double *partly_covered(int npc1, int npc2, double x0, int space, mc_int *n_nodes) {
   sc_mesh b[2];
   ck_assert_int_eq(sc_mesh_cells(&b[0], npc1, 5, 3, 0, 0, 1, 0.5, 1), 0);
   ck_assert_int_eq(sc_mesh_cells(&b[1], npc2, 7, 3, x0, -0.5, 0.7, 0.5, 0), 0);
@@ -362,7 +372,7 @@ static double *partly_covered(int npc1, int npc2, double x0, int multiplier, mc_
   press_side(m, 1, &b[0], SC_TOP, 0.01);
   OK(mc_set_contact(m, 1, b[0].n_side_edges[SC_BOTTOM], b[0].side_edges[SC_BOTTOM]));
   OK(mc_set_contact(m, 2, b[1].n_side_edges[SC_TOP], b[1].side_edges[SC_TOP]));
-  OK(mc_set_option_int(m, MC_OPTION_MULTIPLIER, multiplier));
+  set_space(m, space);
   SUCCEEDS(mc_solve(m));
   /* (Not assert_kkt: the nodal gaps of a quadratic body 1 are its rows', and the positions
      without a row of their own, here the run's ends next to body 2's corners, may penetrate;
@@ -386,28 +396,28 @@ static double *partly_covered(int npc1, int npc2, double x0, int multiplier, mc_
 
 /* The solution must not jump as body 2's end crosses a body-1 corner (x0 = 0.2; the other end at
    0.9, a middle) or a middle (x0 = 0.1, the other end on the corner 0.8): displacements at
-   x0 +- 1e-5 (5e-5 of an edge) within 1e-3 of those at x0, for quadratic bodies 1 with both
-   multiplier spaces (a constraint left pinned at the corner by a vanishing end element made
-   this 3.7e-2 before the ends were blended; the paper's rows of a linear body 1 are checked
-   alongside). */
+   x0 +- 1e-5 (5e-5 of an edge) within 1e-3 of those at x0, for quadratic bodies 1 with every
+   space (a constraint left pinned at the corner by a vanishing end element made this 3.7e-2
+   before the ends were blended), and for a linear body 1 with the paper's rows and their dual
+   (5.6e-3 before the dual basis shared its end hats as the paper's does). */
 START_TEST(solution_continuous_as_body2_end_crosses_a_node) {
   const int pairs[4][2] = {{8, 8}, {6, 3}, {9, 4}, {3, 3}};
   const double crossings[2] = {0.2, 0.1}, eps = 1e-5;
   for (int p = 0; p < 4; ++p)
-    for (int multiplier = MC_MULTIPLIER_LINEAR; multiplier <= MC_MULTIPLIER_QUADRATIC; ++multiplier)
+    for (int space = 0; space < SPACE_COUNT; ++space)
       for (int c = 0; c < 2; ++c) {
         mc_int n = 0;
-        double *u0 = partly_covered(pairs[p][0], pairs[p][1], crossings[c], multiplier, &n), scale = max_abs(u0, 2 * (size_t)n);
+        double *u0 = partly_covered(pairs[p][0], pairs[p][1], crossings[c], space, &n), scale = max_abs(u0, 2 * (size_t)n);
         double jump = 0;
         for (int side = -1; side <= 1; side += 2) {
-          double *u = partly_covered(pairs[p][0], pairs[p][1], crossings[c] + side * eps, multiplier, &n);
+          double *u = partly_covered(pairs[p][0], pairs[p][1], crossings[c] + side * eps, space, &n);
           for (mc_int i = 0; i < 2 * n; ++i) jump = fmax(jump, fabs(u[i] - u0[i]) / scale);
           free(u);
         }
-        printf("body 2's end crossing x = %.1f, %s on %s, %s multipliers: displacements move by %.2e of their size "
+        printf("body 2's end crossing x = %.1f, %s on %s, %s: displacements move by %.2e of their size "
                "for a shift of %.0e\n",
                crossings[c], cell_kind_name(pairs[p][0]), cell_kind_name(pairs[p][1]),
-               multiplier == MC_MULTIPLIER_LINEAR ? "linear" : "quadratic", jump, eps);
+               kSpaceName[space], jump, eps);
         ck_assert_msg(jump <= 1e-3, "%s on %s: the solution jumps by %g", cell_kind_name(pairs[p][0]),
                       cell_kind_name(pairs[p][1]), jump);
         free(u0);
@@ -488,7 +498,7 @@ static double lame_radial_displacement(double r, double ri, double ro, double pi
 /* Shaft ring [0.5, 1 + delta] (body 1, 32 Q8 cells around), hub ring [1, 2] (body 2, 40 around),
    E1 = 1, E2 = 2, nu = 0.3, plane strain: the pressure on the shaft from Lame (test_contact_geometry's
    shrink_fit_pressure). Returns the worst |p_j / p - 1| over every contact position. */
-static double q8_shrink_fit(double delta_cells, int surface, int multiplier) {
+static double q8_shrink_fit(double delta_cells, int surface, int space) {
   const int nt1 = 32, nt2 = 40, nr = 4;
   const double a = 0.5, R = 1, c = 2, delta = delta_cells * 2 * PI / nt1, b = R + delta, e1 = 1, e2 = 2, nu = 0.3;
   q8_ring shaft, hub;
@@ -506,7 +516,7 @@ static double q8_shrink_fit(double delta_cells, int surface, int multiplier) {
   OK(mc_set_contact(m, 1, nt1, loop1));
   OK(mc_set_contact(m, 2, nt2, loop2));
   OK(mc_set_option_int(m, MC_OPTION_CONTACT_SURFACE, surface));
-  OK(mc_set_option_int(m, MC_OPTION_MULTIPLIER, multiplier));
+  set_space(m, space);
   free(loop1), free(loop2);
   SUCCEEDS(mc_solve(m));
   const double u_shaft = -lame_radial_displacement(b, a, b, 0, 1, e1, nu);
@@ -519,9 +529,9 @@ static double q8_shrink_fit(double delta_cells, int surface, int multiplier) {
     worst = fmax(worst, fabs(cd.pressure[j] / p_lame - 1));
     lo = fmin(lo, cd.pressure[j] / p_lame), hi = fmax(hi, cd.pressure[j] / p_lame);
   }
-  printf("Q8 shrink fit, %s, %s multipliers, delta = %.1f h: %d contact positions, nodal p / Lame in [%.5f, %.5f], "
+  printf("Q8 shrink fit, %s, %s, delta = %.1f h: %d contact positions, nodal p / Lame in [%.5f, %.5f], "
          "mean %.5f, %ld iterations\n",
-         surface == MC_SURFACE_SMOOTH ? "smooth" : "faceted", multiplier == MC_MULTIPLIER_LINEAR ? "linear" : "quadratic",
+         surface == MC_SURFACE_SMOOTH ? "smooth" : "faceted", kSpaceName[space],
          delta_cells, (int)cd.n, lo, hi, total / (2 * PI * b) / p_lame,
          info_int(m, MC_INFO_ITERATIONS));
   ck_assert_int_eq(cd.n, 2 * nt1); /* corners and middles of the closed loop */
@@ -533,15 +543,15 @@ static double q8_shrink_fit(double delta_cells, int surface, int multiplier) {
 
 START_TEST(shrink_fit_curved_q8_rings_lame) {
   const double deltas[3] = {0.1, 0.3, 1.0};
-  for (int multiplier = MC_MULTIPLIER_LINEAR; multiplier <= MC_MULTIPLIER_QUADRATIC; ++multiplier) {
+  for (int space = 0; space < SPACE_COUNT; ++space) {
     double worst[3];
     for (int k = 0; k < 3; ++k) {
-      worst[k] = q8_shrink_fit(deltas[k], MC_SURFACE_SMOOTH, multiplier);
-      q8_shrink_fit(deltas[k], MC_SURFACE_FACETED, multiplier);
+      worst[k] = q8_shrink_fit(deltas[k], MC_SURFACE_SMOOTH, space);
+      q8_shrink_fit(deltas[k], MC_SURFACE_FACETED, space);
     }
     for (int k = 0; k < 3; ++k)
-      ck_assert_msg(worst[k] <= 0.005, "delta = %g h, multiplier %d: a nodal pressure %.3f %% from Lame", deltas[k],
-                    multiplier, 100 * worst[k]);
+      ck_assert_msg(worst[k] <= 0.005, "delta = %g h, %s: a nodal pressure %.3f %% from Lame", deltas[k],
+                    kSpaceName[space], 100 * worst[k]);
   }
 }
 END_TEST
@@ -575,18 +585,21 @@ START_TEST(axisymmetric_shrink_fit_quadratic_lame) {
              cell_kind_name(kinds[k]), method == MC_METHOD_MORTAR ? "mortar" : "node-to-segment", (int)cd.n, 100 * worst);
       if (method == MC_METHOD_MORTAR) {
         ck_assert_msg(worst < 1e-3, "%s: a pressure %.3f %% off Lame", cell_kind_name(kinds[k]), 100 * worst);
-        /* The quadratic multipliers: a value at every node, so the T6 shaft's one-way diagonals
-           show in the pressure (docs/robustness.md); within the shrink fit's 0.5 %. */
-        OK(mc_set_option_int(m, MC_OPTION_MULTIPLIER, MC_MULTIPLIER_QUADRATIC));
-        SUCCEEDS(mc_solve(m));
-        contact_data cq = contact_get(m);
-        double worst_q = 0;
-        for (mc_int j = 0; j < cq.n; ++j) worst_q = fmax(worst_q, fabs(cq.pressure[j] / lame - 1));
-        printf("axisymmetric shrink fit, %s, mortar, quadratic multipliers: every pressure within %.4f %% of Lame\n",
-               cell_kind_name(kinds[k]), 100 * worst_q);
-        ck_assert_msg(worst_q < 5e-3, "%s, quadratic multipliers: a pressure %.3f %% off Lame", cell_kind_name(kinds[k]),
-                      100 * worst_q);
-        contact_free(&cq);
+        /* The quadratic multipliers and dual mortar: a value at every node, so the T6 shaft's
+           one-way diagonals show in the pressure (docs/robustness.md); within the shrink fit's
+           0.5 %. */
+        for (int space = SPACE_QUADRATIC; space <= SPACE_DUAL; ++space) {
+          set_space(m, space);
+          SUCCEEDS(mc_solve(m));
+          contact_data cq = contact_get(m);
+          double worst_q = 0;
+          for (mc_int j = 0; j < cq.n; ++j) worst_q = fmax(worst_q, fabs(cq.pressure[j] / lame - 1));
+          printf("axisymmetric shrink fit, %s, %s: every pressure within %.4f %% of Lame\n", cell_kind_name(kinds[k]),
+                 kSpaceName[space], 100 * worst_q);
+          ck_assert_msg(worst_q < 5e-3, "%s, %s: a pressure %.3f %% off Lame", cell_kind_name(kinds[k]), kSpaceName[space],
+                        100 * worst_q);
+          contact_free(&cq);
+        }
       }
       contact_free(&cd);
       mc_destroy(m);
@@ -665,7 +678,7 @@ START_TEST(bad_quadratic_input_is_refused_clearly) {
     mc_destroy(linear);
     sc_mesh_free(&q1);
   }
-  /* dual mortar on a quadratic body 1 */
+  /* every method on a quadratic body 1 */
   OK(mc_set_material(m, 1, 1, 0.3));
   OK(mc_set_material(m, 2, 1, 0.3));
   OK(sc_fix_side(m, 1, &q8, SC_LEFT, MC_X, 0));
@@ -675,7 +688,7 @@ START_TEST(bad_quadratic_input_is_refused_clearly) {
   OK(mc_set_contact(m, 1, q8.n_side_edges[SC_BOTTOM], q8.side_edges[SC_BOTTOM]));
   OK(mc_set_contact(m, 2, t6.n_side_edges[SC_TOP], t6.side_edges[SC_TOP]));
   OK(mc_set_option_int(m, MC_OPTION_METHOD, MC_METHOD_DUAL_MORTAR));
-  FAILS(mc_solve(m), MC_ERROR_ARGUMENT, "MC_METHOD_DUAL_MORTAR");
+  SUCCEEDS(mc_solve(m));
   OK(mc_set_option_int(m, MC_OPTION_METHOD, MC_METHOD_NODE_TO_SEGMENT));
   SUCCEEDS(mc_solve(m));
   OK(mc_set_option_int(m, MC_OPTION_METHOD, MC_METHOD_MORTAR));

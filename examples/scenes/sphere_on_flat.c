@@ -90,7 +90,7 @@ int sphere_on_flat_solve_cells(double h, int nodes_per_cell, int method, int nor
     /* a quadratic body 1 with linear multipliers: the profile on the corners (the multiplier's
        nodes) only; otherwise every position carries a multiplier value */
     char *corner = calloc((size_t)s.body[0].n_nodes, 1);
-    if (multiplier == MC_MULTIPLIER_LINEAR && nodes_per_cell > 4)
+    if (multiplier == MC_MULTIPLIER_LINEAR && method != MC_METHOD_DUAL_MORTAR && nodes_per_cell > 4)
       for (j = 0; j < 2 * s.n_contact_edges[0]; ++j) corner[s.contact_edges[0][j]] = 1;
     else
       for (j = 0; j < s.body[0].n_nodes; ++j) corner[j] = 1;

@@ -43,7 +43,7 @@ int sphere_on_flat(double h, int quads, int method, sphere_result *r);
 /* The same with any cell kind: nodes_per_cell = 3 (P1) or 4 (Q1) (as quads = 0, 1 above), 6 (T6),
    8 (Q8) or 9 (Q9) (hertz_scene_axisymmetric_cells: h is then a cell's size, its mid-edge nodes
    at h / 2). multiplier: MC_OPTION_MULTIPLIER (used by a quadratic body 1). With
-   MC_MULTIPLIER_LINEAR a quadratic body 1 carries its multipliers on the cells' corners, its
+   MC_MULTIPLIER_LINEAR (and MC_METHOD_MORTAR) a quadratic body 1 carries its multipliers on the cells' corners, its
    middles' pressures being their linear interpolation: the profile fit, a_nodes and the axis
    pressure then use the corner positions only; otherwise every contact position. */
 int sphere_on_flat_solve_cells(double h, int nodes_per_cell, int method, int normal, int plane, int multiplier,

@@ -207,7 +207,7 @@ SEEDS = {
     + option_int(13, 1) + solve() + op("QUERY") + option_int(13, 0) + option_int(11, 2) + solve()
     + option_int(13, 2) + option_int(13, -1) + option_real(13, 1.0) + option_int(13, 1) + solve(),
     # quadratic cells (issue 21): T6 pressed on Q8, then Q9 on P1 with a curved (bowed) body 1,
-    # dual mortar (refused on a quadratic body 1), node-to-segment, both interface solvers, and a
+    # dual mortar (the quadratic dual basis), node-to-segment, both interface solvers, and a
     # corrupted Q9 grid (a swapped mid-edge node folds its cell)
     "quadratic_contact": grid(1, 6, 4, 2, 0, 0, 1, 0.5) + grid(2, 8, 5, 2, 0, -0.5, 1, 0.5)
     + material(1, 100.0, 0.3) + material(2, 200.0, 0.3) + fix_side(2, BOTTOM, 3) + fix_side(1, LEFT, 1)
