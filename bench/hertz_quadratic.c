@@ -67,6 +67,7 @@
 #include "cell_kind_name.h"
 #include "bench_timing.h"
 #include "contact_half_width.h"
+#include "hertz_model.h"
 #include "hertz_scene.h"
 #include "mortarcontact.h"
 #include <math.h>
@@ -400,7 +401,6 @@ static long local_energy(const hertz_scene *s, double *const u[2], const locator
   return far;
 }
 
-static const double total_force = 0.01, top_length = 2.0;
 
 #define TRY(call)                                                                                \
   do {                                                                                           \
@@ -414,19 +414,10 @@ static const double total_force = 0.01, top_length = 2.0;
 static void run_once(const hertz_scene *s, int last, solution *r, double *t_wall) {
   mc_model *m = NULL;
   mc_int n = 0, *nodes = NULL;
-  double *traction = NULL, *pressure = NULL, *force = NULL, *u[2] = {NULL, NULL};
+  double *pressure = NULL, *force = NULL, *u[2] = {NULL, NULL};
   double start = bench_wall();
   TRY(mc_create(&m));
-  for (int b = 0; b < 2; ++b) {
-    const hertz_mesh *mesh = &s->body[b];
-    TRY(mc_set_mesh(m, b + 1, mesh->n_nodes, mesh->xy, mesh->n_cells, mesh->nodes_per_cell, mesh->cells));
-    TRY(mc_set_material(m, b + 1, 1.0, 0.3));
-  }
-  TRY(mc_fix(m, 1, s->n_axis_nodes, s->axis_nodes, MC_X, NULL));
-  TRY(mc_fix(m, 2, s->n_bottom_nodes, s->bottom_nodes, MC_XY, NULL));
-  traction = malloc(sizeof(double) * 2 * s->n_top_edges);
-  for (int e = 0; e < s->n_top_edges; ++e) traction[2 * e] = 0, traction[2 * e + 1] = -total_force / top_length;
-  TRY(mc_add_traction(m, 1, s->n_top_edges, s->top_edges, traction));
+  TRY(hertz_model_bodies(m, s));
   TRY(mc_set_contact(m, 1, s->n_contact_edges[0], s->contact_edges[0]));
   TRY(mc_set_contact(m, 2, s->n_contact_edges[1], s->contact_edges[1]));
   TRY(mc_set_option_int(m, MC_OPTION_METHOD, dual && s->body[0].nodes_per_cell > 4 ? MC_METHOD_DUAL_MORTAR : MC_METHOD_MORTAR));
@@ -487,7 +478,7 @@ static void run_once(const hertz_scene *s, int last, solution *r, double *t_wall
     r->ok = 1;
   }
 done:
-  free(traction), free(nodes), free(pressure), free(force), free(u[0]), free(u[1]);
+  free(nodes), free(pressure), free(force), free(u[0]), free(u[1]);
   mc_destroy(m);
 }
 

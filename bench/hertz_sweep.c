@@ -36,6 +36,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "bench_timing.h"
 #include "contact_half_width.h"
+#include "hertz_model.h"
 #include "hertz_scene.h"
 #include "mortarcontact.h"
 #include <math.h>
@@ -105,18 +106,6 @@ static double h1_norm_squared(const hertz_mesh *mesh, const double *u) {
     }                                                                                          \
   } while (0)
 
-static const double total_force = 0.01, top_length = 2.0;
-
-/* The load: P downwards on body 1's flat top, scaled by `scale`. */
-static mc_status apply_load(mc_model *m, const hertz_scene *s, double scale) {
-  double *traction = malloc(sizeof(double) * 2 * s->n_top_edges);
-  for (int e = 0; e < s->n_top_edges; ++e) traction[2 * e] = 0, traction[2 * e + 1] = -scale * total_force / top_length;
-  mc_status status = mc_clear_loads(m, 1);
-  if (status == MC_OK) status = mc_add_traction(m, 1, s->n_top_edges, s->top_edges, traction);
-  free(traction);
-  return status;
-}
-
 /* One solve of the scene (setup included in t_wall); fills r on the last repeat. */
 static int threads_option = -1; /* --threads: MC_OPTION_THREADS, or -1 for the library's default */
 
@@ -125,14 +114,7 @@ static void run_once(const hertz_scene *s, int method, int normal, int solver, i
   double start = bench_wall();
   TRY(mc_create(&m));
   if (threads_option >= 0) TRY(mc_set_option_int(m, MC_OPTION_THREADS, threads_option));
-  for (int b = 0; b < 2; ++b) {
-    const hertz_mesh *mesh = &s->body[b];
-    TRY(mc_set_mesh(m, b + 1, mesh->n_nodes, mesh->xy, mesh->n_cells, mesh->nodes_per_cell, mesh->cells));
-    TRY(mc_set_material(m, b + 1, 1.0, 0.3));
-  }
-  TRY(mc_fix(m, 1, s->n_axis_nodes, s->axis_nodes, MC_X, NULL));
-  TRY(mc_fix(m, 2, s->n_bottom_nodes, s->bottom_nodes, MC_XY, NULL));
-  TRY(apply_load(m, s, 1.0));
+  TRY(hertz_model_bodies(m, s));
   double a_hertz, p0_hertz;
   hertz_analytic(&a_hertz, &p0_hertz);
   if (method == CASE_PLAIN) {
@@ -198,7 +180,7 @@ static void run_once(const hertz_scene *s, int method, int normal, int solver, i
       r->a_moment = 2 * sqrt(moment / sum);
       r->a = contact_half_width(n, x, pressure);
       /* a host stepping its load: change only the load, solve again */
-      TRY(apply_load(m, s, 1.5));
+      TRY(hertz_model_load(m, s, 1.5));
       double t = bench_wall();
       TRY(mc_solve(m));
       double *p2 = malloc(sizeof(double) * n);
