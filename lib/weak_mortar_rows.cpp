@@ -194,13 +194,15 @@ void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, bool quad
   // averaged over the one or two elements at a trace point; at a mid-edge node inside an element,
   // the element's functions there. Gathered as the functions' values per row, blended as the
   // rows were, then divided by the rows' integrals.
-  using Values = std::vector<double>;  // per row of this run
-  std::map<int, Values> value_at;       // position -> the rows' functions there
+  // (Sparse: a position sees the few rows of its one or two elements; a dense row vector per
+  // position would be O(n^2) along a long interface.)
+  using Values = std::vector<std::pair<int, double>>;  // (row of this run, value), rows repeated
+  std::map<int, Values> value_at;                       // position -> the rows' functions there
   std::map<int, int> elements_at;
   auto add_values = [&](int position, int e, const double f[3], double weight) {
-    Values &v = value_at.try_emplace(position, Values(count, 0.0)).first->second;
+    Values &v = value_at[position];
     for (int t = 0; t < (quadratic ? 3 : 2); ++t)
-      if (f[t] != 0) feed(e, t, weight * f[t], [&](int r, double x) { v[r] += x; });
+      if (f[t] != 0) feed(e, t, weight * f[t], [&](int r, double x) { v.emplace_back(r, x); });
   };
   for (int e = 0; e < int(run.elements.size()); ++e) {
     const int k0 = e, k1 = closed ? (e + 1) % n : e + 1;
@@ -225,13 +227,19 @@ void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, bool quad
   for (auto &[position, v] : value_at) {
     const auto at = elements_at.find(position);
     const double average = at == elements_at.end() ? 1.0 : 1.0 / at->second;  // a trace point: over its elements
+    std::map<int, double> value;  // per row, summed
+    for (auto &[r, x] : v) value[r] += x;
     for (const Blend &b : blends) {
       double sum = 0;
-      for (int r : b.group) sum += v[r];
-      for (int r : b.group) v[r] = b.theta * v[r] + (1 - b.theta) / double(b.group.size()) * sum;
+      for (int r : b.group) {
+        const auto it = value.find(r);
+        if (it != value.end()) sum += it->second;
+      }
+      if (sum == 0 && std::none_of(b.group.begin(), b.group.end(), [&](int r) { return value.count(r) > 0; })) continue;
+      for (int r : b.group) value[r] = b.theta * value[r] + (1 - b.theta) / double(b.group.size()) * sum;
     }
-    for (int r = 0; r < count; ++r)
-      if (v[r] != 0 && total[r] > 0) rows.pressure_of_position[position].emplace_back(row0 + r, average * v[r] / total[r]);
+    for (auto &[r, x] : value)
+      if (x != 0 && total[r] > 0) rows.pressure_of_position[position].emplace_back(row0 + r, average * x / total[r]);
   }
   // A middle row's element, and its position (the body-1 edge's mid-edge node).
   std::vector<int> middle_position(middles, -1);
