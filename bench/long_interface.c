@@ -41,7 +41,7 @@
  *
  * usage: long_interface [--solver auto|condensed|sparse|both|all] [--condensed-max nx]
  *                       [--repeat n] [--threads n] [--mem-limit GiB] [--timeout s] [--log]
- *                       [nx ...]
+ *                       [--cells KIND] [--multiplier linear|quadratic] [nx ...]
  *   --solver         MC_OPTION_INTERFACE_SOLVER of the contact solves: auto (default: the option
  *                    not set, the library's choice), condensed, sparse, both (condensed and
  *                    sparse, each forced), all (auto, condensed and sparse)
@@ -53,9 +53,13 @@
  *                    start in the child can fail and spin)
  *   --timeout        wall-time limit of each child in seconds (default 1800; 0: none)
  *   --log            every contact solve's log messages on stderr
+ *   --cells          P1 (default, the meshes above), Q1, T6, Q8, Q9: both strips of that kind
+ *                    (sc_mesh_cells; a quadratic strip has 2 nx + 1 contact nodes)
+ *   --multiplier     MC_OPTION_MULTIPLIER of the contact solves (a quadratic body 1's)
  *   nx ...           default 250 500 1000 2000 4000 8000 16000
  */
 #define _POSIX_C_SOURCE 200809L
+#include "cell_kind_name.h"
 #include "mortarcontact.h"
 #include "scenes.h"
 #include "bench_timing.h"
@@ -83,6 +87,10 @@ typedef struct parts {
 } parts;
 
 static int echo_log; /* --log */
+/* --cells KIND: body 1's and body 2's cells (default P1: the meshes above); a quadratic kind
+   meshes both strips with sc_mesh_cells (the same cells, nodes at the middles too).
+   --multiplier: MC_OPTION_MULTIPLIER (used by a quadratic body 1). */
+static int cells_npc = 3, multiplier = MC_MULTIPLIER_LINEAR;
 
 static double trailing_seconds(const char *message) {
   const char *comma = strrchr(message, ',');
@@ -138,6 +146,7 @@ static mc_model *strips(const sc_mesh mesh[2], int kind, int threads, parts *log
     if (!st) st = mc_set_contact(m, 2, mesh[1].n_side_edges[SC_TOP], mesh[1].side_edges[SC_TOP]);
     /* auto: the option is left at the library's default, as a host that does not set it */
     if (!st && kind != MC_INTERFACE_AUTO) st = mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, kind);
+    if (!st) st = mc_set_option_int(m, MC_OPTION_MULTIPLIER, multiplier);
   } else if (!st) {
     st = sc_fix_side(m, 1, &mesh[0], SC_BOTTOM, MC_Y, 0);
   }
@@ -167,8 +176,11 @@ static void solve_here(int nx, int kind, int repeat, int threads, outcome *r) {
   const int nx2 = (int)lround(1.37 * nx);
   const double length = 0.1 * nx;
   sc_mesh mesh[2];
-  if (sc_mesh_rect(&mesh[0], 3, nx, 4, 0, 0, length, 0.4, 0, 1) ||
-      sc_mesh_rect(&mesh[1], 3, nx2, 4, 0, -0.4, length, 0.4, 0, 2)) {
+  const int failed = cells_npc == 3 ? sc_mesh_rect(&mesh[0], 3, nx, 4, 0, 0, length, 0.4, 0, 1) ||
+                                          sc_mesh_rect(&mesh[1], 3, nx2, 4, 0, -0.4, length, 0.4, 0, 2)
+                                    : sc_mesh_cells(&mesh[0], cells_npc, nx, 4, 0, 0, length, 0.4, 0) ||
+                                          sc_mesh_cells(&mesh[1], cells_npc, nx2, 4, 0, -0.4, length, 0.4, 0);
+  if (failed) {
     snprintf(r->message, sizeof r->message, "cannot mesh nx = %d", nx);
     return;
   }
@@ -319,7 +331,8 @@ static double mem_available_gib(void) {
 static int usage(const char *argv0) {
   fprintf(stderr,
           "usage: %s [--solver auto|condensed|sparse|both|all] [--condensed-max nx] [--repeat n] [--threads n]\n"
-          "       [--mem-limit GiB] [--timeout s] [--log] [nx ...]\n",
+          "       [--mem-limit GiB] [--timeout s] [--log] [--cells P1|Q1|T6|Q8|Q9] [--multiplier linear|quadratic]\n"
+          "       [nx ...]\n",
           argv0);
   return 2;
 }
@@ -338,6 +351,18 @@ int main(int argc, char **argv) {
     else if (!strcmp(argv[i], "--mem-limit") && more) mem_limit = atof(argv[++i]);
     else if (!strcmp(argv[i], "--timeout") && more) timeout = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--log")) echo_log = 1;
+    else if (!strcmp(argv[i], "--cells") && more) {
+      const char *k = argv[++i];
+      cells_npc = 0;
+      for (int npc = 3; npc <= 9; ++npc)
+        if (!strcmp(k, cell_kind_name(npc))) cells_npc = npc;
+      if (!cells_npc) return usage(argv[0]);
+    } else if (!strcmp(argv[i], "--multiplier") && more) {
+      const char *k = argv[++i];
+      if (!strcmp(k, "linear")) multiplier = MC_MULTIPLIER_LINEAR;
+      else if (!strcmp(k, "quadratic")) multiplier = MC_MULTIPLIER_QUADRATIC;
+      else return usage(argv[0]);
+    }
     else if (argv[i][0] != '-' && atoi(argv[i]) >= 1 && n_sizes < MAX_SIZES) sizes[n_sizes++] = atoi(argv[i]);
     else {
       fprintf(stderr, "bad argument %s\n", argv[i]);
@@ -371,9 +396,10 @@ int main(int argc, char **argv) {
 
   char threads_text[32] = "not set";
   if (threads >= 0) snprintf(threads_text, sizeof threads_text, "%d", threads);
-  printf("Strips, P1, nx x 4 on round(1.37 nx) x 4; --solver %s; condensed path forced only up to nx = %d; "
+  printf("Strips, %s%s, nx x 4 on round(1.37 nx) x 4; --solver %s; condensed path forced only up to nx = %d; "
          "median of %d solve%s per child; MC_OPTION_THREADS %s; OPENBLAS_NUM_THREADS=%s; %ld cores; "
          "per child: memory limit %.1f GiB, timeout %d s\n\n",
+         cell_kind_name(cells_npc), cells_npc > 4 && multiplier == MC_MULTIPLIER_QUADRATIC ? " (quadratic multipliers)" : "",
          solver, condensed_max, repeat, repeat == 1 ? "" : "s", threads_text,
          getenv("OPENBLAS_NUM_THREADS") ? getenv("OPENBLAS_NUM_THREADS") : "unset", sysconf(_SC_NPROCESSORS_ONLN),
          mem_limit, timeout);

@@ -152,11 +152,27 @@ void Model::reduce_body(int b, BodyWork &work) {
 }
 
 // The condensed path's ordering (interface unknowns last) and symbolic factorization.
-void Model::analyze_body(int b, BodyWork &work) {
+void Model::analyze_body(int b, BodyWork &work, bool needed) {
   BodySystem *sys = system_[b].get();
   if (!sys) return;
   std::vector<int> interface_reduced;
   for (int dof : sys->interface) interface_reduced.push_back(sys->solve_index[dof]);
+  // The dense trailing block alone: past a billion entries (8 GiB, and near CHOLMOD's 32-bit
+  // index range, which made its analysis fail with "too large") the condensed path is out of
+  // reach whatever the memory. For the automatic choice (needed false) the body is then left
+  // unanalysed and the choice takes the sparse path (measured: two Q8 strips with 32001
+  // contact nodes failed here before); the condensed path itself (needed) is refused.
+  const double ng = double(interface_reduced.size());
+  if (ng * (ng + 1) / 2 > 1e9) {
+    if (needed)
+      fail(MC_ERROR_MEMORY,
+           "the condensed interface solver (MC_INTERFACE_CONDENSED): body %d has %.0f interface unknowns, whose dense "
+           "block in its factor would hold %.3g entries: use MC_INTERFACE_SPARSE or MC_INTERFACE_AUTO",
+           b + 1, ng, ng * (ng + 1) / 2);
+    work.log(MC_LOG_PHASE, "analysis: body %d, %.0f interface unknowns: too many for the condensed path, not analysed "
+             "for it", b + 1, ng);
+    return;
+  }
   const double t_analysis = now();
   {
     Stopwatch watch(work.infos.t_analysis);

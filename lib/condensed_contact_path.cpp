@@ -50,7 +50,7 @@ void Model::build_condensed(const std::function<void(int, BodyWork &)> &then) {
   std::vector<double> s_b[2];
   double t_operator[2] = {0, 0};
   for_each_body([&](int b, BodyWork &work) {
-    if (system_[b] && !system_[b]->cholesky.analyzed()) analyze_body(b, work);
+    if (system_[b] && !system_[b]->cholesky.analyzed()) analyze_body(b, work, true);
     factorize_body(b, work);
     if (contact_ && system_[b]) {
       const double start = now();

@@ -193,7 +193,7 @@ void Model::build_structure(const std::function<void(int, BodyWork &)> &then) {
   for_each_body([&](int b, BodyWork &work) {
     system_[b] = assemble_body(b, work);
     reduce_body(b, work);
-    if (!forced_sparse) analyze_body(b, work);
+    if (!forced_sparse) analyze_body(b, work, options.interface_solver == MC_INTERFACE_CONDENSED);
   });
   if (contact_) contact_->sparse = forced_sparse || choose_interface_solver();
   if (contact_ && contact_->sparse) {

@@ -193,7 +193,9 @@ private:
   void for_each_body(const std::function<void(int, BodyWork &)> &task);
   std::unique_ptr<BodySystem> assemble_body(int b, BodyWork &work) const;
   void reduce_body(int b, BodyWork &work);
-  void analyze_body(int b, BodyWork &work);
+  // needed: the condensed path will use it (refused if the interface is too long for it); else
+  // for the automatic choice only (then skipped for such an interface, see body_phases.cpp).
+  void analyze_body(int b, BodyWork &work, bool needed);
   void factorize_body(int b, BodyWork &work);
   // The automatic choice of interface solver (MC_OPTION_INTERFACE_SOLVER), after the bodies'
   // analyses for the condensed path; also refuses a path too large for memory. True: sparse.

@@ -105,6 +105,8 @@ struct SparseCholesky::Impl {
   }
   void check(const char *what) {
     if (common.status == CHOLMOD_OUT_OF_MEMORY) fail(MC_ERROR_MEMORY, "CHOLMOD ran out of memory in %s", what);
+    if (common.status == CHOLMOD_TOO_LARGE)
+      fail(MC_ERROR_MEMORY, "CHOLMOD in %s: the factor is too large for its 32-bit indices", what);
     if (common.status < CHOLMOD_OK) fail(MC_ERROR_INTERNAL, "CHOLMOD failed in %s (status %d)", what, common.status);
   }
 };

@@ -100,7 +100,10 @@ bool Model::choose_interface_solver() {
   const double sparse_flops = kSparseFactorizationsExpected * plain_flops;
   const double sparse_bytes = 8 * std::max(nnz - dense_block_nnz, 0.05 * nnz);
   const double memory = available_memory();
-  const bool condensed_fits = memory <= 0 || condensed_bytes <= kCondensedMemoryShare * memory;
+  bool analysed = true;  // analyze_body skips an interface too long for the condensed path
+  for (int b = 0; b < 2; ++b)
+    if (system_[b] && !system_[b]->cholesky.analyzed()) analysed = false;
+  const bool condensed_fits = analysed && (memory <= 0 || condensed_bytes <= kCondensedMemoryShare * memory);
   if (options.interface_solver == MC_INTERFACE_CONDENSED) {
     if (memory > 0 && condensed_bytes > memory)
       fail(MC_ERROR_MEMORY,

@@ -1236,6 +1236,50 @@ START_TEST(too_large_for_memory_is_an_error) {
 }
 END_TEST
 
+/* Two P1 strips one cell high in contact along their whole length, body 2 with 22400 cells
+   along: 44802 interface unknowns, whose dense block in a condensed-path factor would hold 1.0e9
+   entries (past CHOLMOD's reach: its analysis failed with "too large", and the automatic choice
+   with it). Forced condensed: MC_ERROR_MEMORY naming the option and the body; automatic: the
+   sparse path without the condensed analysis, every pressure p (a patch test). */
+START_TEST(interface_too_long_for_the_condensed_path) {
+  const int nx1 = 16000, nx2 = 22400;
+  const double length = 0.01 * nx1, p = 0.01;
+  sc_mesh b[2];
+  ck_assert_int_eq(sc_mesh_rect(&b[0], 3, nx1, 1, 0, 0, length, 0.01, 0, 1), 0);
+  ck_assert_int_eq(sc_mesh_rect(&b[1], 3, nx2, 1, 0, -0.01, length, 0.01, 0, 2), 0);
+  mc_model *m = NULL;
+  ck_assert_int_eq(mc_create(&m), MC_OK);
+  for (int k = 0; k < 2; ++k) OK(sc_set_mesh(m, k + 1, &b[k], 0)), OK(mc_set_material(m, k + 1, 1, 0.3));
+  const mc_int corner1 = b[0].side_nodes[SC_LEFT][0], corner2 = b[1].side_nodes[SC_LEFT][0];
+  OK(sc_fix_side(m, 2, &b[1], SC_BOTTOM, MC_Y, 0));
+  OK(mc_fix(m, 2, 1, &corner2, MC_X, NULL));
+  OK(mc_fix(m, 1, 1, &corner1, MC_X, NULL));
+  press(m, 1, &b[0], SC_TOP, p);
+  OK(mc_set_contact(m, 1, b[0].n_side_edges[SC_BOTTOM], b[0].side_edges[SC_BOTTOM]));
+  OK(mc_set_contact(m, 2, b[1].n_side_edges[SC_TOP], b[1].side_edges[SC_TOP]));
+  OK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, MC_INTERFACE_CONDENSED));
+  ck_assert_int_eq(mc_solve(m), MC_ERROR_MEMORY);
+  printf("interface too long for the condensed path, forced: %s\n", mc_errmsg(m));
+  ck_assert_ptr_nonnull(strstr(mc_errmsg(m), "MC_INTERFACE_CONDENSED"));
+  ck_assert_ptr_nonnull(strstr(mc_errmsg(m), "body 2"));
+  OK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, MC_INTERFACE_AUTO));
+  SUCCEEDS(mc_solve(m));
+  int64_t ran = 0;
+  OK(mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &ran));
+  ck_assert_int_eq(ran, MC_INTERFACE_SPARSE);
+  contact_data c = contact_get(m);
+  double worst = 0;
+  for (mc_int j = 0; j < c.n; ++j) worst = fmax(worst, fabs(c.pressure[j] - p) / p);
+  printf("interface too long for the condensed path, automatic: sparse, %d contact nodes, pressures within %.1e p\n",
+         (int)c.n, worst);
+  ck_assert_int_eq(c.n, nx1 + 1);
+  ck_assert_msg(worst <= 1e-6, "pressure off by %g p", worst);
+  contact_free(&c);
+  mc_destroy(m);
+  sc_mesh_free(&b[0]), sc_mesh_free(&b[1]);
+}
+END_TEST
+
 int main(void) {
   setvbuf(stdout, NULL, _IOLBF, 0);
   Suite *suite = suite_create("interface_solvers");
@@ -1243,6 +1287,7 @@ int main(void) {
   tcase_set_timeout(tc, 300);
   tcase_add_loop_test(tc, both_paths_agree, 0, n_scenes);
   tcase_add_test(tc, too_large_for_memory_is_an_error);
+  tcase_add_test(tc, interface_too_long_for_the_condensed_path);
   suite_add_tcase(suite, tc);
   return sc_run_suite(suite);
 }
