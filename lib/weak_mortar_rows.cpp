@@ -5,7 +5,6 @@
 #include "mortar_spaces.hpp"
 #include "plane_vectors.hpp"
 #include <algorithm>
-#include <cmath>
 #include <map>
 
 namespace mc {
@@ -117,20 +116,18 @@ void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, bool quad
           for (int b = 0; b < 3; ++b) m[a][b] += q.weight * f[a] * f[b];
         }
       }
-      // M^-1 by cofactors (symmetric positive definite: det > 0 on an element of positive measure)
-      const double c00 = m[1][1] * m[2][2] - m[1][2] * m[2][1], c01 = m[1][2] * m[2][0] - m[1][0] * m[2][2],
-                   c02 = m[1][0] * m[2][1] - m[1][1] * m[2][0];
-      const double det = m[0][0] * c00 + m[0][1] * c01 + m[0][2] * c02;
-      if (std::fabs(det) > 0) {
-        double inv[3][3];
+      // M^-1 = adj(M) / det (symmetric positive definite: det > 0 on an element of positive
+      // measure; one of none is refused below, its rows having no measure)
+      double adj[3][3];
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) {
+          const int a1 = (b + 1) % 3, a2 = (b + 2) % 3, b1 = (a + 1) % 3, b2 = (a + 2) % 3;
+          adj[a][b] = m[a1][b1] * m[a2][b2] - m[a1][b2] * m[a2][b1];
+        }
+      const double det = m[0][0] * adj[0][0] + m[0][1] * adj[1][0] + m[0][2] * adj[2][0];
+      if (det > 0)
         for (int a = 0; a < 3; ++a)
-          for (int b = 0; b < 3; ++b) {
-            const int a1 = (b + 1) % 3, a2 = (b + 2) % 3, b1 = (a + 1) % 3, b2 = (a + 2) % 3;
-            inv[a][b] = (m[a1][b1] * m[a2][b2] - m[a1][b2] * m[a2][b1]) / det;
-          }
-        for (int a = 0; a < 3; ++a)
-          for (int b = 0; b < 3; ++b) dual_a[a][b] = d[a] * inv[a][b];
-      }
+          for (int b = 0; b < 3; ++b) dual_a[a][b] = d[a] * adj[a][b] / det;
     }
     for (const QuadraturePoint &q : run.elements[e]) {
       const std::array<int, 3> &pos = g.segment_positions[q.segment1];
