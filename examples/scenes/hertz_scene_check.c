@@ -1,6 +1,6 @@
 /*
- * hertz_scene_check.c - self-check of the Hertz scene generator. Not part of
- * any build; compile by hand:
+ * hertz_scene_check.c - self-check of the Hertz scene generator (ctest hertz_scene runs it on
+ * three size pairs; examples/CMakeLists.txt). By hand:
  *   gcc -std=c99 -O2 -Wall -Wextra hertz_scene_check.c hertz_scene.c -lm -o hertz_scene_check
  *   ./hertz_scene_check            # default size list
  *   ./hertz_scene_check h1 h2 ...  # pairs of sizes
@@ -228,6 +228,26 @@ int main(int argc, char **argv)
   CHECK(hertz_scene_build(&s, 0.02, NAN, 0) != 0, "h2 = NaN accepted");
   CHECK(hertz_scene_build(&s, 0.02, 0.02, 2) != 0, "quads = 2 accepted");
   CHECK(hertz_scene_build(NULL, 0.02, 0.02, 0) != 0, "NULL scene accepted");
+  /* hertz_scene_build_graded's own arguments: growth in [1.01, 3], the fine zone's half-width
+     from max(h1, h2) to 0.5, nodes per cell 3, 4, 6, 8, 9; each refused (1) and *s left zeroed */
+  const struct { double h1, h2; int npc; double growth, fine; const char *what; } bad[] = {
+      {0.02, 0.02, 8, 1.0, 0.4, "growth 1.0"},      {0.02, 0.02, 8, 3.5, 0.4, "growth 3.5"},
+      {0.02, 0.02, 8, NAN, 0.4, "growth NaN"},      {0.02, 0.02, 8, 1.15, 0.6, "fine half-width 0.6"},
+      {0.02, 0.05, 8, 1.15, 0.04, "fine half-width below h2"}, {0.05, 0.02, 6, 1.15, 0.04, "fine half-width below h1"},
+      {0.02, 0.02, 8, 1.15, NAN, "fine half-width NaN"}, {0.02, 0.02, 5, 1.15, 0.4, "5 nodes per cell"},
+      {0.3, 0.02, 9, 1.15, 0.4, "h1 0.3"}};
+  for (size_t i = 0; i < sizeof bad / sizeof bad[0]; ++i) {
+    s.n_top_edges = -1;
+    CHECK(hertz_scene_build_graded(&s, bad[i].h1, bad[i].h2, bad[i].npc, bad[i].growth, bad[i].fine) == 1,
+          "hertz_scene_build_graded: %s accepted", bad[i].what);
+    CHECK(s.n_top_edges == 0 && s.body[0].xy == NULL, "hertz_scene_build_graded: %s left *s set", bad[i].what);
+  }
+  CHECK(hertz_scene_build_graded(NULL, 0.02, 0.02, 8, 1.15, 0.4) == 1, "hertz_scene_build_graded: NULL scene accepted");
+  /* the extremes it accepts build */
+  CHECK(hertz_scene_build_graded(&s, 0.05, 0.05, 8, 3.0, 0.05) == 0, "growth 3, fine half-width h refused");
+  hertz_scene_free(&s);
+  CHECK(hertz_scene_build_graded(&s, 0.05, 0.05, 6, 1.01, 0.5) == 0, "growth 1.01, fine half-width 0.5 refused");
+  hertz_scene_free(&s);
   hertz_scene_free(NULL);
 
   double a, p0;
