@@ -1,0 +1,139 @@
+#!/usr/bin/env python3
+"""hertz_gradings.py - each cell kind at its best mesh: the plane-strain Hertz p0 against DOFs
+over a grid of mesh gradings (docs/benchmarks.md, "Each kind at its best grading").
+
+bench/hertz_quadratic solves the Hertz scene on structured graded meshes: uniformly fine
+(cells of h1) in a zone of half-width `fine` about the contact point, growing by `growth` per
+cell outside it. Which grading is best differs between the cell kinds (quadratic cells are
+accurate with larger cells far from the contact), so comparing them on one grading can favour
+one kind. This runs hertz_quadratic once per (growth, fine) pair with a dense sampling of h1
+(n sizes from h1_max to h1_min, geometrically spaced: "from which DOFs on p0 stays within a
+level" then does not depend on where a few sizes happen to fall) and reports, for every kind
+and error level, the fewest DOFs from which p0 stays within the level on each grading, and
+the best over all of them.
+
+  /usr/bin/python3 bench/hertz_gradings.py [--program build/bench/hertz_quadratic]
+        [--growth 1.15,1.3,1.5,2] [--fine 0.4,0.25] [--sizes 29] [--out DIR] [--quick]
+
+Each (growth, fine) pair runs twice: --method dual (P1 with the paper's mortar; T6 and Q8 by
+dual mortar, the quadratic trace's dual basis) and --multiplier quadratic (T6 and Q8). With the
+defaults: 8 pairs, about 4 minutes each on 2 cores (every run solves the Q9 reference first).
+The per-run JSON files are kept in --out (default hertz_gradings/). Exit status 1 if a run
+failed.
+
+"From which on": the DOFs of the smallest mesh of that kind and grading such that it and every
+larger mesh have |p0 - p0_ref| <= level ('-': the finest mesh run is still outside). The time
+is that mesh's wall time (hertz_quadratic --repeat, default 1 here: read times to +-30 %).
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+
+LEVELS = [0.003, 0.001, 0.0003, 0.0001]
+
+
+def run(program, args, json_path, log_path):
+    cmd = [program] + args + ["--json", json_path]
+    with open(log_path, "w") as log:
+        rc = subprocess.call(cmd, stdout=log, stderr=subprocess.STDOUT)
+    if rc != 0:
+        sys.stderr.write("failed (%d): %s\n" % (rc, " ".join(cmd)))
+    return rc == 0
+
+
+def stays_within(rows, level, key="err_p0"):
+    """(dofs, time) of the smallest mesh from which on |error| <= level, or None."""
+    rows = sorted(rows, key=lambda r: r["dofs"])
+    last_bad = -1
+    for i, r in enumerate(rows):
+        if abs(r[key]) > level:
+            last_bad = i
+    if last_bad == len(rows) - 1:
+        return None
+    r = rows[last_bad + 1]
+    return (r["dofs"], r["time"])
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--program", default="build/bench/hertz_quadratic")
+    ap.add_argument("--growth", default="1.15,1.3,1.5,2")
+    ap.add_argument("--fine", default="0.4,0.25")
+    ap.add_argument("--sizes", type=int, default=29)
+    ap.add_argument("--repeat", type=int, default=1)
+    ap.add_argument("--out", default="hertz_gradings")
+    ap.add_argument("--quick", action="store_true",
+                    help="one grading, 3 coarse sizes per kind, a coarse reference: that it runs (ctest)")
+    a = ap.parse_args()
+    os.makedirs(a.out, exist_ok=True)
+    growths = a.growth.split(",")
+    fines = a.fine.split(",")
+    n = a.sizes
+    p1 = "P1:0.03..0.0025/%d" % n
+    quad = ["T6:0.06..0.005/%d" % n, "Q8:0.06..0.005/%d" % n]
+    extra = ["--repeat", str(a.repeat)]
+    if a.quick:
+        growths, fines = growths[:1], fines[:1]
+        p1, quad = "P1:0.1..0.05/3", ["T6:0.14..0.1/3", "Q8:0.14..0.1/3"]
+        extra += ["--ref", "Q8:0.05", "--check", "Q8:0.07"]
+    ok = True
+    results = {}  # (kind label, grading) -> rows
+    for g in growths:
+        for w in fines:
+            grading = "growth %s, fine %s" % (g, w)
+            opts = []
+            for kind in ("P1", "T6", "Q8"):
+                opts += ["--growth", "%s:%s" % (kind, g), "--fine", "%s:%s" % (kind, w)]
+            for variant, vopts, kinds in (("dual", ["--method", "dual"], [p1] + quad),
+                                          ("quadratic multipliers", ["--multiplier", "quadratic"], quad)):
+                tag = "%s_g%s_w%s" % ("dual" if variant == "dual" else "quad", g, w)
+                path = os.path.join(a.out, tag + ".json")
+                if not run(a.program, extra + vopts + opts + kinds, path, os.path.join(a.out, tag + ".txt")):
+                    ok = False
+                    continue
+                for r in json.load(open(path)):
+                    if r.get("err_p0") is None:
+                        continue
+                    label = r["kind"] if r["kind"] in ("P1", "Q1") else "%s %s" % (r["kind"], variant)
+                    results.setdefault((label, grading), []).append(r)
+    # the reference's checks (--check) have a kind but not the sampled sizes: keep kinds run densely
+    labels = sorted(set(k for k, _ in results), key=lambda s: (s != "P1", s))
+    gradings = sorted(set(gr for _, gr in results))
+    print("p0 within a level from this mesh on: DOFs (time s), per grading\n")
+    print("| kind | grading | " + " | ".join("%.2f %%" % (100 * l) for l in LEVELS) + " |")
+    print("|---|---|" + "---|" * len(LEVELS))
+    best = {}
+    for label in labels:
+        for gr in gradings:
+            rows = results.get((label, gr))
+            if not rows:
+                continue
+            cells = []
+            for l in LEVELS:
+                s = stays_within(rows, l)
+                cells.append("%d (%.3f)" % s if s else "-")
+                if s and (best.get((label, l)) is None or s[0] < best[(label, l)][0]):
+                    best[(label, l)] = (s[0], s[1], gr)
+            print("| %s | %s | %s |" % (label, gr, " | ".join(cells)))
+    print("\nBest grading per kind and level: DOFs (time s) [ratio to P1's best DOFs, time], grading\n")
+    print("| level | " + " | ".join(labels) + " |")
+    print("|---|" + "---|" * len(labels))
+    for l in LEVELS:
+        ref = best.get(("P1", l))
+        cells = []
+        for label in labels:
+            b = best.get((label, l))
+            if not b:
+                cells.append("-")
+            elif label == "P1" or not ref:
+                cells.append("%d (%.3f), %s" % b)
+            else:
+                cells.append("%d (%.3f) [%.2f, %.2f], %s" % (b[0], b[1], b[0] / ref[0], b[1] / ref[1], b[2]))
+        print("| %.2f %% | %s |" % (100 * l, " | ".join(cells)))
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
