@@ -9,11 +9,14 @@ accurate with larger cells far from the contact), so comparing them on one gradi
 one kind. This runs hertz_quadratic once per (growth, fine) pair with a dense sampling of h1
 (n sizes from h1_max to h1_min, geometrically spaced: "from which DOFs on p0 stays within a
 level" then does not depend on where a few sizes happen to fall) and reports, for every kind
-and error level, the fewest DOFs from which p0 stays within the level on each grading, and
-the best over all of them.
+and error level, the fewest DOFs from which the error stays within the level on each grading,
+and the best over all of them: for p0 (the peak pressure), a (the contact half-width by
+bench/hertz_sweep.c's estimator) and a_moment (the half-width from the contact forces' second
+moment).
 
   /usr/bin/python3 bench/hertz_gradings.py [--program build/bench/hertz_quadratic]
-        [--growth 1.15,1.3,1.5,2] [--fine 0.4,0.25] [--sizes 29] [--out DIR] [--quick]
+        [--growth 1.15,1.3,1.5,2] [--fine 0.4,0.25] [--sizes 29] [--repeat 1] [--out DIR]
+        [--no-run] [--quick]
 
 Each (growth, fine) pair runs twice: --method dual (P1 with the paper's mortar; T6 and Q8 by
 dual mortar, the quadratic trace's dual basis) and --multiplier quadratic (T6 and Q8). With the
@@ -30,9 +33,6 @@ import json
 import os
 import subprocess
 import sys
-
-LEVELS = [0.003, 0.001, 0.0003, 0.0001]
-
 
 def run(program, args, json_path, log_path):
     cmd = [program] + args + ["--json", json_path]
@@ -56,6 +56,48 @@ def stays_within(rows, level, key="err_p0"):
     return (r["dofs"], r["time"])
 
 
+# (JSON key, what it is, levels): p0 the issue's measure; a the contact half-width by
+# bench/hertz_sweep.c's estimator (contact_half_width); a_moment from the contact forces' moment.
+MEASURES = [("err_p0", "p0", [0.003, 0.001, 0.0003, 0.0001]),
+            ("err_a", "a (contact_half_width)", [0.03, 0.01, 0.005]),
+            ("err_a_moment", "a_moment", [0.01, 0.003, 0.001])]
+
+
+def report(results, labels, gradings, key, title, levels):
+    """Per kind and grading, then the best grading per kind: the DOFs from which on |error| <= level."""
+    print("\n## %s within a level from this mesh on: DOFs (time s), per grading\n" % title)
+    print("| kind | grading | " + " | ".join("%g %%" % (100 * l) for l in levels) + " |")
+    print("|---|---|" + "---|" * len(levels))
+    best = {}
+    for label in labels:
+        for gr in gradings:
+            rows = results.get((label, gr))
+            if not rows:
+                continue
+            cells = []
+            for l in levels:
+                s = stays_within(rows, l, key)
+                cells.append("%d (%.3f)" % s if s else "-")
+                if s and (best.get((label, l)) is None or s[0] < best[(label, l)][0]):
+                    best[(label, l)] = (s[0], s[1], gr)
+            print("| %s | %s | %s |" % (label, gr, " | ".join(cells)))
+    print("\nBest grading per kind and level (%s): DOFs (time s) [ratio to P1's best DOFs, time], grading\n" % title)
+    print("| level | " + " | ".join(labels) + " |")
+    print("|---|" + "---|" * len(labels))
+    for l in levels:
+        ref = best.get(("P1", l))
+        cells = []
+        for label in labels:
+            b = best.get((label, l))
+            if not b:
+                cells.append("-")
+            elif label == "P1" or not ref:
+                cells.append("%d (%.3f), %s" % b)
+            else:
+                cells.append("%d (%.3f) [%.2f, %.2f], %s" % (b[0], b[1], b[0] / ref[0], b[1] / ref[1], b[2]))
+        print("| %g %% | %s |" % (100 * l, " | ".join(cells)))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--program", default="build/bench/hertz_quadratic")
@@ -64,6 +106,8 @@ def main():
     ap.add_argument("--sizes", type=int, default=29)
     ap.add_argument("--repeat", type=int, default=1)
     ap.add_argument("--out", default="hertz_gradings")
+    ap.add_argument("--no-run", action="store_true",
+                    help="run nothing: report on every run's JSON already in --out (e.g. several sweeps' merged)")
     ap.add_argument("--quick", action="store_true",
                     help="one grading, 3 coarse sizes per kind, a coarse reference: that it runs (ctest)")
     a = ap.parse_args()
@@ -80,6 +124,18 @@ def main():
         extra += ["--ref", "Q8:0.05", "--check", "Q8:0.07"]
     ok = True
     results = {}  # (kind label, grading) -> rows
+    if a.no_run:  # the tags written below: {dual,quad}_g<growth>_w<fine>.json
+        for name in sorted(os.listdir(a.out)):
+            if not name.endswith(".json") or "_g" not in name or "_w" not in name:
+                continue
+            variant = "dual" if name.startswith("dual_") else "quadratic multipliers"
+            g, w = name[:-5].split("_g", 1)[1].split("_w")
+            for r in json.load(open(os.path.join(a.out, name))):
+                if r.get("err_p0") is None or (variant != "dual" and r["kind"] in ("P1", "Q1")):
+                    continue
+                label = r["kind"] if r["kind"] in ("P1", "Q1") else "%s %s" % (r["kind"], variant)
+                results.setdefault((label, "growth %s, fine %s" % (g, w)), []).append(r)
+        growths = fines = []
     for g in growths:
         for w in fines:
             grading = "growth %s, fine %s" % (g, w)
@@ -98,40 +154,10 @@ def main():
                         continue
                     label = r["kind"] if r["kind"] in ("P1", "Q1") else "%s %s" % (r["kind"], variant)
                     results.setdefault((label, grading), []).append(r)
-    # the reference's checks (--check) have a kind but not the sampled sizes: keep kinds run densely
     labels = sorted(set(k for k, _ in results), key=lambda s: (s != "P1", s))
     gradings = sorted(set(gr for _, gr in results))
-    print("p0 within a level from this mesh on: DOFs (time s), per grading\n")
-    print("| kind | grading | " + " | ".join("%.2f %%" % (100 * l) for l in LEVELS) + " |")
-    print("|---|---|" + "---|" * len(LEVELS))
-    best = {}
-    for label in labels:
-        for gr in gradings:
-            rows = results.get((label, gr))
-            if not rows:
-                continue
-            cells = []
-            for l in LEVELS:
-                s = stays_within(rows, l)
-                cells.append("%d (%.3f)" % s if s else "-")
-                if s and (best.get((label, l)) is None or s[0] < best[(label, l)][0]):
-                    best[(label, l)] = (s[0], s[1], gr)
-            print("| %s | %s | %s |" % (label, gr, " | ".join(cells)))
-    print("\nBest grading per kind and level: DOFs (time s) [ratio to P1's best DOFs, time], grading\n")
-    print("| level | " + " | ".join(labels) + " |")
-    print("|---|" + "---|" * len(labels))
-    for l in LEVELS:
-        ref = best.get(("P1", l))
-        cells = []
-        for label in labels:
-            b = best.get((label, l))
-            if not b:
-                cells.append("-")
-            elif label == "P1" or not ref:
-                cells.append("%d (%.3f), %s" % b)
-            else:
-                cells.append("%d (%.3f) [%.2f, %.2f], %s" % (b[0], b[1], b[0] / ref[0], b[1] / ref[1], b[2]))
-        print("| %.2f %% | %s |" % (100 * l, " | ".join(cells)))
+    for key, title, levels in MEASURES:
+        report(results, labels, gradings, key, title, levels)
     return 0 if ok else 1
 
 
