@@ -15,7 +15,7 @@ bench/hertz_sweep.c's estimator) and a_moment (the half-width from the contact f
 moment).
 
   /usr/bin/python3 bench/hertz_gradings.py [--program build/bench/hertz_quadratic]
-        [--growth 1.15,1.3,1.5,2] [--fine 0.4,0.25] [--sizes 29] [--repeat 1] [--out DIR]
+        [--growth 1.15,1.3,1.5,2] [--fine 0.4,0.25] [--gradings g:w,...] [--sizes 29] [--repeat 1] [--out DIR]
         [--no-run] [--quick]
 
 Each (growth, fine) pair runs twice: --method dual (P1 with the paper's mortar; T6 and Q8 by
@@ -103,6 +103,7 @@ def main():
     ap.add_argument("--program", default="build/bench/hertz_quadratic")
     ap.add_argument("--growth", default="1.15,1.3,1.5,2")
     ap.add_argument("--fine", default="0.4,0.25")
+    ap.add_argument("--gradings", help="growth:fine pairs, e.g. 2:0.25,1.3:0.15 (instead of the grid)")
     ap.add_argument("--sizes", type=int, default=29)
     ap.add_argument("--repeat", type=int, default=1)
     ap.add_argument("--out", default="hertz_gradings")
@@ -112,14 +113,15 @@ def main():
                     help="one grading, 3 coarse sizes per kind, a coarse reference: that it runs (ctest)")
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
-    growths = a.growth.split(",")
-    fines = a.fine.split(",")
+    pairs = [(g, w) for g in a.growth.split(",") for w in a.fine.split(",")]
+    if a.gradings:  # explicit pairs instead of the grid
+        pairs = [tuple(p.split(":")) for p in a.gradings.split(",")]
     n = a.sizes
     p1 = "P1:0.03..0.0025/%d" % n
     quad = ["T6:0.06..0.005/%d" % n, "Q8:0.06..0.005/%d" % n]
     extra = ["--repeat", str(a.repeat)]
     if a.quick:
-        growths, fines = growths[:1], fines[:1]
+        pairs = pairs[:1]
         p1, quad = "P1:0.1..0.05/3", ["T6:0.14..0.1/3", "Q8:0.14..0.1/3"]
         extra += ["--ref", "Q8:0.05", "--check", "Q8:0.07"]
     ok = True
@@ -130,30 +132,34 @@ def main():
                 continue
             variant = "dual" if name.startswith("dual_") else "quadratic multipliers"
             g, w = name[:-5].split("_g", 1)[1].split("_w")
-            for r in json.load(open(os.path.join(a.out, name))):
+            try:
+                rows = json.load(open(os.path.join(a.out, name)))
+            except ValueError:  # a run still writing it, or one that failed
+                sys.stderr.write("skipped %s: not complete JSON\n" % name)
+                continue
+            for r in rows:
                 if r.get("err_p0") is None or (variant != "dual" and r["kind"] in ("P1", "Q1")):
                     continue
                 label = r["kind"] if r["kind"] in ("P1", "Q1") else "%s %s" % (r["kind"], variant)
                 results.setdefault((label, "growth %s, fine %s" % (g, w)), []).append(r)
-        growths = fines = []
-    for g in growths:
-        for w in fines:
-            grading = "growth %s, fine %s" % (g, w)
-            opts = []
-            for kind in ("P1", "T6", "Q8"):
-                opts += ["--growth", "%s:%s" % (kind, g), "--fine", "%s:%s" % (kind, w)]
-            for variant, vopts, kinds in (("dual", ["--method", "dual"], [p1] + quad),
-                                          ("quadratic multipliers", ["--multiplier", "quadratic"], quad)):
-                tag = "%s_g%s_w%s" % ("dual" if variant == "dual" else "quad", g, w)
-                path = os.path.join(a.out, tag + ".json")
-                if not run(a.program, extra + vopts + opts + kinds, path, os.path.join(a.out, tag + ".txt")):
-                    ok = False
+        pairs = []
+    for g, w in pairs:
+        grading = "growth %s, fine %s" % (g, w)
+        opts = []
+        for kind in ("P1", "T6", "Q8"):
+            opts += ["--growth", "%s:%s" % (kind, g), "--fine", "%s:%s" % (kind, w)]
+        for variant, vopts, kinds in (("dual", ["--method", "dual"], [p1] + quad),
+                                      ("quadratic multipliers", ["--multiplier", "quadratic"], quad)):
+            tag = "%s_g%s_w%s" % ("dual" if variant == "dual" else "quad", g, w)
+            path = os.path.join(a.out, tag + ".json")
+            if not run(a.program, extra + vopts + opts + kinds, path, os.path.join(a.out, tag + ".txt")):
+                ok = False
+                continue
+            for r in json.load(open(path)):
+                if r.get("err_p0") is None:
                     continue
-                for r in json.load(open(path)):
-                    if r.get("err_p0") is None:
-                        continue
-                    label = r["kind"] if r["kind"] in ("P1", "Q1") else "%s %s" % (r["kind"], variant)
-                    results.setdefault((label, grading), []).append(r)
+                label = r["kind"] if r["kind"] in ("P1", "Q1") else "%s %s" % (r["kind"], variant)
+                results.setdefault((label, grading), []).append(r)
     labels = sorted(set(k for k, _ in results), key=lambda s: (s != "P1", s))
     gradings = sorted(set(gr for _, gr in results))
     for key, title, levels in MEASURES:
