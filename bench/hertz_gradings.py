@@ -34,6 +34,7 @@ import os
 import subprocess
 import sys
 
+
 def run(program, args, json_path, log_path):
     cmd = [program] + args + ["--json", json_path]
     with open(log_path, "w") as log:
