@@ -228,11 +228,12 @@ void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, bool quad
     for (auto &[r, x] : v) value[r] += x;
     for (const Blend &b : blends) {
       double sum = 0;
+      bool seen = false;  // a group none of whose rows reach this position leaves it alone
       for (int r : b.group) {
         const auto it = value.find(r);
-        if (it != value.end()) sum += it->second;
+        if (it != value.end()) sum += it->second, seen = true;
       }
-      if (sum == 0 && std::none_of(b.group.begin(), b.group.end(), [&](int r) { return value.count(r) > 0; })) continue;
+      if (!seen) continue;
       for (int r : b.group) value[r] = b.theta * value[r] + (1 - b.theta) / double(b.group.size()) * sum;
     }
     for (auto &[r, x] : value)
