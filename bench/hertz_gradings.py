@@ -99,6 +99,18 @@ def report(results, labels, gradings, key, title, levels):
         print("| %g %% | %s |" % (100 * l, " | ".join(cells)))
 
 
+def add_rows(results, rows, variant, growth, fine):
+    """A run's rows into results[(kind label, grading)]. P1 and Q1 ignore the variant's options,
+    so only the dual mortar run's (which has them) count."""
+    grading = "growth %g, fine %g" % (float(growth), float(fine))
+    for r in rows:
+        linear = r["kind"] in ("P1", "Q1")
+        if r.get("err_p0") is None or (linear and variant != "dual"):
+            continue
+        label = r["kind"] if linear else "%s %s" % (r["kind"], variant)
+        results.setdefault((label, grading), []).append(r)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--program", default="build/bench/hertz_quadratic")
@@ -138,14 +150,9 @@ def main():
             except ValueError:  # a run still writing it, or one that failed
                 sys.stderr.write("skipped %s: not complete JSON\n" % name)
                 continue
-            for r in rows:
-                if r.get("err_p0") is None or (variant != "dual" and r["kind"] in ("P1", "Q1")):
-                    continue
-                label = r["kind"] if r["kind"] in ("P1", "Q1") else "%s %s" % (r["kind"], variant)
-                results.setdefault((label, "growth %g, fine %g" % (float(g), float(w))), []).append(r)
+            add_rows(results, rows, variant, g, w)
         pairs = []
     for g, w in pairs:
-        grading = "growth %g, fine %g" % (float(g), float(w))
         opts = []
         for kind in ("P1", "T6", "Q8"):
             opts += ["--growth", "%s:%s" % (kind, g), "--fine", "%s:%s" % (kind, w)]
@@ -156,11 +163,7 @@ def main():
             if not run(a.program, extra + vopts + opts + kinds, path, os.path.join(a.out, tag + ".txt")):
                 ok = False
                 continue
-            for r in json.load(open(path)):
-                if r.get("err_p0") is None:
-                    continue
-                label = r["kind"] if r["kind"] in ("P1", "Q1") else "%s %s" % (r["kind"], variant)
-                results.setdefault((label, grading), []).append(r)
+            add_rows(results, json.load(open(path)), variant, g, w)
     labels = sorted(set(k for k, _ in results), key=lambda s: (s != "P1", s))
     gradings = sorted(set(gr for _, gr in results))
     for key, title, levels in MEASURES:
