@@ -103,29 +103,32 @@ int quadrature_rule(int npc, bool axisymmetric, double xi[kMaxCellPoints], doubl
                     double weight[kMaxCellPoints]) {
   switch (npc) {
     case 3:
-      if (!axisymmetric) {
+    case 6:
+      if (npc == 3 && !axisymmetric) {
         xi[0] = eta[0] = 1.0 / 3, weight[0] = 0.5;
         return 1;
       }
-      // barycentric (2/3, 1/6, 1/6) and its permutations
-      xi[0] = 1.0 / 6, eta[0] = 1.0 / 6;
-      xi[1] = 2.0 / 3, eta[1] = 1.0 / 6;
-      xi[2] = 1.0 / 6, eta[2] = 2.0 / 3;
-      for (int g = 0; g < 3; ++g) weight[g] = 1.0 / 6;
-      return 3;
-    case 6: {
-      // Dunavant's degree-4 rule: two orbits of three points (barycentric (a, a, 1 - 2a)).
-      const double a[2] = {0.445948490915965, 0.091576213509771};
-      const double w[2] = {0.223381589678011, 0.109951743655322};
-      int g = 0;
-      for (int orbit = 0; orbit < 2; ++orbit) {
-        const double l[3][3] = {{a[orbit], a[orbit], 1 - 2 * a[orbit]},
-                                {a[orbit], 1 - 2 * a[orbit], a[orbit]},
-                                {1 - 2 * a[orbit], a[orbit], a[orbit]}};
-        for (int p = 0; p < 3; ++p, ++g) xi[g] = l[p][1], eta[g] = l[p][2], weight[g] = 0.5 * w[orbit];
+      if (npc == 3 || !axisymmetric) {
+        // barycentric (2/3, 1/6, 1/6) and its permutations: degree 2
+        xi[0] = 1.0 / 6, eta[0] = 1.0 / 6;
+        xi[1] = 2.0 / 3, eta[1] = 1.0 / 6;
+        xi[2] = 1.0 / 6, eta[2] = 2.0 / 3;
+        for (int g = 0; g < 3; ++g) weight[g] = 1.0 / 6;
+        return 3;
       }
-      return 6;
-    }
+      {
+        // Dunavant's degree-4 rule: two orbits of three points (barycentric (a, a, 1 - 2a)).
+        const double a[2] = {0.445948490915965, 0.091576213509771};
+        const double w[2] = {0.223381589678011, 0.109951743655322};
+        int g = 0;
+        for (int orbit = 0; orbit < 2; ++orbit) {
+          const double l[3][3] = {{a[orbit], a[orbit], 1 - 2 * a[orbit]},
+                                  {a[orbit], 1 - 2 * a[orbit], a[orbit]},
+                                  {1 - 2 * a[orbit], a[orbit], a[orbit]}};
+          for (int p = 0; p < 3; ++p, ++g) xi[g] = l[p][1], eta[g] = l[p][2], weight[g] = 0.5 * w[orbit];
+        }
+        return 6;
+      }
     case 4: {
       const double gauss = 0.57735026918962576451;  // 1/sqrt(3)
       for (int g = 0; g < 4; ++g) xi[g] = gauss * kQuadCornerX[g], eta[g] = gauss * kQuadCornerY[g], weight[g] = 1;

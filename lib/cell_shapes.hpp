@@ -39,8 +39,11 @@ void reference_node(int nodes_per_cell, int a, double &xi, double &eta);
 //   P1: the centroid (plane; B is constant), or 3 interior points (axisymmetric: degree 2,
 //       never on the axis, where the hoop row N_a / r is undefined);
 //   Q1: 2x2 Gauss;
-//   T6: 6 points, degree 4 (Dunavant): exact for the stiffness of a straight-sided T6 (degree
-//       2), its body forces, and with the axisymmetric weight r (degree 3);
+//   T6: plane, the 3 interior points (2/3, 1/6, 1/6) of degree 2: exact for the stiffness of a
+//       straight-sided T6 (B is linear) and for its body forces; the patch test holds on curved
+//       T6 too (the integral of B over a cell is of degree 2 in the reference coordinates);
+//       3 points x 3 strains leave no spurious zero-energy mode. Axisymmetric, 6 points of
+//       degree 4 (Dunavant): the weight r and the hoop row N_a / r raise the degree;
 //   Q8, Q9: 3x3 Gauss, exact to degree 5 in each direction: the stiffness of a parallelogram.
 int quadrature_rule(int nodes_per_cell, bool axisymmetric, double xi[kMaxCellPoints], double eta[kMaxCellPoints],
                     double weight[kMaxCellPoints]);

@@ -169,6 +169,28 @@ void add_btdb(int n, int n_strain, const double *b, const double *d, double weig
     }
 }
 
+// add_btdb for a plane law without B-bar, node pair by node pair: B_a = [dN_a/dx 0; 0 dN_a/dy;
+// dN_a/dy dN_a/dx], so the 2x2 block of nodes a, b is B_a^T (D B_b), without B's zeros (the
+// stiffness's inner loop: a third of the multiplications of the general product). Its sums are
+// add_btdb's without the zero terms, so the two give the same bits.
+void add_plane_btdb(int n, const double *dndx, const double *dndy, const double *d, double weight, double *ke) {
+  const int m = 2 * n;
+  for (int b = 0; b < n; ++b) {
+    const double bx = dndx[b], by = dndy[b];
+    double dbx[3], dby[3];  // weight D B_b's two columns (rounded as add_btdb rounds them)
+    for (int r = 0; r < 3; ++r)
+      dbx[r] = weight * (d[4 * r] * bx + d[4 * r + 2] * by), dby[r] = weight * (d[4 * r + 1] * by + d[4 * r + 2] * bx);
+    for (int a = 0; a <= b; ++a) {
+      const double ax = dndx[a], ay = dndy[a];
+      double *row_x = ke + (2 * a) * m + 2 * b, *row_y = row_x + m;
+      row_x[0] += ax * dbx[0] + ay * dbx[2];
+      row_x[1] += ax * dby[0] + ay * dby[2];
+      if (a < b) row_y[0] += ay * dbx[1] + ax * dbx[2];
+      row_y[1] += ay * dby[1] + ax * dby[2];
+    }
+  }
+}
+
 void stress_from_strain(const PlaneLaw &law, const double eps[4], double sigma[4]) {
   for (int r = 0; r < law.n_strain; ++r) {
     sigma[r] = 0;
@@ -185,28 +207,61 @@ void stress_at(const double *b, int m, const PlaneLaw &law, const double *ue, do
   stress_from_strain(law, eps, s);
 }
 
+// The strain at a point straight from the shape gradients: B u (strain_displacement's rows,
+// without building B) when there is no B-bar.
+void strain_at(const CellPoint &cp, int n, int n_strain, double axis, const double *ue, double eps[4]) {
+  eps[0] = eps[1] = eps[2] = eps[3] = 0;
+  for (int a = 0; a < n; ++a) {
+    const double ux = ue[2 * a], uy = ue[2 * a + 1];
+    eps[0] += cp.dndx[a] * ux;
+    eps[1] += cp.dndy[a] * uy;
+    eps[2] += cp.dndy[a] * ux;
+    eps[2] += cp.dndx[a] * uy;
+    if (n_strain == 4) eps[3] += (std::fabs(cp.x.x) <= axis ? cp.dndx[a] : cp.shape[a] / cp.x.x) * ux;
+  }
+}
+
+void point_stress(const CellPoint &cp, int n, const PlaneLaw &law, double axis, const double *ue, double s[4]) {
+  double eps[4];
+  strain_at(cp, n, law.n_strain, axis, ue, eps);
+  stress_from_strain(law, eps, s);
+}
+
 }  // namespace
 
 void cell_stiffness(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar, double *ke) {
-  BMatrix b[kMaxCellPoints];
-  double weight[kMaxCellPoints];
-  const int n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight), m = 2 * npc;
+  const int m = 2 * npc;
   std::memset(ke, 0, size_t(m * m) * sizeof(double));
-  for (int g = 0; g < n; ++g) add_btdb(npc, law.n_strain, b[g], law.d, weight[g], ke);
+  if (law.n_strain == 3 && !bbar) {
+    CellPoint q[kMaxCellPoints];
+    const int n = cell_points(p, npc, measure, q);
+    for (int g = 0; g < n; ++g) add_plane_btdb(npc, q[g].dndx, q[g].dndy, law.d, q[g].weight, ke);
+  } else {
+    BMatrix b[kMaxCellPoints];
+    double weight[kMaxCellPoints];
+    const int n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight);
+    for (int g = 0; g < n; ++g) add_btdb(npc, law.n_strain, b[g], law.d, weight[g], ke);
+  }
   for (int i = 0; i < m; ++i)
     for (int j = 0; j < i; ++j) ke[i * m + j] = ke[j * m + i];
 }
 
 void cell_stress(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar, const double *ue,
                  double sigma[4]) {
-  BMatrix b[kMaxCellPoints];
-  double weight[kMaxCellPoints], total = 0;
-  const int n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight), m = 2 * npc;
+  double weight[kMaxCellPoints], total = 0, s[kMaxCellPoints][4];
+  int n;
+  if (!bbar) {
+    CellPoint q[kMaxCellPoints];
+    n = cell_points(p, npc, measure, q);
+    for (int g = 0; g < n; ++g) weight[g] = q[g].weight, point_stress(q[g], npc, law, 0.0, ue, s[g]);
+  } else {
+    BMatrix b[kMaxCellPoints];
+    n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight);
+    for (int g = 0; g < n; ++g) stress_at(b[g], 2 * npc, law, ue, s[g]);
+  }
   for (int k = 0; k < 4; ++k) sigma[k] = 0;
   for (int g = 0; g < n; ++g) {
-    double s[4];
-    stress_at(b[g], m, law, ue, s);
-    for (int k = 0; k < 4; ++k) sigma[k] += weight[g] * s[k];
+    for (int k = 0; k < 4; ++k) sigma[k] += weight[g] * s[g][k];
     total += weight[g];
   }
   for (int k = 0; k < 4; ++k) sigma[k] /= total;
@@ -237,9 +292,13 @@ void cell_nodal_stresses(const Point *p, int npc, const PlaneLaw &law, const Lin
     double xi, eta;
     reference_node(npc, a, xi, eta);
     const CellPoint cp = cell_point(p, npc, xi, eta);
+    if (!bbar) {
+      point_stress(cp, npc, law, 1e-9 * extent, ue, &sigma[4 * a]);
+      continue;
+    }
     BMatrix b;
     strain_displacement(npc, law.n_strain, cp, 1e-9 * extent, b);
-    if (bbar) replace_dilatation(b, m, law.n_strain, mean);
+    replace_dilatation(b, m, law.n_strain, mean);
     stress_at(b, m, law, ue, &sigma[4 * a]);
   }
 }
@@ -295,10 +354,8 @@ int cell_sampled_stresses(const Point *p, int npc, const PlaneLaw &law, const Li
   }
   for (int g = 0; g < n; ++g) {
     const CellPoint cp = cell_point(p, npc, xi[g], eta[g]);
-    BMatrix b;
-    strain_displacement(npc, law.n_strain, cp, 0.0, b);
     x[g] = cp.x;
-    stress_at(b, m, law, ue, &sigma[4 * g]);
+    point_stress(cp, npc, law, 0.0, ue, &sigma[4 * g]);
   }
   return n;
 }
@@ -308,14 +365,22 @@ double cell_recovery_error(const Point *p, int npc, const PlaneLaw &law, const d
   BMatrix b[kMaxCellPoints];
   double weight[kMaxCellPoints];
   CellPoint q[kMaxCellPoints];
-  const int n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight, nullptr, q), m = 2 * npc;
+  int n;
+  if (!bbar) {
+    n = cell_points(p, npc, measure, q);
+    for (int g = 0; g < n; ++g) weight[g] = q[g].weight;
+  } else {
+    n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight, nullptr, q);
+  }
+  const int m = 2 * npc;
   // The components the energy sees: plane (xx, yy, xy), axisymmetric (rr, zz, rz, theta theta),
   // in nodal_sigma's slots 0..3 as in the law's strain order.
   const int k = law.n_strain;
   double error = 0;
   for (int g = 0; g < n; ++g) {
     double own[4], recovered[4] = {0, 0, 0, 0}, d[4];
-    stress_at(b[g], m, law, ue, own);
+    if (bbar) stress_at(b[g], m, law, ue, own);
+    else point_stress(q[g], npc, law, 0.0, ue, own);
     for (int a = 0; a < npc; ++a)
       for (int r = 0; r < k; ++r) recovered[r] += q[g].shape[a] * nodal_sigma[4 * a + r];
     for (int r = 0; r < k; ++r) d[r] = recovered[r] - own[r];

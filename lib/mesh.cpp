@@ -226,12 +226,20 @@ void Mesh::check_jacobians(int base) const {
   const int npc = nodes_per_cell_;
   const bool triangle = corners_ == 3;
   constexpr int kSteps = 8;
-  std::vector<std::array<double, 2>> lattice;
+  // The lattice and its shape derivatives, once for every cell.
+  struct LatticePoint {
+    double xi, eta, dxi[kMaxCellNodes], deta[kMaxCellNodes];
+  };
+  std::vector<LatticePoint> lattice;
   for (int j = 0; j <= kSteps; ++j)
     for (int i = 0; i <= kSteps; ++i) {
       if (triangle && i + j > kSteps) continue;
-      lattice.push_back(triangle ? std::array<double, 2>{double(i) / kSteps, double(j) / kSteps}
-                                 : std::array<double, 2>{-1 + 2.0 * i / kSteps, -1 + 2.0 * j / kSteps});
+      LatticePoint point;
+      point.xi = triangle ? double(i) / kSteps : -1 + 2.0 * i / kSteps;
+      point.eta = triangle ? double(j) / kSteps : -1 + 2.0 * j / kSteps;
+      double n[kMaxCellNodes];
+      reference_shapes(npc, point.xi, point.eta, n, point.dxi, point.deta);
+      lattice.push_back(point);
     }
   const double reference_area = triangle ? 0.5 : 4;
   for (int c = 0; c < n_cells_; ++c) {
@@ -241,31 +249,63 @@ void Mesh::check_jacobians(int base) const {
       const Point p = node(v[a]), q = node(v[(a + 1) % corners_]);
       area += 0.5 * (p.x * q.y - q.x * p.y);
     }
-    for (const auto &point : lattice) {
-      double n[kMaxCellNodes], dxi[kMaxCellNodes], deta[kMaxCellNodes];
-      reference_shapes(npc, point[0], point[1], n, dxi, deta);
+    const double threshold = 1e-8 * area / reference_area;
+    if (straight_sided_jacobian_positive(c, threshold)) continue;
+    for (const LatticePoint &point : lattice) {
       double j11 = 0, j12 = 0, j21 = 0, j22 = 0;
       for (int a = 0; a < npc; ++a) {
         const Point p = node(v[a]);
-        j11 += dxi[a] * p.x, j12 += dxi[a] * p.y, j21 += deta[a] * p.x, j22 += deta[a] * p.y;
+        j11 += point.dxi[a] * p.x, j12 += point.dxi[a] * p.y, j21 += point.deta[a] * p.x, j22 += point.deta[a] * p.y;
       }
       const double det = j11 * j22 - j12 * j21;
-      if (det > 1e-8 * area / reference_area) continue;
+      if (det > threshold) continue;
       int nearest = 0;  // the node nearest to the failing point, in reference coordinates
       double best = 1e300;
       for (int a = 0; a < npc; ++a) {
         double xa, ya;
         reference_node(npc, a, xa, ya);
-        const double d = std::hypot(xa - point[0], ya - point[1]);
+        const double d = std::hypot(xa - point.xi, ya - point.eta);
         if (d < best) best = d, nearest = a;
       }
       fail(MC_ERROR_MESH,
            "cell %d (%s) is inverted or folded inside: its Jacobian is %s at reference point (%g, %g), nearest its "
            "node %d (node %d): check the mid-edge nodes' positions (a middle node must lie well inside its edge's "
            "middle half) and that the corners are counter-clockwise",
-           c + base, cell_name(npc), det < 0 ? "negative" : "zero", point[0], point[1], nearest, v[nearest] + base);
+           c + base, cell_name(npc), det < 0 ? "negative" : "zero", point.xi, point.eta, nearest, v[nearest] + base);
     }
   }
+}
+
+// A cell whose middles sit at their edges' midpoints (and a Q9 centre at the corners' mean), to
+// round-off, has the map of its corners: affine (T6), whose Jacobian is constant, twice the
+// corner triangle's area; or bilinear (Q8, Q9), whose Jacobian is linear in xi and in eta, so
+// smallest at a corner. Then the corners decide what the lattice would. False: not
+// straight-sided, or a corner at or below the threshold (the lattice then names the point).
+bool Mesh::straight_sided_jacobian_positive(int c, double threshold) const {
+  const int *v = cell(c);
+  double longest = 0;
+  for (int a = 0; a < corners_; ++a) {
+    const Point p = node(v[a]), q = node(v[(a + 1) % corners_]);
+    longest = std::max(longest, std::hypot(q.x - p.x, q.y - p.y));
+  }
+  const double tolerance = 1e-12 * longest;
+  auto near = [&](Point p, double x, double y) { return std::fabs(p.x - x) <= tolerance && std::fabs(p.y - y) <= tolerance; };
+  for (int a = 0; a < corners_; ++a) {
+    const Point p = node(v[a]), q = node(v[(a + 1) % corners_]);
+    if (!near(node(v[corners_ + a]), 0.5 * (p.x + q.x), 0.5 * (p.y + q.y))) return false;
+  }
+  if (nodes_per_cell_ == 9) {
+    double x = 0, y = 0;
+    for (int a = 0; a < 4; ++a) x += 0.25 * node(v[a]).x, y += 0.25 * node(v[a]).y;
+    if (!near(node(v[8]), x, y)) return false;
+  }
+  for (int a = 0; a < corners_; ++a) {
+    // The Jacobian at corner a: (x_{a+1} - x_a) x (x_{a-1} - x_a), over 1 (triangle) or 4.
+    const Point p = node(v[a]), next = node(v[(a + 1) % corners_]), previous = node(v[(a + corners_ - 1) % corners_]);
+    const double cross = (next.x - p.x) * (previous.y - p.y) - (next.y - p.y) * (previous.x - p.x);
+    if (!(cross / (corners_ == 3 ? 1 : 4) > threshold)) return false;
+  }
+  return true;
 }
 
 const char *Mesh::edge_hint(int a, int b, int base, char *buffer, int size) const {

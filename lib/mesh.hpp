@@ -55,6 +55,7 @@ private:
   static uint64_t edge_key(int a, int b);
   void check_cell_shapes(int base);
   void check_jacobians(int base) const;
+  bool straight_sided_jacobian_positive(int c, double threshold) const;
   void check_node_roles(int base) const;
   void derive_boundary(int base);
   void fail_on_duplicate_cell(int base) const;

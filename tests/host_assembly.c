@@ -115,12 +115,12 @@ int ha_rule(int npc, int axisymmetric, double *p, double *w) {
     p[0] = p[1] = 1.0 / 3, w[0] = 0.5;
     return 1;
   }
-  if (npc == 3) { /* barycentric (2/3, 1/6, 1/6) and its permutations */
+  if (npc == 3 || (npc == 6 && !axisymmetric)) { /* barycentric (2/3, 1/6, 1/6) and its permutations */
     const double bary[3][3] = {{2.0 / 3, 1.0 / 6, 1.0 / 6}, {1.0 / 6, 2.0 / 3, 1.0 / 6}, {1.0 / 6, 1.0 / 6, 2.0 / 3}};
     for (int k = 0; k < 3; ++k) p[2 * k] = bary[k][1], p[2 * k + 1] = bary[k][2], w[k] = 0.5 / 3;
     return 3;
   }
-  if (npc == 6) { /* Dunavant, degree 4: (1 - 2a, a, a) and permutations, two orbits */
+  if (npc == 6) { /* axisymmetric: Dunavant, degree 4: (1 - 2a, a, a) and permutations, two orbits */
     const double a[2] = {0.445948490915965, 0.091576213509771}, wa[2] = {0.223381589678011, 0.109951743655322};
     for (int o = 0; o < 2; ++o) {
       const double l[3][3] = {{1 - 2 * a[o], a[o], a[o]}, {a[o], 1 - 2 * a[o], a[o]}, {a[o], a[o], 1 - 2 * a[o]}};

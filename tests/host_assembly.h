@@ -9,7 +9,8 @@
  * the triangle (0,0) (1,0) (0,1) (xi, eta the barycentric coordinates of nodes 1 and 2) and the
  * square [-1,1]^2 with corner 0 at (-1,-1). Quadrature (the library's rules, so that the two
  * agree to round-off): P1 1 point (axisymmetric: 3 points at barycentric (2/3,1/6,1/6)), Q1 2x2
- * Gauss, T6 Dunavant's 6-point degree-4 rule, Q8 and Q9 3x3 Gauss.
+ * Gauss, T6 the same 3 points (axisymmetric: Dunavant's 6-point degree-4 rule), Q8 and Q9 3x3
+ * Gauss.
  *
  * Freedoms of a cell: x then y per node, node by node (2 npc). Laws: plane, a 3x3 row-major
  * Voigt matrix (xx, yy, engineering xy) weighted by the thickness; axisymmetric, 4x4 on
