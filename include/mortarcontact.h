@@ -283,8 +283,8 @@ MC_API mc_status mc_set_plane(mc_model *m, int plane, double thickness);
    cell and node. Edges are always named by their two corner nodes (mc_add_traction,
    mc_add_pressure, mc_set_contact): the library finds the mid-edge node from the cell, so a
    host's boundary lists are the same for linear and quadratic meshes. Quadrature (docs/api.md):
-   P1 1 point (axisymmetric 3), Q1 2x2, T6 6 points, Q8 and Q9 3x3 Gauss; exact for the
-   stiffness of straight-sided T6 and of parallelogram Q8/Q9 cells. Every node must be used by a cell.
+   P1 1 point (axisymmetric 3), Q1 2x2, T6 3 points (axisymmetric 6), Q8 and Q9 3x3 Gauss;
+   exact for the stiffness of straight-sided T6 and of parallelogram Q8/Q9 cells. Every node must be used by a cell.
    Setting a mesh again clears that body's materials, supports, loads and contact surface.
    In an axisymmetric model a node with x < 0 is an MC_ERROR_MESH naming it. */
 MC_API mc_status mc_set_mesh(mc_model *m, int body, mc_int n_nodes, const double *xy,
