@@ -144,6 +144,11 @@ int quadrature_rule(int npc, bool axisymmetric, double xi[kMaxCellPoints], doubl
   }
 }
 
+int error_quadrature_rule(int npc, bool axisymmetric, double xi[kMaxCellPoints], double eta[kMaxCellPoints],
+                          double weight[kMaxCellPoints]) {
+  return quadrature_rule(npc, axisymmetric || npc == 6, xi, eta, weight);
+}
+
 void line_shapes(int nodes, double s, double n[3], double ds[3]) {
   if (nodes == 2) {
     n[0] = 1 - s, n[1] = s, n[2] = 0;

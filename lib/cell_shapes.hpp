@@ -47,6 +47,12 @@ void reference_node(int nodes_per_cell, int a, double &xi, double &eta);
 //   Q8, Q9: 3x3 Gauss, exact to degree 5 in each direction: the stiffness of a parallelogram.
 int quadrature_rule(int nodes_per_cell, bool axisymmetric, double xi[kMaxCellPoints], double eta[kMaxCellPoints],
                     double weight[kMaxCellPoints]);
+// The rule of the error estimate's integral of |sigma* - sigma_h|^2 (degree 4 on a T6): the
+// cell's rule, but always the 6 points of degree 4 on a T6. Its plane stiffness rule's 3 points
+// are where the recovery samples sigma_h (cell_sampled_stresses), so the difference would be
+// integrated where it is smallest.
+int error_quadrature_rule(int nodes_per_cell, bool axisymmetric, double xi[kMaxCellPoints], double eta[kMaxCellPoints],
+                          double weight[kMaxCellPoints]);
 
 // Shapes of the 2-node (nodes = 2: 1 - s, s) or 3-node (nodes = 3: end, end, middle) line at
 // s in [0, 1], and their derivatives in s.

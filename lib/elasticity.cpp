@@ -80,10 +80,13 @@ CellPoint cell_point(const Point *p, int npc, double xi, double eta) {
   return cp;
 }
 
-// The quadrature points of a cell (cell_shapes.hpp: the rule of each kind).
-int cell_points(const Point *p, int npc, const LineMeasure &measure, CellPoint q[kMaxCellPoints]) {
+// The quadrature points of a cell (cell_shapes.hpp: the rule of each kind; for_error: the error
+// estimate's rule).
+int cell_points(const Point *p, int npc, const LineMeasure &measure, CellPoint q[kMaxCellPoints],
+                bool for_error = false) {
   double xi[kMaxCellPoints], eta[kMaxCellPoints], w[kMaxCellPoints];
-  const int n = quadrature_rule(npc, measure.axisymmetric, xi, eta, w);
+  const int n = for_error ? error_quadrature_rule(npc, measure.axisymmetric, xi, eta, w)
+                          : quadrature_rule(npc, measure.axisymmetric, xi, eta, w);
   for (int g = 0; g < n; ++g) {
     q[g] = cell_point(p, npc, xi[g], eta[g]);
     q[g].weight = w[g] * q[g].det * measure.weight(q[g].x);
@@ -367,9 +370,9 @@ double cell_recovery_error(const Point *p, int npc, const PlaneLaw &law, const d
   CellPoint q[kMaxCellPoints];
   int n;
   if (!bbar) {
-    n = cell_points(p, npc, measure, q);
+    n = cell_points(p, npc, measure, q, true);
     for (int g = 0; g < n; ++g) weight[g] = q[g].weight;
-  } else {
+  } else {  // (B-bar: Q1 only, whose error rule is its own)
     n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight, nullptr, q);
   }
   const int m = 2 * npc;

@@ -51,7 +51,8 @@ int cell_sampled_stresses(const Point *p, int npc, const PlaneLaw &law, const Li
 // (sigma* - sigma_h)^T D^-1 (sigma* - sigma_h) w, where sigma_h is the cell's own stress and
 // sigma* = sum_a N_a sigma_a interpolates the recovered stresses at its nodes (4 per node, as
 // cell_nodal_stresses; the plane models' fourth, sigma_zz, is not an independent component and
-// is left out). The energy of the stress error, in the units of the strain energy.
+// is left out). The energy of the stress error, in the units of the strain energy. Integrated
+// by error_quadrature_rule (a T6: 6 points, not its stiffness's 3, where sigma* was fitted).
 // compliance: D^-1 of the law (law_compliance), computed once per law by the caller.
 double cell_recovery_error(const Point *p, int npc, const PlaneLaw &law, const double compliance[16],
                            const LineMeasure &measure, bool bbar, const double *ue, const double *nodal_sigma);
