@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 namespace mc {
 
@@ -58,18 +59,17 @@ struct CellPoint {
   double det;  // Jacobian determinant
 };
 
-// The isoparametric map of a cell at reference point (xi, eta): x = sum N_a x_a, gradients by
-// the inverse Jacobian.
-CellPoint cell_point(const Point *p, int npc, double xi, double eta) {
+// The isoparametric map of a cell at a reference point whose shape functions and their reference
+// derivatives are given: x = sum N_a x_a, gradients by the inverse Jacobian.
+CellPoint cell_point_from(const Point *p, int npc, const double *shape, const double *dxi, const double *deta) {
   CellPoint cp;
-  double dxi[kMaxCellNodes], deta[kMaxCellNodes];
-  reference_shapes(npc, xi, eta, cp.shape, dxi, deta);
   double j11 = 0, j12 = 0, j21 = 0, j22 = 0;  // d(x,y)/d(xi,eta)
   cp.x = {0, 0};
   for (int a = 0; a < npc; ++a) {
+    cp.shape[a] = shape[a];
     j11 += dxi[a] * p[a].x, j12 += dxi[a] * p[a].y;
     j21 += deta[a] * p[a].x, j22 += deta[a] * p[a].y;
-    cp.x.x += cp.shape[a] * p[a].x, cp.x.y += cp.shape[a] * p[a].y;
+    cp.x.x += shape[a] * p[a].x, cp.x.y += shape[a] * p[a].y;
   }
   cp.det = j11 * j22 - j12 * j21;
   for (int a = 0; a < npc; ++a) {
@@ -80,18 +80,62 @@ CellPoint cell_point(const Point *p, int npc, double xi, double eta) {
   return cp;
 }
 
+// A quadrature rule with its shape functions and their reference derivatives at each point:
+// the same for every cell of a kind, so evaluated once (each cell's points cost the map alone).
+struct TabulatedRule {
+  int n = 0;
+  double weight[kMaxCellPoints];
+  double shape[kMaxCellPoints][kMaxCellNodes], dxi[kMaxCellPoints][kMaxCellNodes], deta[kMaxCellPoints][kMaxCellNodes];
+};
+
+// The points a cell kind is evaluated at: its quadrature rules (plane or axisymmetric, stiffness
+// or error estimate), its nodes, and the sampling points of a quadratic cell's stresses (T6: the
+// 3 interior points (2/3, 1/6, 1/6); Q8, Q9: 2x2 Gauss).
+enum class CellPoints { rule = 0, nodes = 4, samples = 5 };
+constexpr int kPointSets = 6;
+
+// Those points' shapes, tabulated on first use: a constant table, built once however many
+// threads ask (a function-local static).
+const TabulatedRule &tabulated(int npc, CellPoints set, bool axisymmetric = false, bool for_error = false) {
+  static const std::vector<TabulatedRule> table = [] {
+    std::vector<TabulatedRule> t(10 * kPointSets);
+    for (int kind : {3, 4, 6, 8, 9})
+      for (int k = 0; k < kPointSets; ++k) {
+        TabulatedRule &r = t[kPointSets * size_t(kind) + k];
+        double xi[kMaxCellNodes], eta[kMaxCellNodes];
+        if (k < 4) {
+          const bool axi = k & 1, error = k & 2;
+          r.n = error ? error_quadrature_rule(kind, axi, xi, eta, r.weight) : quadrature_rule(kind, axi, xi, eta, r.weight);
+        } else if (k == int(CellPoints::nodes)) {
+          r.n = kind;
+          for (int a = 0; a < kind; ++a) reference_node(kind, a, xi[a], eta[a]);
+        } else if (kind == 6) {
+          r.n = 3;
+          const double l[3][2] = {{1.0 / 6, 1.0 / 6}, {2.0 / 3, 1.0 / 6}, {1.0 / 6, 2.0 / 3}};
+          for (int g = 0; g < 3; ++g) xi[g] = l[g][0], eta[g] = l[g][1];
+        } else if (kind > 6) {
+          r.n = 4;
+          const double gauss = 0.57735026918962576451, sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+          for (int g = 0; g < 4; ++g) xi[g] = gauss * sx[g], eta[g] = gauss * sy[g];
+        }
+        for (int g = 0; g < r.n; ++g) reference_shapes(kind, xi[g], eta[g], r.shape[g], r.dxi[g], r.deta[g]);
+      }
+    return t;
+  }();
+  const int k = set == CellPoints::rule ? (axisymmetric ? 1 : 0) + (for_error ? 2 : 0) : int(set);
+  return table[kPointSets * size_t(npc) + k];
+}
+
 // The quadrature points of a cell (cell_shapes.hpp: the rule of each kind; for_error: the error
 // estimate's rule).
 int cell_points(const Point *p, int npc, const LineMeasure &measure, CellPoint q[kMaxCellPoints],
                 bool for_error = false) {
-  double xi[kMaxCellPoints], eta[kMaxCellPoints], w[kMaxCellPoints];
-  const int n = for_error ? error_quadrature_rule(npc, measure.axisymmetric, xi, eta, w)
-                          : quadrature_rule(npc, measure.axisymmetric, xi, eta, w);
-  for (int g = 0; g < n; ++g) {
-    q[g] = cell_point(p, npc, xi[g], eta[g]);
-    q[g].weight = w[g] * q[g].det * measure.weight(q[g].x);
+  const TabulatedRule &rule = tabulated(npc, CellPoints::rule, measure.axisymmetric, for_error);
+  for (int g = 0; g < rule.n; ++g) {
+    q[g] = cell_point_from(p, npc, rule.shape[g], rule.dxi[g], rule.deta[g]);
+    q[g].weight = rule.weight[g] * q[g].det * measure.weight(q[g].x);
   }
-  return n;
+  return rule.n;
 }
 
 constexpr int kMaxCellDofs = 2 * kMaxCellNodes;
@@ -291,10 +335,9 @@ void cell_nodal_stresses(const Point *p, int npc, const PlaneLaw &law, const Lin
   // A node within round-off of the axis (model.hpp's axis tolerance: 1e-12 of the extent).
   double extent = 0;
   for (int a = 0; a < npc; ++a) extent = std::max({extent, std::fabs(p[a].x - p[0].x), std::fabs(p[a].y - p[0].y)});
+  const TabulatedRule &nodes = tabulated(npc, CellPoints::nodes);
   for (int a = 0; a < npc; ++a) {
-    double xi, eta;
-    reference_node(npc, a, xi, eta);
-    const CellPoint cp = cell_point(p, npc, xi, eta);
+    const CellPoint cp = cell_point_from(p, npc, nodes.shape[a], nodes.dxi[a], nodes.deta[a]);
     if (!bbar) {
       point_stress(cp, npc, law, 1e-9 * extent, ue, &sigma[4 * a]);
       continue;
@@ -344,19 +387,10 @@ int cell_sampled_stresses(const Point *p, int npc, const PlaneLaw &law, const Li
     }
     return n;
   }
-  double xi[4], eta[4];
-  int n;
-  if (npc == 6) {
-    n = 3;
-    const double l[3][2] = {{1.0 / 6, 1.0 / 6}, {2.0 / 3, 1.0 / 6}, {1.0 / 6, 2.0 / 3}};
-    for (int g = 0; g < 3; ++g) xi[g] = l[g][0], eta[g] = l[g][1];
-  } else {
-    n = 4;
-    const double gauss = 0.57735026918962576451, sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
-    for (int g = 0; g < 4; ++g) xi[g] = gauss * sx[g], eta[g] = gauss * sy[g];
-  }
+  const TabulatedRule &samples = tabulated(npc, CellPoints::samples);
+  const int n = samples.n;
   for (int g = 0; g < n; ++g) {
-    const CellPoint cp = cell_point(p, npc, xi[g], eta[g]);
+    const CellPoint cp = cell_point_from(p, npc, samples.shape[g], samples.dxi[g], samples.deta[g]);
     x[g] = cp.x;
     point_stress(cp, npc, law, 0.0, ue, &sigma[4 * g]);
   }
