@@ -1,6 +1,6 @@
 /*
  * hertz_scene_check.c - self-check of the Hertz scene generator (ctest hertz_scene runs it on
- * three size pairs; examples/CMakeLists.txt). By hand:
+ * three size pairs with P1 and Q1, and T6, Q8 and Q9 on the first; examples/CMakeLists.txt). By hand:
  *   gcc -std=c99 -O2 -Wall -Wextra hertz_scene_check.c hertz_scene.c -lm -o hertz_scene_check
  *   ./hertz_scene_check            # default size list
  *   ./hertz_scene_check h1 h2 ...  # pairs of sizes
@@ -220,6 +220,96 @@ static void check_scene(double h1, double h2, int quads)
   hertz_scene_free(&s);
 }
 
+/* The mid-edge node of the edge (u, v) of a quadratic mesh (corner ids), or -1: from the cell
+   that has that edge. */
+static int middle_of(const hertz_mesh *m, int u, int v)
+{
+  const int npc = m->nodes_per_cell, corners = npc == 6 ? 3 : 4;
+  for (int c = 0; c < m->n_cells; ++c) {
+    const int *w = m->cells + c * npc;
+    for (int k = 0; k < corners; ++k) {
+      const int a = w[k], b = w[(k + 1) % corners];
+      if ((a == u && b == v) || (a == v && b == u)) return w[corners + k];
+    }
+  }
+  return -1;
+}
+
+/* A quadratic scene (T6, Q8, Q9): the corners as in check_mesh (counter-clockwise, convex);
+   every node used; body 2, the block, has straight cells (each middle at its edge's midpoint, a
+   Q9 centre at the corners' mean, to rounding) whose corner polygons tile its 32; body 1's
+   contact edges have their middles on the circle, between their corners; the axis, bottom and
+   top lists hold the middles there too. */
+static void check_quadratic_scene(double h1, double h2, int npc)
+{
+  hertz_scene s;
+  const char *kind = npc == 6 ? "T6" : npc == 8 ? "Q8" : "Q9";
+  const int corners = npc == 6 ? 3 : 4;
+  printf("h1 = %g, h2 = %g, %s\n", h1, h2, kind);
+  if (hertz_scene_build_cells(&s, h1, h2, npc)) {
+    CHECK(0, "%s build failed", kind);
+    return;
+  }
+  for (int b = 0; b < 2; ++b) {
+    const hertz_mesh *m = &s.body[b];
+    CHECK(m->nodes_per_cell == npc, "%s body %d: %d nodes per cell", kind, b + 1, m->nodes_per_cell);
+    int *used = calloc((size_t)m->n_nodes, sizeof *used);
+    double area = 0.0, off_chord = 0.0;
+    for (int c = 0; c < m->n_cells; ++c) {
+      const int *v = m->cells + c * npc;
+      for (int k = 0; k < npc; ++k) used[v[k]] = 1;
+      for (int k = 0; k < corners; ++k) {
+        const int p = v[k], q = v[(k + 1) % corners], r = v[(k + corners - 1) % corners];
+        CHECK(cross(m->xy, p, q, r) > 0.0, "%s body %d cell %d corner %d: not counter-clockwise and convex", kind,
+              b + 1, c, k);
+        const int mid = v[corners + k];
+        const double dx = m->xy[2 * mid] - 0.5 * (m->xy[2 * p] + m->xy[2 * q]);
+        const double dy = m->xy[2 * mid + 1] - 0.5 * (m->xy[2 * p + 1] + m->xy[2 * q + 1]);
+        const double edge = hypot(m->xy[2 * q] - m->xy[2 * p], m->xy[2 * q + 1] - m->xy[2 * p + 1]);
+        if (hypot(dx, dy) / edge > off_chord) off_chord = hypot(dx, dy) / edge;
+      }
+      for (int k = 1; k + 1 < corners; ++k) area += 0.5 * cross(m->xy, v[0], v[k], v[k + 1]);
+      if (npc == 9 && b == 1) {
+        double x = 0, y = 0;
+        for (int k = 0; k < 4; ++k) x += 0.25 * m->xy[2 * v[k]], y += 0.25 * m->xy[2 * v[k] + 1];
+        CHECK(hypot(m->xy[2 * v[8]] - x, m->xy[2 * v[8] + 1] - y) < 1e-12, "Q9 body 2 cell %d: centre off", c);
+      }
+    }
+    int unused = 0;
+    for (int i = 0; i < m->n_nodes; ++i) unused += !used[i];
+    CHECK(unused == 0, "%s body %d: %d nodes unused", kind, b + 1, unused);
+    free(used);
+    /* body 2 is straight-sided; body 1's mapped cells bend, but a middle stays well inside its
+       edge's middle half (the library's check) */
+    if (b == 1) {
+      CHECK(off_chord < 1e-12, "%s body 2: a middle %.3e of its edge off the midpoint", kind, off_chord);
+      CHECK(fabs(area - 32.0) < 1e-10, "%s body 2: corner polygons cover %.15f, not 32", kind, area);
+    } else {
+      CHECK(off_chord < 0.25, "%s body 1: a middle %.3f of its edge off the midpoint", kind, off_chord);
+    }
+    printf("  %s body %d: %7d nodes %8d cells, largest middle offset %.2e of its edge\n", kind, b + 1, m->n_nodes,
+           m->n_cells, off_chord);
+  }
+  const hertz_mesh *b1 = &s.body[0];
+  for (int e = 0; e < s.n_contact_edges[0]; ++e) {
+    const int u = s.contact_edges[0][2 * e], v = s.contact_edges[0][2 * e + 1], m = middle_of(b1, u, v);
+    CHECK(m >= 0, "%s body-1 contact edge %d (%d, %d) is no cell's edge", kind, e, u, v);
+    if (m < 0) continue;
+    const double *x = b1->xy;
+    CHECK(fabs(hypot(x[2 * m], x[2 * m + 1] - 1.0) - 1.0) < 1e-15, "%s contact edge %d: middle off the circle", kind, e);
+    CHECK((x[2 * m] - x[2 * u]) * (x[2 * m] - x[2 * v]) < 0, "%s contact edge %d: middle not between its corners", kind,
+          e);
+  }
+  int axis = 0, bottom = 0, top = 0;
+  for (int i = 0; i < b1->n_nodes; ++i) axis += b1->xy[2 * i] == 0.0, top += b1->xy[2 * i + 1] == 1.0;
+  for (int i = 0; i < s.body[1].n_nodes; ++i) bottom += s.body[1].xy[2 * i + 1] == -4.0;
+  CHECK(axis == s.n_axis_nodes, "%s axis: %d nodes with x == 0, %d listed", kind, axis, s.n_axis_nodes);
+  CHECK(bottom == s.n_bottom_nodes, "%s bottom: %d nodes with y == -4, %d listed", kind, bottom, s.n_bottom_nodes);
+  CHECK(2 * s.n_top_edges + 1 == top, "%s top: %d edges for %d nodes at y == 1 (corners and middles)", kind,
+        s.n_top_edges, top);
+  hertz_scene_free(&s);
+}
+
 int main(int argc, char **argv)
 {
   hertz_scene s;
@@ -265,6 +355,9 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < sizeof h / sizeof h[0]; ++i)
       for (int quads = 0; quads < 2; ++quads) check_scene(h[i][0], h[i][1], quads);
   }
+  /* quadratic scenes: at the first size pair given (or 0.1, 0.137) */
+  for (int npc = 6; npc <= 9; npc += npc == 6 ? 2 : 1)
+    check_quadratic_scene(argc > 2 ? atof(argv[1]) : 0.1, argc > 2 ? atof(argv[2]) : 0.137, npc);
   printf(failures ? "%d FAILURES\n" : "all checks passed\n", failures);
   return failures != 0;
 }
