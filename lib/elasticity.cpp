@@ -274,6 +274,23 @@ void point_stress(const CellPoint &cp, int n, const PlaneLaw &law, double axis, 
   stress_from_strain(law, eps, s);
 }
 
+// The stress at each quadrature point of a cell (for_error: the error estimate's rule; with
+// B-bar, a Q1's, whose two rules are one): through the B matrices with B-bar, else straight from
+// the shape gradients. Fills q (the points, their weights included) and s; returns the count.
+int cell_point_stresses(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar,
+                        const double *ue, bool for_error, CellPoint q[kMaxCellPoints], double s[kMaxCellPoints][4]) {
+  if (!bbar) {
+    const int n = cell_points(p, npc, measure, q, for_error);
+    for (int g = 0; g < n; ++g) point_stress(q[g], npc, law, 0.0, ue, s[g]);
+    return n;
+  }
+  BMatrix b[kMaxCellPoints];
+  double weight[kMaxCellPoints];
+  const int n = cell_b_matrices(p, npc, measure, law.n_strain, true, b, weight, nullptr, q);
+  for (int g = 0; g < n; ++g) stress_at(b[g], 2 * npc, law, ue, s[g]);
+  return n;
+}
+
 }  // namespace
 
 void cell_stiffness(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar, double *ke) {
@@ -295,21 +312,13 @@ void cell_stiffness(const Point *p, int npc, const PlaneLaw &law, const LineMeas
 
 void cell_stress(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar, const double *ue,
                  double sigma[4]) {
-  double weight[kMaxCellPoints], total = 0, s[kMaxCellPoints][4];
-  int n;
-  if (!bbar) {
-    CellPoint q[kMaxCellPoints];
-    n = cell_points(p, npc, measure, q);
-    for (int g = 0; g < n; ++g) weight[g] = q[g].weight, point_stress(q[g], npc, law, 0.0, ue, s[g]);
-  } else {
-    BMatrix b[kMaxCellPoints];
-    n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight);
-    for (int g = 0; g < n; ++g) stress_at(b[g], 2 * npc, law, ue, s[g]);
-  }
+  CellPoint q[kMaxCellPoints];
+  double s[kMaxCellPoints][4], total = 0;
+  const int n = cell_point_stresses(p, npc, law, measure, bbar, ue, false, q, s);
   for (int k = 0; k < 4; ++k) sigma[k] = 0;
   for (int g = 0; g < n; ++g) {
-    for (int k = 0; k < 4; ++k) sigma[k] += weight[g] * s[g][k];
-    total += weight[g];
+    for (int k = 0; k < 4; ++k) sigma[k] += q[g].weight * s[g][k];
+    total += q[g].weight;
   }
   for (int k = 0; k < 4; ++k) sigma[k] /= total;
 }
@@ -375,15 +384,14 @@ void law_compliance(const PlaneLaw &law, double c[16]) {
 
 int cell_sampled_stresses(const Point *p, int npc, const PlaneLaw &law, const LineMeasure &measure, bool bbar,
                           const double *ue, Point *x, double *sigma, double *weight_out) {
-  const int m = 2 * npc;
   if (npc == 3 || npc == 4) {
-    BMatrix b[kMaxCellPoints];
-    double weight[kMaxCellPoints];
     CellPoint q[kMaxCellPoints];
-    const int n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight, nullptr, q);
+    double s[kMaxCellPoints][4];
+    const int n = cell_point_stresses(p, npc, law, measure, bbar, ue, false, q, s);
     for (int g = 0; g < n; ++g) {
-      x[g] = q[g].x, stress_at(b[g], m, law, ue, &sigma[4 * g]);
-      if (weight_out) weight_out[g] = weight[g];
+      x[g] = q[g].x;
+      for (int k = 0; k < 4; ++k) sigma[4 * g + k] = s[g][k];
+      if (weight_out) weight_out[g] = q[g].weight;
     }
     return n;
   }
@@ -399,32 +407,22 @@ int cell_sampled_stresses(const Point *p, int npc, const PlaneLaw &law, const Li
 
 double cell_recovery_error(const Point *p, int npc, const PlaneLaw &law, const double c[16], const LineMeasure &measure,
                            bool bbar, const double *ue, const double *nodal_sigma) {
-  BMatrix b[kMaxCellPoints];
-  double weight[kMaxCellPoints];
   CellPoint q[kMaxCellPoints];
-  int n;
-  if (!bbar) {
-    n = cell_points(p, npc, measure, q, true);
-    for (int g = 0; g < n; ++g) weight[g] = q[g].weight;
-  } else {  // (B-bar: Q1 only, whose error rule is its own)
-    n = cell_b_matrices(p, npc, measure, law.n_strain, bbar, b, weight, nullptr, q);
-  }
-  const int m = 2 * npc;
+  double own[kMaxCellPoints][4];
+  const int n = cell_point_stresses(p, npc, law, measure, bbar, ue, true, q, own);
   // The components the energy sees: plane (xx, yy, xy), axisymmetric (rr, zz, rz, theta theta),
   // in nodal_sigma's slots 0..3 as in the law's strain order.
   const int k = law.n_strain;
   double error = 0;
   for (int g = 0; g < n; ++g) {
-    double own[4], recovered[4] = {0, 0, 0, 0}, d[4];
-    if (bbar) stress_at(b[g], m, law, ue, own);
-    else point_stress(q[g], npc, law, 0.0, ue, own);
+    double recovered[4] = {0, 0, 0, 0}, d[4];
     for (int a = 0; a < npc; ++a)
       for (int r = 0; r < k; ++r) recovered[r] += q[g].shape[a] * nodal_sigma[4 * a + r];
-    for (int r = 0; r < k; ++r) d[r] = recovered[r] - own[r];
+    for (int r = 0; r < k; ++r) d[r] = recovered[r] - own[g][r];
     double energy = 0;
     for (int r = 0; r < k; ++r)
       for (int s2 = 0; s2 < k; ++s2) energy += d[r] * c[4 * r + s2] * d[s2];
-    error += weight[g] * energy;
+    error += q[g].weight * energy;
   }
   return error;
 }
