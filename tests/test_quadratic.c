@@ -634,6 +634,39 @@ START_TEST(bad_quadratic_input_is_refused_clearly) {
     FAILS(mc_set_mesh(m, 1, q8.n_nodes, xy, q8.n_cells, 8, q8.cells), MC_ERROR_MESH, "inverted or folded inside");
     free(xy);
   }
+  /* a straight-sided cell (middles at their edges' midpoints) whose corner 0 is nearly flat: its
+     corner cross product 2e-10 passes the corner check (above 1e-12 of the longest side squared)
+     but its Jacobian there is below 1e-8 of the cell's mean. The corners-only check of
+     straight-sided cells must leave it to the lattice, which refuses it naming the point and
+     node, as it did before that shortcut. */
+  {
+    const double corners[4][2] = {{0, 0}, {2, 0}, {1, 1}, {-1, 1e-10}};
+    double xy8[16];
+    for (int a = 0; a < 4; ++a) {
+      const int b = (a + 1) % 4;
+      xy8[2 * a] = corners[a][0], xy8[2 * a + 1] = corners[a][1];
+      xy8[8 + 2 * a] = 0.5 * (corners[a][0] + corners[b][0]), xy8[8 + 2 * a + 1] = 0.5 * (corners[a][1] + corners[b][1]);
+    }
+    const mc_int cell8[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+    FAILS(mc_set_mesh(m, 1, 8, xy8, 1, 8, cell8), MC_ERROR_MESH,
+          "cell 0 (Q8 quadrilateral) is inverted or folded inside: its Jacobian is zero at reference point (-1, -1), "
+          "nearest its node 0 (node 0)");
+    const double tri[3][2] = {{0, 0}, {2, 0}, {-1, 1e-10}};
+    double xy6[12];
+    for (int a = 0; a < 3; ++a) {
+      const int b = (a + 1) % 3;
+      xy6[2 * a] = tri[a][0], xy6[2 * a + 1] = tri[a][1];
+      xy6[6 + 2 * a] = 0.5 * (tri[a][0] + tri[b][0]), xy6[6 + 2 * a + 1] = 0.5 * (tri[a][1] + tri[b][1]);
+    }
+    const mc_int cell6[6] = {0, 1, 2, 3, 4, 5};
+    /* a straight-sided T6's Jacobian is constant, twice its area, so the lattice's test relative
+       to the area always passes once the corners have: the sliver goes in, with the lattice as
+       without it */
+    SUCCEEDS(mc_set_mesh(m, 1, 6, xy6, 1, 6, cell6));
+    /* the same straight-sided Q8 with a sound corner goes in */
+    xy8[7] = 0.5, xy8[13] = 0.75, xy8[15] = 0.25; /* corner 3 at (-1, 0.5) and its two middles */
+    SUCCEEDS(mc_set_mesh(m, 1, 8, xy8, 1, 8, cell8));
+  }
   /* a mid-edge node shared inconsistently: cell 1 names another node as the middle of the edge it
      shares with cell 0 (cell 0's edge 1-2 is cell 1's edge 3-0) */
   {
