@@ -37,6 +37,7 @@ is that mesh's wall time (hertz_quadratic --repeat, default 1 here: read times t
 import argparse
 import json
 import os
+import statistics
 import subprocess
 import sys
 
@@ -127,7 +128,6 @@ def time_best(program, best, levels, title, rounds, repeat, out):
             if run(program, args, path, path[:-5] + ".txt"):
                 rows = [r for r in json.load(open(path)) if r["kind"] == kind and r.get("time")]
                 meshes[(label, gr, h1)] += [rows[-1]["time"]]
-    median = lambda v: sorted(v)[len(v) // 2] if len(v) % 2 else 0.5 * sum(sorted(v)[len(v) // 2 - 1:len(v) // 2 + 1])
     print("\nTimes of the best meshes (%s), timed again in one run: median of %d rounds of --repeat %d, ms "
           "[ratio to P1's DOFs, time]\n" % (title, rounds, repeat))
     labels = sorted(set(k for k, _ in best), key=lambda s: (s != "P1", s))
@@ -135,7 +135,7 @@ def time_best(program, best, levels, title, rounds, repeat, out):
     print("|---|" + "---|" * len(labels))
     for l in levels:
         ref = best.get(("P1", l))
-        t_ref = median(meshes[("P1", ref[2], ref[3]["h1"])]) if ref and meshes.get(("P1", ref[2], ref[3]["h1"])) else None
+        t_ref = statistics.median(meshes[("P1", ref[2], ref[3]["h1"])]) if ref and meshes.get(("P1", ref[2], ref[3]["h1"])) else None
         cells = []
         for label in labels:
             b = best.get((label, l))
@@ -143,9 +143,9 @@ def time_best(program, best, levels, title, rounds, repeat, out):
             if not b or not t:
                 cells.append("-")
             elif label == "P1" or not t_ref:
-                cells.append("%d, %.2f" % (b[0], 1e3 * median(t)))
+                cells.append("%d, %.2f" % (b[0], 1e3 * statistics.median(t)))
             else:
-                cells.append("%d, %.2f [%.2f, %.2f]" % (b[0], 1e3 * median(t), b[0] / ref[0], median(t) / t_ref))
+                cells.append("%d, %.2f [%.2f, %.2f]" % (b[0], 1e3 * statistics.median(t), b[0] / ref[0], statistics.median(t) / t_ref))
         print("| %g %% | %s |" % (100 * l, " | ".join(cells)))
 
 
