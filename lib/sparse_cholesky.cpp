@@ -136,7 +136,14 @@ void SparseCholesky::analyze(const SymmetricCsc &a, const std::vector<int> &inte
   // behind interface ones.
   std::vector<int> perm(a.n);
   std::vector<char> is_interface(a.n, 0);
-  for (int g : interface) is_interface[g] = 1;
+  // The list is the caller's (interface_factor reads the factor's trailing block in its order):
+  // an unknown outside the matrix or listed twice is a defect upstream, refused before CAMD sees it.
+  const int n_interface = int(interface.size());
+  for (int g : interface) {
+    if (g < 0 || g >= a.n) fail(MC_ERROR_INTERNAL, "interface unknown %d outside the %d unknowns of the analysis", g, a.n);
+    if (is_interface[g]) fail(MC_ERROR_INTERNAL, "interface unknown %d listed twice", g);
+    is_interface[g] = 1;
+  }
   if (ordering == MC_ORDERING_METIS) {
     std::vector<int> metis(a.n);
     cholmod_metis(&s, nullptr, 0, 1, metis.data(), &d.common);
@@ -145,8 +152,12 @@ void SparseCholesky::analyze(const SymmetricCsc &a, const std::vector<int> &inte
     for (int i : metis) if (!is_interface[i]) perm[k++] = i;
     for (int i : metis) if (is_interface[i]) perm[k++] = i;
   } else {
-    std::vector<int> member(a.n);
-    for (int i = 0; i < a.n; ++i) member[i] = is_interface[i];
+    // CAMD's constraint sets must lie in 0..n-1 (it indexes arrays of n by them): a body whose
+    // every unknown is on the interface (n = 1 with set 1 read past its arrays: a fuzz finding,
+    // docs/robustness.md) needs no constraint, so all go in set 0.
+    std::vector<int> member(a.n, 0);
+    if (n_interface < a.n)
+      for (int i = 0; i < a.n; ++i) member[i] = is_interface[i];
     cholmod_camd(&s, nullptr, 0, member.data(), perm.data(), &d.common);
     d.check("CAMD ordering");
   }
@@ -156,9 +167,9 @@ void SparseCholesky::analyze(const SymmetricCsc &a, const std::vector<int> &inte
   d.factor = cholmod_analyze_p(&s, perm.data(), nullptr, 0, &d.common);
   d.check("analyze");
   const int *final_perm = static_cast<const int *>(d.factor->Perm);
-  for (int k = a.n - int(interface.size()); k < a.n; ++k)
+  for (int k = a.n - n_interface; k < a.n; ++k)
     if (!is_interface[final_perm[k]])
-      fail(MC_ERROR_INTERNAL, "the ordering did not keep the %zu interface unknowns last", interface.size());
+      fail(MC_ERROR_INTERNAL, "the ordering did not keep the %d interface unknowns last", n_interface);
 }
 
 bool SparseCholesky::analyzed() const { return analyzed_; }

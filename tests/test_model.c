@@ -595,6 +595,49 @@ START_TEST(test_scene_changes) {
 }
 END_TEST
 
+/* A body whose only unknown lies on its contact surface: every unknown of its analysis is an
+   interface unknown. The condensed path's constrained ordering (CAMD) once read past its arrays
+   here (a fuzz finding: a constraint set outside 0..n-1 for n = 1). Body 2, the unit square
+   under body 1, is held at three corners; its top-left corner moves in y only. Both paths must
+   solve it alike, and body 2's supports must carry the whole load on body 1. */
+START_TEST(test_body_with_every_unknown_on_the_interface) {
+  const double xy1[] = {0, 0, 1, 0, 1, 1, 0, 1}, xy2[] = {0, -1, 1, -1, 1, 0, 0, 0}, p = 0.1;
+  const mc_int tri[] = {0, 1, 2, 0, 2, 3}, left[] = {0, 3}, bottom[] = {0, 1}, top[] = {2, 3};
+  const mc_int held[] = {0, 1, 2}, corner[] = {3};
+  double u[2][2][8], r[8];
+  for (int path = 0; path < 2; ++path) {
+    mc_model *m;
+    int64_t solver = 0;
+    OK(mc_create(&m));
+    OK(mc_set_mesh(m, 1, 4, xy1, 2, 3, tri));
+    OK(mc_set_mesh(m, 2, 4, xy2, 2, 3, tri));
+    for (int b = 1; b <= 2; ++b) OK(mc_set_material(m, b, 1.0, 0.3));
+    OK(mc_fix(m, 1, 2, left, MC_X, NULL));
+    OK(mc_fix(m, 2, 3, held, MC_XY, NULL));
+    OK(mc_fix(m, 2, 1, corner, MC_X, NULL));
+    OK(mc_add_pressure(m, 1, 1, top, &p));
+    OK(mc_set_contact(m, 1, 1, bottom));
+    OK(mc_set_contact(m, 2, 1, top));
+    OK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, path ? MC_INTERFACE_SPARSE : MC_INTERFACE_CONDENSED));
+    OK(mc_solve(m));
+    OK(mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &solver));
+    ck_assert_int_eq(solver, path ? MC_INTERFACE_SPARSE : MC_INTERFACE_CONDENSED);
+    OK(mc_get_displacement(m, 1, u[path][0]));
+    OK(mc_get_displacement(m, 2, u[path][1]));
+    OK(mc_get_reaction(m, 2, r));
+    double ry = 0;
+    for (int k = 0; k < 4; ++k) ry += r[2 * k + 1];
+    ck_assert_msg(fabs(fabs(ry) - p) < 1e-12, "body 2's supports carry %.17g of the load %g", fabs(ry), p);
+    ck_assert_msg(u[path][1][7] < 0, "the free corner of body 2 moves down (u_y = %g)", u[path][1][7]);
+    mc_destroy(m);
+  }
+  for (int b = 0; b < 2; ++b)
+    for (int k = 0; k < 8; ++k)
+      ck_assert_msg(fabs(u[0][b][k] - u[1][b][k]) < 1e-12, "body %d, entry %d: condensed %.17g, sparse %.17g", b + 1,
+                    k, u[0][b][k], u[1][b][k]);
+}
+END_TEST
+
 static Suite *model_suite(void) {
   Suite *s = suite_create("model");
   TCase *tc = tcase_create("lifecycle");
@@ -616,6 +659,9 @@ static Suite *model_suite(void) {
   tcase_add_loop_test(tc, test_output_sizes, 0, 2);
   tcase_add_test(tc, test_call_semantics);
   tcase_add_loop_test(tc, test_scene_changes, 0, 2);
+  suite_add_tcase(s, tc);
+  tc = tcase_create("analysis");
+  tcase_add_test(tc, test_body_with_every_unknown_on_the_interface);
   suite_add_tcase(s, tc);
   return s;
 }

@@ -39,22 +39,9 @@
 
 #include "mortarcontact.h"
 
-/* Entry points other work may add later: called only when the library defines them. */
-#pragma weak mc_set_gap_offset
-#pragma weak mc_set_log_callback
-#pragma weak mc_write_vtu
-#pragma weak mc_get_nodal_stress
-#pragma weak mc_get_error_indicator
-#pragma weak mc_set_host_body
-#pragma weak mc_add_stiffness
-#pragma weak mc_add_element_matrices
-#pragma weak mc_set_load_vector
-#pragma weak mc_get_equation_solution
-#pragma weak mc_get_contact_load
-#pragma weak mc_set_contact_curved
 
 /* Counters for the replay driver (how far the corpus reaches); not used by the library. */
-long fuzz_api_solves_ok = 0, fuzz_api_contact_solves_ok = 0;
+long fuzz_api_solves_ok = 0, fuzz_api_contact_solves_ok = 0, fuzz_api_host_solves_ok = 0;
 
 enum {
   MAX_OPS = 128,
@@ -150,11 +137,17 @@ static void check_message(const char *msg, const char *call) {
   if (len > 4096) fuzz_fail("mc_errmsg is implausibly long", call);
 }
 
-static mc_status checked(mc_model *m, mc_status st, const char *call) {
-  static int trace = -1; /* FUZZ_API_TRACE=1 prints every call (for writing seeds) */
-  const char *msg = mc_errmsg(m);
+/* FUZZ_API_TRACE=1 prints every operation (its opcode and where its bytes start) and every
+   call with its status (for writing seeds, and for comparing two builds' replays). */
+static int tracing(void) {
+  static int trace = -1;
   if (trace < 0) trace = getenv("FUZZ_API_TRACE") != NULL;
-  if (trace) fprintf(stderr, "%-60.60s %-22s %s\n", call, mc_status_string(st), msg ? msg : "(null)");
+  return trace;
+}
+
+static mc_status checked(mc_model *m, mc_status st, const char *call) {
+  const char *msg = mc_errmsg(m);
+  if (tracing()) fprintf(stderr, "%-60.60s %-22s %s\n", call, mc_status_string(st), msg ? msg : "(null)");
   if ((int)st < (int)MC_OK || (int)st > (int)MC_ERROR_INTERNAL) fuzz_fail("status out of range", call);
   check_message(msg, call);
   if (strcmp(mc_status_string(st), "unknown status") == 0) fuzz_fail("no name for a status", call);
@@ -236,8 +229,8 @@ static void query_all(harness *h) {
     double *eta = exact(cells, sizeof(double));
     mc_status su = CALL(mc_get_displacement(m, body, u));
     CALL(mc_get_stress(m, body, sigma));
-    if (mc_get_nodal_stress) CALL(mc_get_nodal_stress(m, body, sigma_n));
-    if (mc_get_error_indicator && CALL(mc_get_error_indicator(m, body, eta)) == MC_OK && !(b && b->meshed && !b->host))
+    CALL(mc_get_nodal_stress(m, body, sigma_n));
+    if (CALL(mc_get_error_indicator(m, body, eta)) == MC_OK && !(b && b->meshed && !b->host))
       fuzz_fail("error indicators of a body without cells", "mc_get_error_indicator");
     CALL(mc_get_reaction(m, body, r));
     if (su == MC_OK && !(b && b->meshed)) fuzz_fail("displacements of a body without a mesh", "mc_get_displacement");
@@ -246,9 +239,9 @@ static void query_all(harness *h) {
       /* equation vectors: n_equations of a host body, 2 per node of a mesh body */
       size_t n_eq = b && b->meshed ? (b->host ? (size_t)b->n_equations : 2 * (size_t)b->n_nodes) : 0;
       double *ue = exact(n_eq, sizeof(double)), *re = exact(n_eq, sizeof(double));
-      if (mc_get_equation_solution && CALL(mc_get_equation_solution(m, body, ue)) == MC_OK && !(b && b->meshed))
+      if (CALL(mc_get_equation_solution(m, body, ue)) == MC_OK && !(b && b->meshed))
         fuzz_fail("equation solution of a body without a mesh", "mc_get_equation_solution");
-      if (mc_get_contact_load) CALL(mc_get_contact_load(m, body, re));
+      CALL(mc_get_contact_load(m, body, re));
       free(ue), free(re);
     }
   }
@@ -305,8 +298,8 @@ static void null_calls(harness *h) {
   CALL(mc_get_info_real(m, MC_INFO_STRAIN_ENERGY, &rv));
   CALL(mc_get_displacement(m, 1, v));
   CALL(mc_get_stress(m, 1, v));
-  if (mc_get_nodal_stress) CALL(mc_get_nodal_stress(m, 1, v));
-  if (mc_get_error_indicator) CALL(mc_get_error_indicator(m, 1, v));
+  CALL(mc_get_nodal_stress(m, 1, v));
+  CALL(mc_get_error_indicator(m, 1, v));
   CALL(mc_get_reaction(m, 1, v));
   CALL(mc_get_contact_count(m, &id));
   CALL(mc_get_contact_nodes(m, &id));
@@ -315,19 +308,19 @@ static void null_calls(harness *h) {
   CALL(mc_get_contact_gap(m, v));
   CALL(mc_get_contact_initial_gap(m, v));
   CALL(mc_get_contact_normal(m, v));
-  if (mc_set_gap_offset) CALL(mc_set_gap_offset(m, 1, &id, v));
-  if (mc_set_log_callback) CALL(mc_set_log_callback(m, NULL, NULL));
-  if (mc_write_vtu) CALL(mc_write_vtu(m, "/dev/null"));
+  CALL(mc_set_gap_offset(m, 1, &id, v));
+  CALL(mc_set_log_callback(m, NULL, NULL));
+  CALL(mc_write_vtu(m, "/dev/null"));
   {
     mc_int eq2[2] = {0, 1}, ptr[2] = {0, 2}, edge3[3] = {0, 1, 2};
     double k4[4] = {1, 0, 0, 1};
-    if (mc_set_host_body) CALL(mc_set_host_body(m, 1, 1, v, eq2, 2));
-    if (mc_add_stiffness) CALL(mc_add_stiffness(m, 1, 2, eq2, eq2, v, MC_MATRIX_FULL));
-    if (mc_add_element_matrices) CALL(mc_add_element_matrices(m, 1, 1, ptr, eq2, k4));
-    if (mc_set_load_vector) CALL(mc_set_load_vector(m, 1, 2, v));
-    if (mc_get_equation_solution) CALL(mc_get_equation_solution(m, 1, v));
-    if (mc_get_contact_load) CALL(mc_get_contact_load(m, 1, v));
-    if (mc_set_contact_curved) CALL(mc_set_contact_curved(m, 1, 1, edge3));
+    CALL(mc_set_host_body(m, 1, 1, v, eq2, 2));
+    CALL(mc_add_stiffness(m, 1, 2, eq2, eq2, v, MC_MATRIX_FULL));
+    CALL(mc_add_element_matrices(m, 1, 1, ptr, eq2, k4));
+    CALL(mc_set_load_vector(m, 1, 2, v));
+    CALL(mc_get_equation_solution(m, 1, v));
+    CALL(mc_get_contact_load(m, 1, v));
+    CALL(mc_set_contact_curved(m, 1, 1, edge3));
   }
   /* NULL outputs on a real model */
   m = h->m;
@@ -335,8 +328,8 @@ static void null_calls(harness *h) {
   CALL(mc_get_info_real(m, MC_INFO_STRAIN_ENERGY, NULL));
   CALL(mc_get_displacement(m, 1, NULL));
   CALL(mc_get_stress(m, 2, NULL));
-  if (mc_get_nodal_stress) CALL(mc_get_nodal_stress(m, 2, NULL));
-  if (mc_get_error_indicator) {
+  CALL(mc_get_nodal_stress(m, 2, NULL));
+  {
     CALL(mc_get_error_indicator(m, 1, NULL));
     CALL(mc_get_error_indicator(m, 2, NULL));
   }
@@ -348,9 +341,9 @@ static void null_calls(harness *h) {
   CALL(mc_get_contact_gap(m, NULL));
   CALL(mc_get_contact_initial_gap(m, NULL));
   CALL(mc_get_contact_normal(m, NULL));
-  if (mc_write_vtu) CALL(mc_write_vtu(m, NULL));
-  if (mc_get_equation_solution) CALL(mc_get_equation_solution(m, 1, NULL));
-  if (mc_get_contact_load) CALL(mc_get_contact_load(m, 2, NULL));
+  CALL(mc_write_vtu(m, NULL));
+  CALL(mc_get_equation_solution(m, 1, NULL));
+  CALL(mc_get_contact_load(m, 2, NULL));
 }
 
 /* ---- operations ---------------------------------------------------------------------- */
@@ -451,8 +444,9 @@ static void op_grid_mesh(harness *h, stream *s) {
       }
     }
   for (k = 0; k < npc * n_cells; ++k) cells[k] = id[cells[k]] + h->base;
-  if (corrupt == 1) {
-    xy[read_u8(s) % (2 * n_nodes)] = read_real(s);
+  if (corrupt == 1) { /* the position first, then the value: one order whatever the compiler */
+    const int where = read_u8(s) % (2 * n_nodes);
+    xy[where] = read_real(s);
   } else if (corrupt == 2) {
     int where = read_u8(s) % (npc * n_cells);
     cells[where] = plus_base(read_id(s), h->base);
@@ -646,7 +640,7 @@ static void op_gap_offset(harness *h, stream *s) {
   double offset[MAX_RAW];
   for (k = 0; k < n; ++k) nodes[k] = plus_base(read_id(s), h->base);
   for (k = 0; k < n; ++k) offset[k] = read_real(s);
-  if (mc_set_gap_offset) CALL(mc_set_gap_offset(m, n, n > 0 ? nodes : NULL, n > 0 ? offset : NULL));
+  CALL(mc_set_gap_offset(m, n, n > 0 ? nodes : NULL, n > 0 ? offset : NULL));
 }
 
 static void op_write_vtu(harness *h, stream *s) {
@@ -654,7 +648,7 @@ static void op_write_vtu(harness *h, stream *s) {
   /* never a .pvd here: it would write files next to the path */
   static const char *paths[3] = {"/dev/null", "/nonexistent-mortarcontact-dir/out.vtu", ""};
   int which = read_u8(s) % 3;
-  if (mc_write_vtu) CALL(mc_write_vtu(m, paths[which]));
+  CALL(mc_write_vtu(m, paths[which]));
 }
 
 /* ---- host bodies --------------------------------------------------------------------- */
@@ -706,15 +700,20 @@ static void op_host_body(harness *h, stream *s) {
   /* 1 two freedoms share an equation, 2 an equation number read, 3 n_equations read,
      4 NULL xy, 5 NULL equations, 6 a coordinate read, 7 one more equation than the nodes name */
   if (corrupt == 1 && n_eq > 1) call_eq[read_u8(s) % (2 * n)] = h->base;
-  else if (corrupt == 2) call_eq[read_u8(s) % (2 * n)] = plus_base(read_id(s), h->base);
+  else if (corrupt == 2) { /* the position first, then the value (see op_grid_mesh) */
+    const int where = read_u8(s) % (2 * n);
+    call_eq[where] = plus_base(read_id(s), h->base);
+  }
   else if (corrupt == 3) { /* bounded: the harness sizes equation vectors from it */
     n_equations = read_id(s);
     if (n_equations > n_eq + 1000) n_equations = n_eq + 1000;
   }
-  else if (corrupt == 6) xy[read_u8(s) % (2 * n)] = read_real(s);
+  else if (corrupt == 6) {
+    const int where = read_u8(s) % (2 * n);
+    xy[where] = read_real(s);
+  }
   else if (corrupt == 7) n_equations++;
-  if (mc_set_host_body &&
-      CALL(mc_set_host_body(m, body, n, corrupt == 4 ? NULL : xy, corrupt == 5 ? NULL : call_eq, n_equations)) == MC_OK) {
+  if (CALL(mc_set_host_body(m, body, n, corrupt == 4 ? NULL : xy, corrupt == 5 ? NULL : call_eq, n_equations)) == MC_OK) {
     body_state *b = tracked(h, body);
     memset(b, 0, sizeof *b);
     b->meshed = 1, b->host = 1, b->n_nodes = n, b->n_cells = 0, b->n_equations = n_equations, b->grid = 1;
@@ -811,9 +810,8 @@ static void op_host_stiffness(harness *h, stream *s) {
     else if (corrupt == 3 && n > 0) values[at] += 1;
     else if (corrupt == 4) count = -1;
     else if (corrupt == 6 && n > 0) values[at] = INFINITY;
-    if (mc_add_stiffness)
-      CALL(mc_add_stiffness(m, body, count, corrupt == 5 ? NULL : rows, cols, values,
-                            mode == 0 ? MC_MATRIX_FULL : MC_MATRIX_TRIANGLE));
+    CALL(mc_add_stiffness(m, body, count, corrupt == 5 ? NULL : rows, cols, values,
+                          mode == 0 ? MC_MATRIX_FULL : MC_MATRIX_TRIANGLE));
   } else {
     mc_int count = (mc_int)n_elements;
     if (corrupt == 1) a_elt[at % (36 * n_elements)] = read_real(s);
@@ -821,8 +819,7 @@ static void op_host_stiffness(harness *h, stream *s) {
     else if (corrupt == 3) a_elt[at % (36 * n_elements)] += 1;
     else if (corrupt == 4) count = -1;
     else if (corrupt == 6) a_elt[at % (36 * n_elements)] = NAN;
-    if (mc_add_element_matrices)
-      CALL(mc_add_element_matrices(m, body, count, eltptr, corrupt == 5 ? NULL : eltvar, a_elt));
+    CALL(mc_add_element_matrices(m, body, count, eltptr, corrupt == 5 ? NULL : eltvar, a_elt));
   }
   free(rows), free(cols), free(values), free(eltptr), free(eltvar), free(a_elt);
 }
@@ -837,9 +834,8 @@ static void op_stiffness_raw(harness *h, stream *s) {
   for (k = 0; k < n; ++k) values[k] = read_real(s);
   storage = read_u8(s) % 4; /* 0 and 3: not a storage */
   nulls = read_u8(s) % 8;
-  if (mc_add_stiffness)
-    CALL(mc_add_stiffness(m, body, n, nulls == 1 || n <= 0 ? NULL : rows, nulls == 2 || n <= 0 ? NULL : cols,
-                          nulls == 3 || n <= 0 ? NULL : values, storage));
+  CALL(mc_add_stiffness(m, body, n, nulls == 1 || n <= 0 ? NULL : rows, nulls == 2 || n <= 0 ? NULL : cols,
+                        nulls == 3 || n <= 0 ? NULL : values, storage));
 }
 
 /* Element matrices from the stream. The arrays are exactly as long as eltptr says; a corrupted
@@ -869,8 +865,7 @@ static void op_elements_raw(harness *h, stream *s) {
   /* exactly sized heap copies: ASan sees a read past them */
   var = exact((size_t)n_var, sizeof(mc_int)), a = exact(n_values, sizeof(double));
   memcpy(var, eltvar, (size_t)n_var * sizeof(mc_int)), memcpy(a, a_elt, n_values * sizeof(double));
-  if (mc_add_element_matrices)
-    CALL(mc_add_element_matrices(m, body, n_elements, corrupt == 3 ? NULL : eltptr, corrupt == 3 ? NULL : var, a));
+  CALL(mc_add_element_matrices(m, body, n_elements, corrupt == 3 ? NULL : eltptr, corrupt == 3 ? NULL : var, a));
   free(var), free(a);
 }
 
@@ -891,7 +886,7 @@ static void op_load_vector(harness *h, stream *s) {
   if (kind != 1 && b && b->host) /* fx, fy on each node's x and y equations */
     for (k = 0; k < 2 * b->n_nodes; ++k)
       if (b->eq[k] >= 0 && b->eq[k] < n) f[b->eq[k]] += k % 2 ? fy : fx;
-  if (mc_set_load_vector) CALL(mc_set_load_vector(m, body, n, kind == 2 ? NULL : f));
+  CALL(mc_set_load_vector(m, body, n, kind == 2 ? NULL : f));
   free(f);
 }
 
@@ -918,14 +913,15 @@ static void op_contact_curved(harness *h, stream *s) {
       edges[3 * k + 2] = (mode == 1 ? a : mid) + h->base;
     }
   }
-  if (mc_set_contact_curved) CALL(mc_set_contact_curved(m, body, n, n > 0 ? edges : NULL));
+  CALL(mc_set_contact_curved(m, body, n, n > 0 ? edges : NULL));
 }
 
-static void run(harness *h, stream *s) {
+static void run(harness *h, stream *s, size_t size) {
   int ops = 0;
   while (s->n > 0 && ops++ < MAX_OPS) {
     mc_model *m = h->m;
     uint8_t op = read_u8(s) % OP_COUNT;
+    if (tracing()) fprintf(stderr, "-- op %d at byte %zu\n", (int)op, size - s->n - 1);
     switch (op) {
       case OP_NEW_MODEL: reset_model(h); break;
       case OP_INDEX_BASE: {
@@ -974,6 +970,7 @@ static void run(harness *h, stream *s) {
             mc_int n;
             fuzz_api_solves_ok++;
             if (mc_get_contact_count(m, &n) == MC_OK) fuzz_api_contact_solves_ok++;
+            if (h->body[0].host || h->body[1].host) fuzz_api_host_solves_ok++;
           }
           query_all(h);
         }
@@ -983,7 +980,7 @@ static void run(harness *h, stream *s) {
       case OP_LOG:
       {
         int on = read_u8(s) & 1; /* operands are read even when the call is skipped */
-        if (mc_set_log_callback) CALL(mc_set_log_callback(m, on ? log_callback : NULL, on ? (void *)h : NULL));
+        CALL(mc_set_log_callback(m, on ? log_callback : NULL, on ? (void *)h : NULL));
         break;
       }
       case OP_WRITE_VTU: op_write_vtu(h, s); break;
@@ -1006,7 +1003,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   memset(&h, 0, sizeof h);
   s.p = data, s.n = size;
   reset_model(&h);
-  run(&h, &s);
+  run(&h, &s, size);
   mc_destroy(h.m);
   return 0;
 }

@@ -269,6 +269,14 @@ SEEDS = {
     + contact_side(1, BOTTOM) + contact_side(2, TOP) + solve()
     + material(1, 1.7976931348623157e308, 0.3) + solve() + material(1, 1.0, 0.3)
     + op("PLANE") + u8(0) + real(1e300) + solve(),
+    # A fuzz finding (docs/robustness.md): body 2's only unknown (its top-left corner's u_y) is on
+    # its contact surface, so every unknown of its condensed-path analysis is an interface one;
+    # CAMD read past its arrays there. Both paths, then a re-solve.
+    "camd_every_unknown_on_interface": grid(1, 3, 1, 1, 0, 0, 1, 1) + grid(2, 3, 1, 1, 0, -1, 1, 1)
+    + material(1, 1.0, 0.3) + material(2, 1.0, 0.3) + fix_side(1, LEFT, 1)
+    + fix_raw(2, [0, 1, 3], 3) + fix_raw(2, [2], 1) + pressure_side(1, TOP, 0.125)
+    + contact_side(1, BOTTOM) + contact_side(2, TOP) + option_int(11, 1) + solve()
+    + option_int(11, 2) + solve() + option_int(11, 0) + solve(),
 }
 
 

@@ -3,9 +3,12 @@
  * without libFuzzer: the ctest fuzz_corpus_replay, so that the seed corpus runs in every
  * build (plain, ASan/UBSan, valgrind). Any contract violation aborts inside the target.
  *
- * Usage: fuzz_corpus_replay [--min-solves N] [--min-contact-solves N] FILE...
- * Prints how many solves succeeded (with contact) and fails if fewer than asked: this checks
- * that the corpus still reaches the solver (e.g. after an encoding change of fuzz_api.c).
+ * Usage: fuzz_corpus_replay [--min-solves N] [--min-contact-solves N] [--min-host-solves N] FILE...
+ * Prints how many solves succeeded (with contact, with a host body) and fails if fewer than
+ * asked: this checks that the corpus still reaches the solver (e.g. after an encoding change of
+ * fuzz_api.c) and every kind of body. The fuzz build links the library statically, the plain
+ * builds dynamically: tests/fuzz/CMakeLists.txt builds this driver with the fuzz build's flags
+ * and link too (fuzz_replay), so that both see the same scenes from the same bytes.
  */
 #include <stdint.h>
 #include <stdio.h>
@@ -13,10 +16,10 @@
 #include <string.h>
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
-extern long fuzz_api_solves_ok, fuzz_api_contact_solves_ok;
+extern long fuzz_api_solves_ok, fuzz_api_contact_solves_ok, fuzz_api_host_solves_ok;
 
 int main(int argc, char **argv) {
-  long min_solves = 0, min_contact = 0;
+  long min_solves = 0, min_contact = 0, min_host = 0;
   int k, files = 0;
   for (k = 1; k < argc; ++k) {
     FILE *f;
@@ -28,6 +31,10 @@ int main(int argc, char **argv) {
     }
     if (strcmp(argv[k], "--min-contact-solves") == 0 && k + 1 < argc) {
       min_contact = atol(argv[++k]);
+      continue;
+    }
+    if (strcmp(argv[k], "--min-host-solves") == 0 && k + 1 < argc) {
+      min_host = atol(argv[++k]);
       continue;
     }
     f = fopen(argv[k], "rb");
@@ -50,10 +57,11 @@ int main(int argc, char **argv) {
     free(data);
     files++;
   }
-  printf("replayed %d inputs: %ld successful solves, %ld of them with contact\n", files, fuzz_api_solves_ok,
-         fuzz_api_contact_solves_ok);
-  if (fuzz_api_solves_ok < min_solves || fuzz_api_contact_solves_ok < min_contact) {
-    printf("FAILED: expected at least %ld successful solves and %ld with contact\n", min_solves, min_contact);
+  printf("replayed %d inputs: %ld successful solves, %ld of them with contact, %ld with a host body\n", files,
+         fuzz_api_solves_ok, fuzz_api_contact_solves_ok, fuzz_api_host_solves_ok);
+  if (fuzz_api_solves_ok < min_solves || fuzz_api_contact_solves_ok < min_contact || fuzz_api_host_solves_ok < min_host) {
+    printf("FAILED: expected at least %ld successful solves, %ld with contact and %ld with a host body\n", min_solves,
+           min_contact, min_host);
     return 1;
   }
   return 0;
