@@ -80,7 +80,10 @@ case "$mode" in
     fuzz=${MC_FUZZ_DIR:-build-fuzz}
     cmake -S . -B "$fuzz" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DMC_BUILD_FUZZ=ON -DMC_BUILD_TESTS=OFF -DMC_BUILD_EXAMPLES=OFF -DMC_BUILD_BENCH=OFF >/dev/null
-    cmake --build "$fuzz" -j"$(nproc)" --target fuzz_api
+    cmake --build "$fuzz" -j"$(nproc)" --target fuzz_api fuzz_replay
+    # First the corpus replayed with the fuzz build's own flags and static link (fuzz_replay): the
+    # same scenes as the plain builds' fuzz_corpus_replay, host bodies included.
+    "$fuzz/tests/fuzz/fuzz_replay" --min-solves 20 --min-contact-solves 12 --min-host-solves 6 tests/fuzz/corpus/*
     mkdir -p "$fuzz/fuzz-work"
     if ! "$fuzz/tests/fuzz/fuzz_api" -max_total_time="${MC_FUZZ_SECONDS:-60}" -timeout=10 -rss_limit_mb=2048 \
          -print_final_stats=1 -artifact_prefix="$fuzz/" "$fuzz/fuzz-work" tests/fuzz/corpus >"$fuzz/fuzz.log" 2>&1; then
