@@ -21,8 +21,8 @@ void require_radii(const mc::Mesh &mesh, int body, int base, const char *what) {
   const int i = mc::first_node_left_of_axis(mesh);
   if (i >= 0)
     fail(MC_ERROR_MESH,
-         "xy[%d] = %g (node %d of body %d): a radius must be >= 0, and %s is axisymmetric (x = r, the axis x = 0)",
-         2 * i, mesh.node(i).x, i + base, body, what);
+         "%s = %g (node %d of body %d): a radius must be >= 0, and %s is axisymmetric (x = r, the axis x = 0)",
+         mc::array_position("xy", 2 * size_t(i), base).c_str(), mesh.node(i).x, i + base, body, what);
 }
 
 // Edges for loads: boundary edges, returned oriented as their cells.
@@ -34,8 +34,8 @@ std::vector<mc::SurfaceSegment> load_edges(const mc::Model &model, const mc::Mes
     const mc::BoundaryEdge *edge = mesh.boundary_edge(a, b);
     char hint[160];
     if (!edge)
-      fail(MC_ERROR_MESH, "edges[%d..%d] = (%d, %d) is not an edge on the boundary of the mesh%s", 2 * int(e),
-           2 * int(e) + 1, int(edges[2 * e]), int(edges[2 * e + 1]), mesh.edge_hint(a, b, model.index_base, hint, 160));
+      fail(MC_ERROR_MESH, "%s = (%d, %d) is not an edge on the boundary of the mesh%s",
+           mc::array_range("edges", 2 * size_t(e), 2 * size_t(e) + 1, model.index_base).c_str(), int(edges[2 * e]), int(edges[2 * e + 1]), mesh.edge_hint(a, b, model.index_base, hint, 160));
     out.push_back({edge->from, edge->to});
   }
   return out;
@@ -63,9 +63,9 @@ void require_finite_results(mc::Model &model) {
   auto overflow = [&](const char *what, size_t i, int body, double v) {
     model.solved = false;
     fail(MC_ERROR_ARGUMENT,
-         "the solution overflows: %s[%zu] of body %d is %g; the scene's numbers (Young's moduli, thickness, "
+         "the solution overflows: %s of body %d is %g; the scene's numbers (Young's moduli, thickness, "
          "loads, prescribed values) are beyond what double precision can solve: rescale the units",
-         what, i, body, v);
+         mc::array_position(what, i, model.index_base).c_str(), body, v);
   };
   for (int b = 0; b < 2; ++b) {
     const mc::Body &body = model.body[b];
@@ -175,8 +175,8 @@ mc_status mc_set_mesh(mc_model *m, int body, mc_int n_nodes, const double *xy, m
     for (size_t k = 0; k < local.size(); ++k) {
       const long long id = (long long)cells[k] - model.index_base;  // no int overflow for INT_MIN
       if (id < 0 || id >= n_nodes)
-        fail(MC_ERROR_ARGUMENT, "cells[%zu] = %d (cell %zu): node id out of range [%d, %d)", k, int(cells[k]),
-             k / nodes_per_cell + model.index_base, model.index_base, int(n_nodes) + model.index_base);
+        fail(MC_ERROR_ARGUMENT, "%s = %d (cell %zu): node id out of range [%d, %d)",
+             mc::array_position("cells", k, model.index_base).c_str(), int(cells[k]), k / nodes_per_cell + model.index_base, model.index_base, int(n_nodes) + model.index_base);
       local[k] = int(id);
     }
     mc::Body fresh;
@@ -209,11 +209,11 @@ mc_status mc_set_cell_elasticity(mc_model *m, int body, const double *d) {
     mc::Body &b = cell_body(model, body, "mc_set_cell_elasticity", "its stiffness is the host's own (mc_add_stiffness)");
     require_pointer(d, "d");
     const size_t n = 9 * size_t(b.mesh.n_cells());
-    require_finite(d, n, "d");
+    require_finite(d, n, "d", model.index_base);
     for (int c = 0; c < b.mesh.n_cells(); ++c)
       if (!symmetric_positive_definite(d + 9 * size_t(c)))
-        fail(MC_ERROR_MATERIAL, "d[%d..%d] (cell %d of body %d): the elasticity matrix must be symmetric positive definite",
-             9 * c, 9 * c + 8, c + model.index_base, body);
+        fail(MC_ERROR_MATERIAL, "%s (cell %d of body %d): the elasticity matrix must be symmetric positive definite",
+             mc::array_range("d", 9 * size_t(c), 9 * size_t(c) + 8, model.index_base).c_str(), c + model.index_base, body);
     b.cell_elasticity.assign(d, d + n);
     b.has_material = true;
     model.structure_changed();
@@ -231,7 +231,7 @@ mc_status mc_fix(mc_model *m, int body, mc_int n, const mc_int *nodes, int compo
     if (values)  // only the components in the mask: the others are ignored (header)
       for (size_t k = 0; k < 2 * size_t(n); ++k)
         if ((components & (1 << (k % 2))) && !std::isfinite(values[k]))
-          fail(MC_ERROR_ARGUMENT, "values[%zu] is not finite", k);
+          fail(MC_ERROR_ARGUMENT, "%s is not finite", mc::array_position("values", k, model.index_base).c_str());
     std::vector<int> local(n);
     for (mc_int i = 0; i < n; ++i) local[i] = node_id(model, b.mesh, nodes[i], "nodes", size_t(i));
     bool new_support = false;
@@ -253,7 +253,7 @@ mc_status mc_add_traction(mc_model *m, int body, mc_int n_edges, const mc_int *e
     mc::Body &b = cell_body(model, body, "mc_add_traction", "its loads are the host's load vector (mc_set_load_vector)");
     require_count(n_edges, "n_edges");
     if (n_edges > 0) require_pointer(edges, "edges"), require_pointer(traction, "traction");
-    if (n_edges > 0) require_finite(traction, 2 * size_t(n_edges), "traction");
+    if (n_edges > 0) require_finite(traction, 2 * size_t(n_edges), "traction", model.index_base);
     std::vector<mc::SurfaceSegment> oriented = load_edges(model, b.mesh, n_edges, edges);
     for (mc_int e = 0; e < n_edges; ++e)
       b.edge_loads.push_back({oriented[e].a, oriented[e].b, traction[2 * e], traction[2 * e + 1], false});
@@ -266,7 +266,7 @@ mc_status mc_add_pressure(mc_model *m, int body, mc_int n_edges, const mc_int *e
     mc::Body &b = cell_body(model, body, "mc_add_pressure", "its loads are the host's load vector (mc_set_load_vector)");
     require_count(n_edges, "n_edges");
     if (n_edges > 0) require_pointer(edges, "edges"), require_pointer(pressure, "pressure");
-    if (n_edges > 0) require_finite(pressure, size_t(n_edges), "pressure");
+    if (n_edges > 0) require_finite(pressure, size_t(n_edges), "pressure", model.index_base);
     std::vector<mc::SurfaceSegment> oriented = load_edges(model, b.mesh, n_edges, edges);
     for (mc_int e = 0; e < n_edges; ++e) b.edge_loads.push_back({oriented[e].a, oriented[e].b, pressure[e], 0, true});
     model.values_changed();
@@ -278,7 +278,7 @@ mc_status mc_add_nodal_force(mc_model *m, int body, mc_int n, const mc_int *node
     mc::Body &b = meshed_body(model, body);
     require_count(n, "n");
     if (n > 0) require_pointer(nodes, "nodes"), require_pointer(force, "force");
-    if (n > 0) require_finite(force, 2 * size_t(n), "force");
+    if (n > 0) require_finite(force, 2 * size_t(n), "force", model.index_base);
     std::vector<int> local(n);
     for (mc_int i = 0; i < n; ++i) local[i] = node_id(model, b.mesh, nodes[i], "nodes", size_t(i));
     for (mc_int i = 0; i < n; ++i)

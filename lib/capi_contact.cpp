@@ -2,6 +2,7 @@
 // middles), the host's gap offsets, and the results at body 1's contact positions.
 #include "capi_support.hpp"
 #include "contact_geometry.hpp"
+#include "host_contact_edges.hpp"
 #include "plane_vectors.hpp"
 #include <algorithm>
 #include <cstdio>
@@ -14,32 +15,50 @@ namespace {
 // Consecutive contact edges turning by more than this fold back on themselves (mc_set_contact).
 constexpr double kFoldAngleDegrees = 175;
 
-// "edges[6..7] = (4, 5)" (or with three ids for a curved edge): edge e as the caller gave it.
-std::string edge_text(const mc_int *edges, int per_edge, size_t e) {
-  char text[128];
+// "edges[6..7] = (4, 5)" in base 0, "edges(7:8) = (4, 5)" in base 1 (or with three ids for a
+// curved edge): edge e as the caller gave it, its position in the model's index base.
+std::string edge_text(const mc_int *edges, int per_edge, size_t e, int base) {
+  char text[160];
   const mc_int *v = edges + per_edge * e;
+  const std::string where = mc::array_range("edges", per_edge * e, per_edge * e + per_edge - 1, base);
   if (per_edge == 2)
-    std::snprintf(text, sizeof text, "edges[%zu..%zu] = (%d, %d)", 2 * e, 2 * e + 1, int(v[0]), int(v[1]));
+    std::snprintf(text, sizeof text, "%s = (%d, %d)", where.c_str(), int(v[0]), int(v[1]));
   else
-    std::snprintf(text, sizeof text, "edges[%zu..%zu] = (%d, %d, %d)", 3 * e, 3 * e + 2, int(v[0]), int(v[1]), int(v[2]));
+    std::snprintf(text, sizeof text, "%s = (%d, %d, %d)", where.c_str(), int(v[0]), int(v[1]), int(v[2]));
   return text;
 }
 
-// A host body's contact edges as given (ids 0-based; mids may be null): oriented by the host with
-// the body on their left. Every node needs an equation in x or y.
-std::vector<mc::SurfaceSegment> host_surface(const mc::Model &model, int body, const int *ids, int per_edge,
+// A host body's contact edges as given (ids 0-based; per_edge 2, or 3 for curved edges):
+// oriented by the host with the body on their left. Every node needs an equation in x or y.
+// Curved edges have no cells to be checked against: their nodes' positions and roles are
+// checked instead, and a surface given (corner, middle, corner) throughout is reordered
+// (host_contact_edges.hpp), which the log says.
+std::vector<mc::SurfaceSegment> host_surface(const mc::Model &model, int body, std::vector<int> &ids, int per_edge,
                                              const mc_int *edges, int n_edges) {
   const mc::Body &b = model.body[body - 1];
-  std::vector<mc::SurfaceSegment> surface;
-  std::vector<std::pair<int, int>> seen;
+  const int base = model.index_base;
   for (int e = 0; e < n_edges; ++e) {
-    const int *v = ids + per_edge * size_t(e);
+    const int *v = ids.data() + per_edge * size_t(e);
     for (int k = 0; k < per_edge; ++k)
       if (b.host_data.equation(v[k], 0) < 0 && b.host_data.equation(v[k], 1) < 0)
         fail(MC_ERROR_CONTACT, "%s: node %d has no equation (mc_set_host_body): a contact node needs a freedom in x or y",
-             edge_text(edges, per_edge, e).c_str(), v[k] + model.index_base);
+             edge_text(edges, per_edge, e, base).c_str(), v[k] + base);
     if (v[0] == v[1] || (per_edge == 3 && (v[2] == v[0] || v[2] == v[1])))
-      fail(MC_ERROR_CONTACT, "%s uses a node twice", edge_text(edges, per_edge, e).c_str());
+      fail(MC_ERROR_CONTACT, "%s uses a node twice", edge_text(edges, per_edge, e, base).c_str());
+  }
+  if (per_edge == 3) {
+    auto describe = [&](int e) { return edge_text(edges, 3, size_t(e), base); };
+    if (mc::order_host_curved_edges(b.mesh, ids, base, describe))
+      model.progress(MC_LOG_PHASE,
+                     "body %d: its %d curved contact edges were given as (corner, middle, corner), as Smith and "
+                     "Griffiths' 8-node quadrilateral numbers a side, and none as (end, end, middle): taken as "
+                     "(end, end, middle), the first as (%d, %d, %d)",
+                     body, n_edges, ids[0] + base, ids[1] + base, ids[2] + base);
+  }
+  std::vector<mc::SurfaceSegment> surface;
+  std::vector<std::pair<int, int>> seen;
+  for (int e = 0; e < n_edges; ++e) {
+    const int *v = ids.data() + per_edge * size_t(e);
     surface.push_back({v[0], v[1], per_edge == 3 ? v[2] : -1});
     seen.push_back({std::min(v[0], v[1]), std::max(v[0], v[1])});
   }
@@ -60,18 +79,17 @@ void set_contact_surface(mc::Model &model, int body, mc_int n_edges, const mc_in
     const long long id = (long long)edges[k] - model.index_base;  // no int overflow for INT_MIN
     const size_t e = k / per_edge;
     if (id < 0 || id >= b.mesh.n_nodes())
-      fail(MC_ERROR_ARGUMENT, "%s: edges[%zu] = %d: node id out of range [%d, %d] (index base %d)",
-           edge_text(edges, per_edge, e).c_str(), k, int(edges[k]), model.index_base,
+      fail(MC_ERROR_ARGUMENT, "%s: %s = %d: node id out of range [%d, %d] (index base %d)",
+           edge_text(edges, per_edge, e, model.index_base).c_str(), mc::array_position("edges", k, model.index_base).c_str(),
+           int(edges[k]), model.index_base,
            b.mesh.n_nodes() - 1 + model.index_base, model.index_base);
     local[k] = int(id);
   }
   std::vector<mc::SurfaceSegment> surface;
   if (b.host) {
-    surface = host_surface(model, body, local.data(), per_edge, edges, n_edges);
+    surface = host_surface(model, body, local, per_edge, edges, n_edges);
   } else {
-    std::vector<int> corners(2 * size_t(n_edges));
-    for (mc_int e = 0; e < n_edges; ++e) corners[2 * e] = local[per_edge * e], corners[2 * e + 1] = local[per_edge * e + 1];
-    surface = mc::oriented_surface(b.mesh, corners.data(), n_edges, model.index_base);
+    surface = mc::oriented_surface(b.mesh, local.data(), per_edge, n_edges, model.index_base);
     if (per_edge == 3) {
       if (!b.mesh.quadratic())
         fail(MC_ERROR_CONTACT, "body %d has linear cells, whose edges have no middle node: give its contact edges by "
@@ -79,7 +97,7 @@ void set_contact_surface(mc::Model &model, int body, mc_int n_edges, const mc_in
       for (mc_int e = 0; e < n_edges; ++e)
         if (surface[e].mid != local[3 * e + 2])
           fail(MC_ERROR_CONTACT, "%s: node %d is not the middle of that edge, whose cell has node %d there",
-               edge_text(edges, 3, e).c_str(), int(edges[3 * e + 2]), surface[e].mid + model.index_base);
+               edge_text(edges, 3, e, model.index_base).c_str(), int(edges[3 * e + 2]), surface[e].mid + model.index_base);
     }
   }
   // Simple chains and loops only: at most one surface edge leaves and one arrives at a node.
@@ -91,7 +109,8 @@ void set_contact_surface(mc::Model &model, int body, mc_int n_edges, const mc_in
     const int other = leaving[seg.a] >= 0 ? leaving[seg.a] : arriving[seg.b];
     if (other >= 0)
       fail(MC_ERROR_CONTACT, "%s and %s both %s node %d: cells meet only at that node, a contact surface must be "
-           "simple chains or loops", edge_text(edges, per_edge, e).c_str(), edge_text(edges, per_edge, other).c_str(),
+           "simple chains or loops", edge_text(edges, per_edge, e, model.index_base).c_str(),
+           edge_text(edges, per_edge, other, model.index_base).c_str(),
            leaving[seg.a] >= 0 ? "leave" : "arrive at", (leaving[seg.a] >= 0 ? seg.a : seg.b) + model.index_base);
     leaving[seg.a] = arriving[seg.b] = int(e);
   }
@@ -104,8 +123,8 @@ void set_contact_surface(mc::Model &model, int body, mc_int n_edges, const mc_in
                         180 / 3.14159265358979323846;
     if (std::fabs(turn) > kFoldAngleDegrees)
       fail(MC_ERROR_CONTACT, "%s and %s fold back at node %d: the surface turns by %.1f degrees there (more than %.0f): "
-           "a contact surface must not fold back on itself", edge_text(edges, per_edge, in).c_str(),
-           edge_text(edges, per_edge, out).c_str(), node + model.index_base, turn, kFoldAngleDegrees);
+           "a contact surface must not fold back on itself", edge_text(edges, per_edge, in, model.index_base).c_str(),
+           edge_text(edges, per_edge, out, model.index_base).c_str(), node + model.index_base, turn, kFoldAngleDegrees);
   }
   b.contact = std::move(surface);
   b.has_contact = true;
@@ -130,7 +149,7 @@ mc_status mc_set_gap_offset(mc_model *m, mc_int n, const mc_int *nodes, const do
     if (!b.has_contact) fail(MC_ERROR_STATE, "body 1 has no contact surface: call mc_set_contact first");
     require_count(n, "n");
     if (n > 0) require_pointer(nodes, "nodes"), require_pointer(offset, "offset");
-    if (n > 0) require_finite(offset, size_t(n), "offset");
+    if (n > 0) require_finite(offset, size_t(n), "offset", model.index_base);
     std::vector<char> on_surface(b.mesh.n_nodes(), 0);
     for (const mc::SurfaceSegment &s : b.contact) {
       on_surface[s.a] = on_surface[s.b] = 1;
@@ -140,7 +159,8 @@ mc_status mc_set_gap_offset(mc_model *m, mc_int n, const mc_int *nodes, const do
     for (mc_int i = 0; i < n; ++i) {
       local[i] = node_id(model, b.mesh, nodes[i], "nodes", size_t(i));
       if (!on_surface[local[i]])
-        fail(MC_ERROR_ARGUMENT, "nodes[%d] = %d is not on body 1's contact surface", int(i), int(nodes[i]));
+        fail(MC_ERROR_ARGUMENT, "%s = %d is not on body 1's contact surface",
+             mc::array_position("nodes", size_t(i), model.index_base).c_str(), int(nodes[i]));
     }
     if (b.gap_offset.empty()) b.gap_offset.assign(b.mesh.n_nodes(), 0.0);
     for (mc_int i = 0; i < n; ++i) b.gap_offset[local[i]] = offset[i];

@@ -26,12 +26,12 @@ mc_status mc_set_host_body(mc_model *m, int body, mc_int n_nodes, const double *
     const int b = body_index(body);
     require_count(n_nodes, "n_nodes");
     mc::Body fresh;
-    fresh.mesh = mc::Mesh::points(n_nodes, xy);
+    fresh.mesh = mc::Mesh::points(n_nodes, xy, model.index_base);
     if (model.axisymmetric) {
       const int i = mc::first_node_left_of_axis(fresh.mesh);
       if (i >= 0)
-        fail(MC_ERROR_MESH, "xy[%d] = %g (node %d of body %d): a radius must be >= 0 in an axisymmetric model", 2 * i,
-             fresh.mesh.node(i).x, i + model.index_base, body);
+        fail(MC_ERROR_MESH, "%s = %g (node %d of body %d): a radius must be >= 0 in an axisymmetric model",
+             mc::array_position("xy", 2 * size_t(i), model.index_base).c_str(), fresh.mesh.node(i).x, i + model.index_base, body);
     }
     fresh.host_data = mc::make_host_body(n_nodes, equations, n_equations, model.index_base);
     fresh.host = true;
@@ -69,7 +69,7 @@ mc_status mc_set_load_vector(mc_model *m, int body, mc_int n_equations, const do
       fail(MC_ERROR_ARGUMENT, "n_equations = %d: body %d's system has %d equations (mc_set_host_body)", int(n_equations),
            body, b.host_data.n_equations);
     require_pointer(f, "f");
-    require_finite(f, size_t(n_equations), "f");
+    require_finite(f, size_t(n_equations), "f", model.index_base);
     b.host_data.load.assign(f, f + n_equations);
     model.values_changed();
   });

@@ -91,17 +91,19 @@ inline void require_count(mc_int n, const char *name) {
   if (n < 0) fail(MC_ERROR_ARGUMENT, "%s = %d: must not be negative", name, int(n));
 }
 
-inline void require_finite(const double *values, size_t count, const char *name) {
+// (base: the model's index base, for the position in the message)
+inline void require_finite(const double *values, size_t count, const char *name, int base) {
   for (size_t i = 0; i < count; ++i)
-    if (!std::isfinite(values[i])) fail(MC_ERROR_ARGUMENT, "%s[%zu] is not finite", name, i);
+    if (!std::isfinite(values[i]))
+      fail(MC_ERROR_ARGUMENT, "%s is not finite", mc::array_position(name, i, base).c_str());
 }
 
 // A node id given by the caller, checked and made 0-based.
 inline int node_id(const mc::Model &model, const mc::Mesh &mesh, mc_int id, const char *name, size_t index) {
   const long long local = (long long)id - model.index_base;  // no int overflow for id = INT_MIN
   if (local < 0 || local >= mesh.n_nodes())
-    fail(MC_ERROR_ARGUMENT, "%s[%zu] = %d: node id out of range [%d, %d] (index base %d)", name, index, int(id),
-         model.index_base, mesh.n_nodes() - 1 + model.index_base, model.index_base);
+    fail(MC_ERROR_ARGUMENT, "%s = %d: node id out of range [%d, %d] (index base %d)",
+         mc::array_position(name, index, model.index_base).c_str(), int(id), model.index_base, mesh.n_nodes() - 1 + model.index_base, model.index_base);
   return int(local);
 }
 

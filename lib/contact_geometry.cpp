@@ -5,7 +5,9 @@
 #include "plane_vectors.hpp"
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
+#include <string>
 
 namespace mc {
 
@@ -247,21 +249,91 @@ void runs_of_face(const FaceContext &f, std::vector<CoveredPiece> pieces, std::v
     if (interval.back().t1() - interval.front().t0() > 2 * kSnap) runs.push_back(open_run(f, interval, tributary));
 }
 
+// A contact surface seen from afar, for the message of surfaces that do not face each other:
+// its outward normal summed over its edges (each the right of its direction, length-weighted:
+// the body on the edges' left) and its centre.
+struct SurfaceFromAfar {
+  Point normal, centre;
+};
+
+SurfaceFromAfar from_afar(const Mesh &mesh, const std::vector<SurfaceSegment> &surface) {
+  Point normal{0, 0}, centre{0, 0};
+  double length = 0;
+  for (const SurfaceSegment &s : surface) {
+    const Point a = mesh.node(s.a), b = mesh.node(s.b);
+    const double l = norm(minus(b, a));
+    normal = plus(normal, {b.y - a.y, a.x - b.x});
+    centre = plus(centre, scaled(plus(a, b), 0.5 * l)), length += l;
+  }
+  return {norm(normal) > 0 ? unit(normal) : normal, length > 0 ? scaled(centre, 1 / length) : centre};
+}
+
+// Which surface is at fault when no body-1 node sees body 2: a surface whose normal points away
+// from the other body. A body with cells has its surface oriented by them (body on
+// the left), so it is the wrong side of its body; a host body's edges come oriented by the host,
+// so its surface is more likely reversed (edges with the body on their right, the normal
+// pointing into the body).
+std::string facing_report(const Mesh &body1, const std::vector<SurfaceSegment> &surface1, const Mesh &body2,
+                          const std::vector<SurfaceSegment> &surface2) {
+  const Mesh *mesh[2] = {&body1, &body2};
+  const SurfaceFromAfar seen[2] = {from_afar(body1, surface1), from_afar(body2, surface2)};
+  std::string report;
+  char text[320];
+  // Where the other body lies: its nodes' centroid (two surfaces in contact share their place,
+  // so the other surface's centre alone says little), or its surface's centre if a host gave
+  // that body's surface nodes only.
+  Point where[2];
+  for (int k = 0; k < 2; ++k) {
+    Point sum{0, 0};
+    for (int i = 0; i < mesh[k]->n_nodes(); ++i) sum = plus(sum, mesh[k]->node(i));
+    where[k] = scaled(sum, 1.0 / std::max(1, mesh[k]->n_nodes()));
+    const double depth = std::fabs(dot(seen[k].normal, minus(where[k], seen[k].centre)));
+    if (!(depth > 1e-6 * mesh[k]->characteristic_length())) where[k] = seen[k].centre;
+  }
+  bool toward[2];
+  for (int k = 0; k < 2; ++k) toward[k] = dot(seen[k].normal, minus(where[1 - k], seen[k].centre)) > 0;
+  for (int k = 0; k < 2; ++k) {
+    if (toward[k]) continue;
+    const bool host = mesh[k]->n_cells() == 0;
+    if (host)
+      std::snprintf(text, sizeof text,
+                    " Body %d's surface looks reversed: its normal points away from body %d, so its edges seem to run "
+                    "with the body on their right (a host body's edges must have it on their left): give each edge's "
+                    "ends the other way round.",
+                    k + 1, 2 - k);
+    else
+      std::snprintf(text, sizeof text,
+                    " Body %d's surface (oriented by its cells, the body on its left) faces away from body %d: it is "
+                    "not the side of body %d that touches body %d.",
+                    k + 1, 2 - k, k + 1, 2 - k);
+    report += text;
+  }
+  std::snprintf(text, sizeof text,
+                " Outward normals (mean over the edges): body 1's (%.3g, %.3g) points %s body 2; body 2's (%.3g, %.3g) "
+                "points %s body 1.",
+                seen[0].normal.x, seen[0].normal.y, toward[0] ? "toward" : "away from", seen[1].normal.x,
+                seen[1].normal.y, toward[1] ? "toward" : "away from");
+  return report + text;
+}
+
 }  // namespace
 
-std::vector<SurfaceSegment> oriented_surface(const Mesh &mesh, const int *edges, int n_edges, int base) {
+std::vector<SurfaceSegment> oriented_surface(const Mesh &mesh, const int *edges, int per_edge, int n_edges, int base) {
   std::vector<SurfaceSegment> surface;
   std::vector<std::pair<int, int>> seen;
   for (int e = 0; e < n_edges; ++e) {
-    int a = edges[2 * e], b = edges[2 * e + 1];
+    const int *v = edges + per_edge * size_t(e);
+    const int a = v[0], b = v[1];
+    const std::string where = array_range("edges", per_edge * size_t(e), per_edge * size_t(e) + 1, base);
     if (a < 0 || a >= mesh.n_nodes() || b < 0 || b >= mesh.n_nodes())
-      fail(MC_ERROR_ARGUMENT, "edges[%d..%d] = (%d, %d): node id out of range [%d, %d)", 2 * e, 2 * e + 1, a + base,
-           b + base, base, mesh.n_nodes() + base);
+      fail(MC_ERROR_ARGUMENT, "%s = (%d, %d): node id out of range [%d, %d)", where.c_str(), a + base, b + base, base,
+           mesh.n_nodes() + base);
     const BoundaryEdge *edge = mesh.boundary_edge(a, b);
     char hint[160];
     if (!edge)
-      fail(MC_ERROR_CONTACT, "edges[%d..%d] = (%d, %d) is not an edge on the boundary of the mesh%s", 2 * e, 2 * e + 1,
-           a + base, b + base, mesh.edge_hint(a, b, base, hint, 160));
+      fail(MC_ERROR_CONTACT, "%s = (%d, %d) is not an edge on the boundary of the mesh%s%s", where.c_str(), a + base,
+           b + base, mesh.edge_hint(a, b, base, hint, 160),
+           per_edge == 3 ? " (a curved edge is given as (end, end, middle))" : "");
     surface.push_back({edge->from, edge->to, edge->mid});
     seen.push_back({std::min(a, b), std::max(a, b)});
   }
@@ -332,7 +404,8 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
   if (!any)
     fail(MC_ERROR_CONTACT,
          "no node of body 1's contact surface sees body 2's contact surface along its outward normal: "
-         "the surfaces do not face each other");
+         "the surfaces do not face each other.%s",
+         facing_report(body1, surface1, body2, surface2).c_str());
 
   // The direction along which body 1 looks for body 2 between its nodes: its smooth curve's
   // normal, or else the interpolated nodal normals (faceted, or body 2's normals chosen: the

@@ -78,9 +78,10 @@ struct ContactGeometry {
   bool quadratic_nonmortar = false;  // body 1's surface has quadratic edges
 };
 
-// Checks the edges (2 per edge, 0-based) are boundary edges of the mesh and returns them
-// oriented as their cells. Throws MC_ERROR_CONTACT naming the edge otherwise.
-std::vector<SurfaceSegment> oriented_surface(const Mesh &mesh, const int *edges, int n_edges, int base = 0);
+// Checks the edges (per_edge ids each, 0-based: the two corners, then a middle that is not
+// looked at here) are boundary edges of the mesh and returns them oriented as their cells.
+// Throws MC_ERROR_CONTACT naming the edge (its position in the caller's array, in base) otherwise.
+std::vector<SurfaceSegment> oriented_surface(const Mesh &mesh, const int *edges, int per_edge, int n_edges, int base);
 
 // The whole geometry. Throws MC_ERROR_CONTACT if no body-1 node sees body 2.
 // normal_choice: MC_NORMAL_NONMORTAR or MC_NORMAL_MORTAR.

@@ -2,6 +2,7 @@
 // turned into a status code and a per-model message. Nothing here is global.
 #pragma once
 #include "mortarcontact.h"
+#include <cstddef>
 #include <exception>
 #include <string>
 
@@ -21,5 +22,13 @@ private:
 // printf-style formatting of an error message, then throw.
 [[noreturn]] void fail(mc_status status, const char *format, ...)
     __attribute__((format(printf, 2, 3)));
+
+// An array position in a message, in the model's index base, written as the caller's own
+// language writes it (docs/api.md, "Errors"): base 0 "name[i]" (C, C++, Python), base 1
+// "name(i + 1)" (Fortran, Julia, MATLAB). index is 0-based. A 1-based position in brackets
+// would read as a C subscript one too far; parentheses say which convention is meant.
+std::string array_position(const char *name, size_t index, int base);
+// Positions first..last (0-based, inclusive): "name[6..7]" in base 0, "name(7:8)" in base 1.
+std::string array_range(const char *name, size_t first, size_t last, int base);
 
 }  // namespace mc

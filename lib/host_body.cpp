@@ -20,12 +20,12 @@ HostBody make_host_body(int n_nodes, const int *equations, int n_equations, int 
     const long long e = (long long)equations[k] - base;
     if (e < 0) continue;  // no equation: restrained or absent
     if (e >= n_equations)
-      fail(MC_ERROR_ARGUMENT, "equations[%zu] = %d (node %zu, %s): equation number above the system, whose last is %d",
-           k, equations[k], k / 2 + base, k % 2 ? "y" : "x", n_equations - 1 + base);
+      fail(MC_ERROR_ARGUMENT, "%s = %d (node %zu, %s): equation number above the system, whose last is %d",
+           array_position("equations", k, base).c_str(), equations[k], k / 2 + base, k % 2 ? "y" : "x", n_equations - 1 + base);
     const int other = host.node_of_equation[e];
     if (other >= 0)
-      fail(MC_ERROR_ARGUMENT, "equations[%zu] = %d: node %zu's %s and node %d's %s share equation %d: each freedom "
-           "needs its own", k, equations[k], k / 2 + base, k % 2 ? "y" : "x", other + base,
+      fail(MC_ERROR_ARGUMENT, "%s = %d: node %zu's %s and node %d's %s share equation %d: each freedom "
+           "needs its own", array_position("equations", k, base).c_str(), equations[k], k / 2 + base, k % 2 ? "y" : "x", other + base,
            host.component_of_equation[e] ? "y" : "x", equations[k]);
     host.equations[k] = int(e);
     host.node_of_equation[e] = int(k / 2), host.component_of_equation[e] = int(k % 2);
@@ -42,8 +42,8 @@ int host_equation(const HostBody &host, int id, const char *name, size_t index, 
   const long long e = (long long)id - base;
   if (e < 0) return -1;
   if (e >= host.n_equations)
-    fail(MC_ERROR_ARGUMENT, "%s[%zu] = %d: equation number above the system, whose last is %d", name, index, id,
-         host.n_equations - 1 + base);
+    fail(MC_ERROR_ARGUMENT, "%s = %d: equation number above the system, whose last is %d",
+         array_position(name, index, base).c_str(), id, host.n_equations - 1 + base);
   return int(e);
 }
 
@@ -68,16 +68,17 @@ void add_coordinate_entries(HostBody &host, int n, const int *rows, const int *c
   double largest = 0;
   try {
     for (size_t k = 0; k < size_t(n); ++k) {
-      if (!std::isfinite(values[k])) fail(MC_ERROR_ARGUMENT, "values[%zu] is not finite", k);
+      if (!std::isfinite(values[k]))
+        fail(MC_ERROR_ARGUMENT, "%s is not finite", array_position("values", k, base).c_str());
       const int r = host_equation(host, rows[k], "rows", k, base), c = host_equation(host, cols[k], "cols", k, base);
       if (r < 0 || c < 0) continue;  // a restrained freedom's row or column
       if (!full && r != c) {
         const int side = r < c ? 1 : -1;
         if (triangle != 0 && side != triangle)
           fail(MC_ERROR_ARGUMENT,
-               "rows[%zu], cols[%zu] = (%d, %d) is in the %s triangle, earlier entries of this call in the %s: "
+               "%s, %s = (%d, %d) is in the %s triangle, earlier entries of this call in the %s: "
                "MC_MATRIX_TRIANGLE takes one triangle (each off-diagonal pair once); give both with MC_MATRIX_FULL",
-               k, k, rows[k], cols[k], side > 0 ? "upper" : "lower", side > 0 ? "lower" : "upper");
+               array_position("rows", k, base).c_str(), array_position("cols", k, base).c_str(), rows[k], cols[k], side > 0 ? "upper" : "lower", side > 0 ? "lower" : "upper");
         triangle = side;
       }
       if (full) largest = std::max(largest, std::fabs(values[k]));
@@ -100,12 +101,13 @@ void add_element_matrices(HostBody &host, int n_elements, const int *eltptr, con
   if (!eltvar) fail(MC_ERROR_ARGUMENT, "eltvar is NULL");
   if (!a_elt) fail(MC_ERROR_ARGUMENT, "a_elt is NULL");
   if (eltptr[0] != base)
-    fail(MC_ERROR_ARGUMENT, "eltptr[0] = %d: the first element's equations start at eltvar's first entry, %d (the "
-         "index base)", eltptr[0], base);
+    fail(MC_ERROR_ARGUMENT, "%s = %d: the first element's equations start at eltvar's first entry, %d (the "
+         "index base)", array_position("eltptr", 0, base).c_str(), eltptr[0], base);
   for (int e = 0; e < n_elements; ++e)
     if (eltptr[e + 1] < eltptr[e])
-      fail(MC_ERROR_ARGUMENT, "eltptr[%d] = %d is less than eltptr[%d] = %d: element %d would have a negative number of "
-           "equations", e + 1, eltptr[e + 1], e, eltptr[e], e + base);
+      fail(MC_ERROR_ARGUMENT, "%s = %d is less than %s = %d: element %d would have a negative number of "
+           "equations", array_position("eltptr", size_t(e) + 1, base).c_str(), eltptr[e + 1],
+           array_position("eltptr", size_t(e), base).c_str(), eltptr[e], e + base);
   // Appended in place (reserved first), and cut back if an element is bad: a call that fails
   // adds nothing.
   const size_t old = host.entry_row.size();
@@ -126,16 +128,32 @@ void add_element_matrices(HostBody &host, int n_elements, const int *eltptr, con
       const double *ke = a_elt + offset;
       double largest = 0;
       for (size_t k = 0; k < size * size; ++k) {
-        if (!std::isfinite(ke[k])) fail(MC_ERROR_ARGUMENT, "a_elt[%zu] (element %d) is not finite", offset + k, e + base);
+        if (!std::isfinite(ke[k]))
+          fail(MC_ERROR_ARGUMENT, "%s (element %d) is not finite", array_position("a_elt", offset + k, base).c_str(),
+               e + base);
         largest = std::max(largest, std::fabs(ke[k]));
       }
+      // An element stiffness is positive semidefinite, so its diagonal is >= 0. A negative one
+      // is what an inverted element gives (its nodes clockwise: the Jacobian, and with it the
+      // whole matrix, changes sign). Said here, naming the element; summed with its neighbours
+      // it would only show later as a bad diagonal at some equation, far from its cause.
+      for (size_t a = 0; a < size; ++a)
+        if (ke[a * size + a] < -1e-12 * largest) {
+          char freedom[48] = "a restrained freedom";
+          if (local[a] >= 0) std::snprintf(freedom, sizeof freedom, "equation %d", local[a] + base);
+          fail(MC_ERROR_MESH, "element %d looks inverted (its nodes in clockwise order) or is otherwise not positive "
+               "semidefinite: its matrix has the negative diagonal %g at row %zu (%s, %s), and an element "
+               "stiffness has none; number the element's nodes counter-clockwise",
+               e + base, ke[a * size + a], a + base, array_position("a_elt", offset + a * size + a, base).c_str(),
+               freedom);
+        }
       for (size_t j = 0; j < size; ++j)
         for (size_t i = 0; i <= j; ++i) {
           const double upper_value = ke[j * size + i], lower_value = ke[i * size + j];
           if (std::fabs(upper_value - lower_value) > 1e-12 * largest)
-            fail(MC_ERROR_ARGUMENT, "a_elt[%zu] (element %d, row %zu, column %zu) = %.17g but its mirror is %.17g: an "
-                 "element matrix must be symmetric", offset + j * size + i, e + base, i + 1, j + 1, upper_value,
-                 lower_value);
+            fail(MC_ERROR_ARGUMENT, "%s (element %d, row %zu, column %zu) = %.17g but its mirror is %.17g: an "
+                 "element matrix must be symmetric", array_position("a_elt", offset + j * size + i, base).c_str(),
+                 e + base, i + base, j + base, upper_value, lower_value);
           const int r = local[i], c = local[j];
           if (r < 0 || c < 0) continue;  // a restrained freedom's row or column
           // the mean of the two halves; an equation listed twice in one element gets both
@@ -196,6 +214,12 @@ SymmetricCsc assemble_host_stiffness(const HostBody &host, int body, int base) {
       if (host.node_of_equation[j] >= 0)
         std::snprintf(whose, sizeof whose, " (node %d, %s)", host.node_of_equation[j] + base,
                       host.component_of_equation[j] ? "y" : "x");
+      if (d < 0)
+        fail(MC_ERROR_SINGULAR,
+             "body %d: the host's stiffness has the negative diagonal %g at equation %d%s: it is not positive "
+             "semidefinite, as a stiffness is; an inverted element (nodes in clockwise order) gives a negative "
+             "stiffness: check the orientation of the elements at that node",
+             body, d, j + base, whose);
       fail(MC_ERROR_SINGULAR,
            "body %d: the host's stiffness has diagonal %g at equation %d%s: a stiffness matrix has a positive "
            "diagonal (an equation no entry reaches is a freedom nothing holds)",

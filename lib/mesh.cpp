@@ -25,7 +25,8 @@ Mesh::Mesh(int n_nodes, const double *xy, int n_cells, int nodes_per_cell, const
   xy_.assign(xy, xy + 2 * size_t(n_nodes));
   double xmin = xy_[0], xmax = xy_[0], ymin = xy_[1], ymax = xy_[1];
   for (size_t i = 0; i < xy_.size(); ++i) {
-    if (!std::isfinite(xy_[i])) fail(MC_ERROR_ARGUMENT, "xy[%zu] (node %zu) is not finite", i, i / 2);
+    if (!std::isfinite(xy_[i]))
+      fail(MC_ERROR_ARGUMENT, "%s (node %zu) is not finite", array_position("xy", i, base).c_str(), i / 2 + base);
     if (i % 2 == 0) xmin = std::min(xmin, xy_[i]), xmax = std::max(xmax, xy_[i]);
     else ymin = std::min(ymin, xy_[i]), ymax = std::max(ymax, xy_[i]);
   }
@@ -36,7 +37,7 @@ Mesh::Mesh(int n_nodes, const double *xy, int n_cells, int nodes_per_cell, const
   for (size_t k = 0; k < cells_.size(); ++k) {
     int id = cells_[k];
     if (id < 0 || id >= n_nodes)
-      fail(MC_ERROR_ARGUMENT, "cells[%zu] = %d (cell %zu): node id out of range [%d, %d)", k, id + base,
+      fail(MC_ERROR_ARGUMENT, "%s = %d (cell %zu): node id out of range [%d, %d)", array_position("cells", k, base).c_str(), id + base,
            k / nodes_per_cell + base, base, n_nodes + base);
     used[id] = 1;
   }
@@ -59,7 +60,7 @@ Mesh::Mesh(int n_nodes, const double *xy, int n_cells, int nodes_per_cell, const
   derive_boundary(base);
 }
 
-Mesh Mesh::points(int n_nodes, const double *xy) {
+Mesh Mesh::points(int n_nodes, const double *xy, int base) {
   Mesh mesh;
   if (n_nodes < 1) fail(MC_ERROR_ARGUMENT, "n_nodes = %d: a host body needs at least 1 node", n_nodes);
   if (!xy) fail(MC_ERROR_ARGUMENT, "xy is NULL");
@@ -67,7 +68,8 @@ Mesh Mesh::points(int n_nodes, const double *xy) {
   mesh.xy_.assign(xy, xy + 2 * size_t(n_nodes));
   double xmin = xy[0], xmax = xy[0], ymin = xy[1], ymax = xy[1];
   for (size_t i = 0; i < mesh.xy_.size(); ++i) {
-    if (!std::isfinite(mesh.xy_[i])) fail(MC_ERROR_ARGUMENT, "xy[%zu] (node %zu) is not finite", i, i / 2);
+    if (!std::isfinite(mesh.xy_[i]))
+      fail(MC_ERROR_ARGUMENT, "%s (node %zu) is not finite", array_position("xy", i, base).c_str(), i / 2 + base);
     if (i % 2 == 0) xmin = std::min(xmin, mesh.xy_[i]), xmax = std::max(xmax, mesh.xy_[i]);
     else ymin = std::min(ymin, mesh.xy_[i]), ymax = std::max(ymax, mesh.xy_[i]);
   }

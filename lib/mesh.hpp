@@ -30,7 +30,7 @@ public:
   Mesh() = default;
   // Nodes without cells: a host body's (mc_set_host_body). No boundary is derived; its contact
   // edges come oriented from the host.
-  static Mesh points(int n_nodes, const double *xy);
+  static Mesh points(int n_nodes, const double *xy, int base);  // base: for the messages
 
   int n_nodes() const { return n_nodes_; }
   int n_cells() const { return n_cells_; }

@@ -153,11 +153,11 @@ START_TEST(test_argument_values) {
     char needle[64];
     mc_int bad[3];
     bad[0] = base, bad[1] = 1 + base, bad[2] = n_nodes + base;
-    snprintf(needle, sizeof needle, "nodes[2] = %d", (int)(n_nodes + base));
+    snprintf(needle, sizeof needle, "%s = %d", AT("nodes", 2, base), (int)(n_nodes + base));
     FAILS(mc_fix(m, 1, 3, bad, MC_XY, values), MC_ERROR_ARGUMENT, needle);
     FAILS(mc_add_nodal_force(m, 1, 3, bad, values), MC_ERROR_ARGUMENT, needle);
     bad[2] = base - 1;
-    snprintf(needle, sizeof needle, "nodes[2] = %d", base - 1);
+    snprintf(needle, sizeof needle, "%s = %d", AT("nodes", 2, base), base - 1);
     FAILS(mc_fix(m, 1, 3, bad, MC_XY, values), MC_ERROR_ARGUMENT, needle);
     FAILS(mc_add_nodal_force(m, 1, 3, bad, values), MC_ERROR_ARGUMENT, needle);
     scene_usable(&s);
@@ -172,15 +172,16 @@ START_TEST(test_argument_values) {
   FAILS(mc_add_pressure(m, 1, -1, edge, t), MC_ERROR_ARGUMENT, "n_edges");
   scene_usable(&s);
 
-  /* non-finite values */
+  /* non-finite values: the position in the index base, "values[3]" in base 0, "values(4)" in base 1 */
   values[3] = NAN;
-  FAILS(mc_fix(m, 1, 3, nodes, MC_XY, values), MC_ERROR_ARGUMENT, "values[3]");
-  FAILS(mc_add_nodal_force(m, 1, 3, nodes, values), MC_ERROR_ARGUMENT, "force[3]");
+  FAILS(mc_fix(m, 1, 3, nodes, MC_XY, values), MC_ERROR_ARGUMENT, AT("values", 3, base));
+  FAILS(mc_add_nodal_force(m, 1, 3, nodes, values), MC_ERROR_ARGUMENT, AT("force", 3, base));
+  ck_assert_ptr_nonnull(strstr(mc_errmsg(m), base ? "force(4) is not finite" : "force[3] is not finite"));
   values[3] = 0;
   t[1] = INFINITY;
-  FAILS(mc_add_traction(m, 1, 1, edge, t), MC_ERROR_ARGUMENT, "traction[1]");
+  FAILS(mc_add_traction(m, 1, 1, edge, t), MC_ERROR_ARGUMENT, AT("traction", 1, base));
   t[0] = NAN;
-  FAILS(mc_add_pressure(m, 1, 1, edge, t), MC_ERROR_ARGUMENT, "pressure[0]");
+  FAILS(mc_add_pressure(m, 1, 1, edge, t), MC_ERROR_ARGUMENT, AT("pressure", 0, base));
   FAILS(mc_set_body_force(m, 1, NAN, 0), MC_ERROR_ARGUMENT, "fx");
   FAILS(mc_set_body_force(m, 1, 0, -INFINITY), MC_ERROR_ARGUMENT, "fy");
   scene_usable(&s);
@@ -206,10 +207,12 @@ START_TEST(test_argument_values) {
     char needle[32];
     memcpy(xy, s.mesh.xy, sizeof(double) * s.n);
     xy[9] = NAN;
-    FAILS(mc_set_mesh(m, 1, n_nodes, xy, s.mesh.n_cells, 3, cells), MC_ERROR_ARGUMENT, "xy[9]");
+    FAILS(mc_set_mesh(m, 1, n_nodes, xy, s.mesh.n_cells, 3, cells), MC_ERROR_ARGUMENT, AT("xy", 9, base));
+    snprintf(needle, sizeof needle, "(node %d)", 4 + base); /* xy's 10th value: node 4's y, in base */
+    ck_assert_ptr_nonnull(strstr(mc_errmsg(m), needle));
     xy[9] = s.mesh.xy[9];
     xy[s.n - 1] = INFINITY;
-    snprintf(needle, sizeof needle, "xy[%d]", (int)s.n - 1);
+    snprintf(needle, sizeof needle, "%s", AT("xy", s.n - 1, base));
     FAILS(mc_set_mesh(m, 1, n_nodes, xy, s.mesh.n_cells, 3, cells), MC_ERROR_ARGUMENT, needle);
     scene_usable(&s);
     free(xy), free(cells);
@@ -297,7 +300,7 @@ START_TEST(test_material) {
   FAILS(mc_set_cell_elasticity(m, 1, d), MC_ERROR_MATERIAL, needle);
   d[9 * 4 + 2] = 0;
   d[9 * 7 + 5] = NAN;
-  FAILS(mc_set_cell_elasticity(m, 1, d), MC_ERROR_ARGUMENT, "d[68]");
+  FAILS(mc_set_cell_elasticity(m, 1, d), MC_ERROR_ARGUMENT, AT("d", 68, base));
   scene_usable(&s);
   d[9 * 7 + 5] = 0;
   SUCCEEDS(mc_set_cell_elasticity(m, 1, d));
@@ -455,11 +458,22 @@ START_TEST(test_contact) {
   /* surfaces that do not face each other: body 1's top (looking up) against body 2's top */
   SUCCEEDS(mc_set_contact(m, 1, s.top.n_side_edges[SC_TOP], s.top.side_edges[SC_TOP]));
   SUCCEEDS(mc_set_contact(m, 2, s.bottom.n_side_edges[SC_TOP], s.bottom.side_edges[SC_TOP]));
-  FAILS(mc_solve(m), MC_ERROR_CONTACT, "face");
+  FAILS(mc_solve(m), MC_ERROR_CONTACT, "do not face each other");
+  /* the message says which surface is at fault (body 1's, whose normal points up, away from
+     body 2) and what each normal does */
+  printf("surfaces not facing (body 1's top): %s\n", mc_errmsg(m));
+  ck_assert_ptr_nonnull(strstr(mc_errmsg(m), "Body 1's surface (oriented by its cells"));
+  ck_assert_ptr_nonnull(strstr(mc_errmsg(m), "faces away from body 2"));
+  ck_assert_ptr_null(strstr(mc_errmsg(m), "Body 2's surface"));
+  ck_assert_ptr_nonnull(strstr(mc_errmsg(m), "body 2's (0, 1) points toward body 1"));
   /* and body 2's bottom, facing away from body 1 */
   SUCCEEDS(mc_set_contact(m, 1, s.top.n_side_edges[SC_BOTTOM], s.top.side_edges[SC_BOTTOM]));
   SUCCEEDS(mc_set_contact(m, 2, s.bottom.n_side_edges[SC_BOTTOM], s.bottom.side_edges[SC_BOTTOM]));
-  FAILS(mc_solve(m), MC_ERROR_CONTACT, "face");
+  FAILS(mc_solve(m), MC_ERROR_CONTACT, "do not face each other");
+  printf("surfaces not facing (body 2's bottom): %s\n", mc_errmsg(m));
+  ck_assert_ptr_nonnull(strstr(mc_errmsg(m), "Body 2's surface (oriented by its cells"));
+  ck_assert_ptr_nonnull(strstr(mc_errmsg(m), "faces away from body 1"));
+  ck_assert_ptr_null(strstr(mc_errmsg(m), "Body 1's surface"));
   /* the right surfaces: solves */
   SUCCEEDS(mc_set_contact(m, 2, s.bottom.n_side_edges[SC_TOP], s.bottom.side_edges[SC_TOP]));
   SUCCEEDS(mc_solve(m));

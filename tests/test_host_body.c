@@ -927,6 +927,200 @@ static void assert_same_as_reference(mc_model *m, small_host *sh, const char *af
   results_free(&ref), results_free(&got);
 }
 
+/* ---- curved contact edges of host bodies, and messages naming the host's elements ----------------- */
+
+/* The log lines of a model, kept for the assertions. */
+typedef struct log_lines {
+  char text[4096];
+} log_lines;
+
+static void keep_log_line(void *user_data, mc_log_level level, const char *message) {
+  log_lines *log = user_data;
+  (void)level;
+  strncat(log->text, message, sizeof log->text - strlen(log->text) - 2);
+  strcat(log->text, "\n");
+}
+
+/* Body 1's curved contact edges as a legacy program with Smith and Griffiths' 8-node
+   quadrilateral hands them over: each side corner, middle, corner (host ids in base). */
+static mc_int *corner_middle_corner_edges(const body_def *b, int base) {
+  mc_int *edges = malloc(sizeof(mc_int) * 3 * (size_t)b->n_contact);
+  for (mc_int e = 0; e < b->n_contact; ++e) {
+    mc_int nodes[3];
+    ck_assert_int_eq(edge_nodes(b, b->contact + 2 * e, nodes), 3);
+    edges[3 * e] = nodes[0] + base, edges[3 * e + 1] = nodes[2] + base, edges[3 * e + 2] = nodes[1] + base;
+  }
+  return edges;
+}
+
+static double max_pressure_error(mc_model *m, double pressure, mc_int *count) {
+  OK(mc_get_contact_count(m, count));
+  double *p = malloc(sizeof(double) * (size_t)*count), worst = 0;
+  OK(mc_get_contact_pressure(m, p));
+  for (mc_int j = 0; j < *count; ++j) worst = fmax(worst, fabs(p[j] - pressure));
+  free(p);
+  return worst;
+}
+
+/* The trap of issue 31: a host Q8 body whose contact sides come corner, middle, corner. Every
+   side reads so from the nodes' positions and none as (end, end, middle): taken, reordered and
+   logged; the patch test's pressure (0.2) comes out as with the library's order. An edge list
+   mixing the two orders is refused, naming an edge of each in base 1. */
+START_TEST(host_corner_middle_corner_sides) {
+  scene_def s;
+  flat_patch_scene(&s, 8, 8, 0);
+  double *ke = element_matrices(&s, 0), *F = consistent_load(&s, 0, 1.0);
+  mc_model *m = NULL;
+  ck_assert_int_eq(mc_create(&m), MC_OK);
+  log_lines log = {""};
+  OK(mc_set_log_callback(m, keep_log_line, &log));
+  OK(mc_set_index_base(m, 1));
+  const variant v = {1, IN_ELEMENTS, 0, NUM_NATURAL, 0, 0, 0};
+  host_body h;
+  set_host_body(m, &s, 0, ke, F, &v, &h, 3u); /* (end, end, middle) */
+  set_mesh_body(m, &s, 1, 1, 1.0);
+  SUCCEEDS(mc_solve(m));
+  mc_int n_right = 0, n_cmc = 0;
+  const double right = max_pressure_error(m, 0.2, &n_right);
+  ck_assert_msg(strstr(log.text, "corner, middle, corner") == NULL, "no reordering logged for the library's order");
+
+  mc_int *cmc = corner_middle_corner_edges(&s.b[0], 1);
+  SUCCEEDS(mc_set_contact_curved(m, 1, s.b[0].n_contact, cmc));
+  printf("corner, middle, corner: log \"%s\"\n", log.text);
+  ck_assert_msg(strstr(log.text, "were given as (corner, middle, corner)"), "the reordering is logged: %s", log.text);
+  SUCCEEDS(mc_solve(m));
+  const double reordered = max_pressure_error(m, 0.2, &n_cmc);
+  printf("Q8 host body, patch pressure error: (end, end, middle) %.1e, (corner, middle, corner) %.1e; %d and %d "
+         "positions\n", right, reordered, (int)n_right, (int)n_cmc);
+  ck_assert_int_eq(n_cmc, n_right); /* (before: duplicated nodes in the contact list) */
+  ck_assert_msg(right <= 1e-10 && reordered <= 1e-10, "patch pressure off: %g and %g", right, reordered);
+
+  /* the first side in the library's order, the others not: refused, naming edges 2 and 1 */
+  mc_int *mixed = corner_middle_corner_edges(&s.b[0], 1);
+  mixed[1] = cmc[2], mixed[2] = cmc[1];
+  FAILS(mc_set_contact_curved(m, 1, s.b[0].n_contact, mixed), MC_ERROR_CONTACT, "(end, end, middle)");
+  printf("mixed orders: %s\n", mc_errmsg(m));
+  char needle[160];
+  snprintf(needle, sizeof needle, "edge 2 (edges(4:6) = (%d, %d, %d)): node %d is not between its ends %d and %d",
+           (int)mixed[3], (int)mixed[4], (int)mixed[5], (int)mixed[5], (int)mixed[3], (int)mixed[4]);
+  ck_assert_msg(strstr(mc_errmsg(m), needle), "message \"%s\" lacks \"%s\"", mc_errmsg(m), needle);
+  snprintf(needle, sizeof needle, "would be (%d, %d, %d), but edge 1 (edges(1:3)", (int)mixed[3], (int)mixed[5],
+           (int)mixed[4]);
+  ck_assert_msg(strstr(mc_errmsg(m), needle), "message \"%s\" lacks \"%s\"", mc_errmsg(m), needle);
+  SUCCEEDS(mc_solve(m)); /* the refused call changed nothing */
+  ck_assert_double_le(max_pressure_error(m, 0.2, &n_cmc), 1e-10);
+  free(cmc), free(mixed), free(ke), free(F);
+  host_body_free(&h);
+  scene_free(&s);
+  mc_destroy(m);
+}
+END_TEST
+
+/* Curved edges of a host body with no cells to check them against: the nodes' positions and
+   roles are checked, messages in the model's index base (positions "edges[0..2]" in base 0,
+   "edges(1:3)" in base 1). Nodes (0-based): 0 (0, 0), 1 (1, 0), 2 (2, 0), 3 (3, 0), 4 (4, 0) on
+   a line, 5 (1, 0.2), 6 (1, 0.8), 7 (1, -0.2). */
+START_TEST(host_curved_edges_checked) {
+  const int base = _i;
+  static const double xy[16] = {0, 0, 1, 0, 2, 0, 3, 0, 4, 0, 1, 0.2, 1, 0.8, 1, -0.2};
+  mc_int equations[16];
+  for (int k = 0; k < 16; ++k) equations[k] = k + base;
+  mc_model *m = NULL;
+  ck_assert_int_eq(mc_create(&m), MC_OK);
+  if (base) OK(mc_set_index_base(m, 1));
+  char needle[200];
+
+  /* an equation number above the system: its position in the base ("equations[3]" or "(4)") */
+  equations[3] = 16 + base;
+  FAILS(mc_set_host_body(m, 1, 8, xy, equations, 16), MC_ERROR_ARGUMENT, AT("equations", 3, base));
+  ck_assert_ptr_nonnull(strstr(mc_errmsg(m), base ? "equations(4) = 17" : "equations[3] = 16"));
+  printf("base %d, equation above the system: %s\n", base, mc_errmsg(m));
+  equations[3] = 3 + base;
+  SUCCEEDS(mc_set_host_body(m, 1, 8, xy, equations, 16));
+
+#define IDS3(a, b, c) {(a) + base, (b) + base, (c) + base}
+  /* the library's order; a middle off the chord as on a curved side (0.1 chord lengths) */
+  const mc_int good[3] = IDS3(0, 2, 1), arc[3] = IDS3(0, 2, 5);
+  SUCCEEDS(mc_set_contact_curved(m, 1, 1, good));
+  SUCCEEDS(mc_set_contact_curved(m, 1, 1, arc));
+  /* a middle beyond its ends: 3 at 1.5 of the chord 0 -> 2. (Read as corner, middle, corner, 2
+     would lie at 0.67 of 0 -> 3, off the midpoint: not taken for the edge (0, 3) with middle 2.) */
+  const mc_int beyond[3] = IDS3(0, 2, 3);
+  FAILS(mc_set_contact_curved(m, 1, 1, beyond), MC_ERROR_CONTACT, "(end, end, middle)");
+  printf("base %d, middle beyond its ends: %s\n", base, mc_errmsg(m));
+  snprintf(needle, sizeof needle, "edge %d (%s = (%d, %d, %d)): node %d is not between its ends %d and %d", base,
+           AT_RANGE("edges", 0, 2, base), base, 2 + base, 3 + base, 3 + base, base, 2 + base);
+  ck_assert_msg(strstr(mc_errmsg(m), needle), "message \"%s\" lacks \"%s\"", mc_errmsg(m), needle);
+  ck_assert_ptr_nonnull(strstr(mc_errmsg(m), "projects at 1.5 of the chord"));
+  /* a middle far off to one side: 6 over the chord 0 -> 2 at its midpoint, 0.4 chord lengths off
+     it (a 90-degree arc's middle is 0.21 off, a 120-degree arc's 0.29; allowed 0.3) */
+  const mc_int far_off[3] = IDS3(0, 2, 6);
+  FAILS(mc_set_contact_curved(m, 1, 1, far_off), MC_ERROR_CONTACT, "lies 0.4 chord lengths off it");
+  /* a node both a middle and an end: 1 is edge 1's middle and edge 2's end (2 the other way) */
+  const mc_int both[6] = {base, 2 + base, 1 + base, 1 + base, 4 + base, 2 + base};
+  FAILS(mc_set_contact_curved(m, 1, 2, both), MC_ERROR_CONTACT, "never both");
+  printf("base %d, a middle that is also an end: %s\n", base, mc_errmsg(m));
+  snprintf(needle, sizeof needle, "node %d is the middle of edge %d (%s", 1 + base, base, AT_RANGE("edges", 0, 2, base));
+  ck_assert_msg(strstr(mc_errmsg(m), needle), "message \"%s\" lacks \"%s\"", mc_errmsg(m), needle);
+  snprintf(needle, sizeof needle, "an end of edge %d (%s", 1 + base, AT_RANGE("edges", 3, 5, base));
+  ck_assert_msg(strstr(mc_errmsg(m), needle), "message \"%s\" lacks \"%s\"", mc_errmsg(m), needle);
+  /* a node the middle of two edges: 5 between 0 and 2 and between 7 and 6 */
+  const mc_int twice[6] = {base, 2 + base, 5 + base, 7 + base, 6 + base, 5 + base};
+  FAILS(mc_set_contact_curved(m, 1, 2, twice), MC_ERROR_CONTACT, "both have node");
+  printf("base %d, a node the middle of two edges: %s\n", base, mc_errmsg(m));
+  snprintf(needle, sizeof needle, "both have node %d as their middle", 5 + base);
+  ck_assert_ptr_nonnull(strstr(mc_errmsg(m), needle));
+  /* one edge given corner, middle, corner with its middle at the midpoint: taken as (0, 2, 1) */
+  const mc_int cmc[3] = IDS3(0, 1, 2);
+  SUCCEEDS(mc_set_contact_curved(m, 1, 1, cmc));
+#undef IDS3
+  mc_destroy(m);
+}
+END_TEST
+
+/* An inverted element handed over by mc_add_element_matrices (its nodes clockwise: a program
+   that integrates with the signed Jacobian gives the negated matrix) is named at the call,
+   not found later as a bad diagonal at some equation; a negative diagonal given through
+   coordinate entries is said to be one at mc_solve. A host body whose contact edges run with
+   the body on their right: the message of surfaces that do not face each other names it. */
+START_TEST(host_inverted_element_and_reversed_surface) {
+  mc_model *m = NULL;
+  ck_assert_int_eq(mc_create(&m), MC_OK);
+  small_host sh;
+  small_host_build(m, &sh); /* base 1 */
+  const body_def *b = &sh.s.b[0];
+  const int nd = 2 * b->npc;
+  mc_int eltptr[2] = {1, 1 + nd}, eltvar[6];
+  double inverted[36];
+  for (int l = 0; l < nd; ++l) eltvar[l] = host_number(&sh.hb, b->cells[l / 2], l % 2, 1);
+  for (int k = 0; k < nd * nd; ++k) inverted[k] = -sh.ke[k]; /* cell 0, clockwise */
+  FAILS(mc_add_element_matrices(m, 1, 1, eltptr, eltvar, inverted), MC_ERROR_MESH, "element 1 looks inverted");
+  printf("inverted element: %s\n", mc_errmsg(m));
+  ck_assert_ptr_nonnull(strstr(mc_errmsg(m), "clockwise"));
+  ck_assert_ptr_nonnull(strstr(mc_errmsg(m), "not positive semidefinite"));
+  ck_assert_ptr_nonnull(strstr(mc_errmsg(m), "at row 1 (a_elt(1), "));
+  assert_same_as_reference(m, &sh, "a refused inverted element");
+
+  /* body 1's contact edges reversed (the body on their right) */
+  mc_int *reversed = malloc(sizeof(mc_int) * 2 * (size_t)b->n_contact);
+  for (mc_int e = 0; e < b->n_contact; ++e)
+    reversed[2 * e] = b->contact[2 * e + 1] + 1, reversed[2 * e + 1] = b->contact[2 * e] + 1;
+  SUCCEEDS(mc_set_contact(m, 1, b->n_contact, reversed));
+  FAILS(mc_solve(m), MC_ERROR_CONTACT, "do not face each other");
+  printf("reversed host surface: %s\n", mc_errmsg(m));
+  ck_assert_ptr_nonnull(strstr(mc_errmsg(m), "Body 1's surface looks reversed"));
+  ck_assert_ptr_nonnull(strstr(mc_errmsg(m), "body 1's (0, 1) points away from body 2"));
+  ck_assert_ptr_null(strstr(mc_errmsg(m), "Body 2's surface"));
+  for (mc_int e = 0; e < b->n_contact; ++e)
+    reversed[2 * e] = b->contact[2 * e] + 1, reversed[2 * e + 1] = b->contact[2 * e + 1] + 1;
+  SUCCEEDS(mc_set_contact(m, 1, b->n_contact, reversed));
+  free(reversed);
+  assert_same_as_reference(m, &sh, "the surface given the right way round");
+  small_host_free(&sh);
+  mc_destroy(m);
+}
+END_TEST
+
 START_TEST(bad_host_input_is_refused_clearly) {
   mc_model *m = NULL;
   ck_assert_int_eq(mc_create(&m), MC_OK);
@@ -942,11 +1136,11 @@ START_TEST(bad_host_input_is_refused_clearly) {
     mc_int *bad = malloc(sizeof(mc_int) * 2 * (size_t)nn);
     memcpy(bad, equations, sizeof(mc_int) * 2 * (size_t)nn);
     bad[7] = n_eq + 1; /* base 1: n_eq is the last */
-    FAILS(mc_set_host_body(m, 1, nn, b->xy, bad, n_eq), MC_ERROR_ARGUMENT, "equations[7]");
+    FAILS(mc_set_host_body(m, 1, nn, b->xy, bad, n_eq), MC_ERROR_ARGUMENT, "equations(8)");
     printf("equation above n_equations: %s\n", mc_errmsg(m));
     memcpy(bad, equations, sizeof(mc_int) * 2 * (size_t)nn);
     bad[9] = bad[5]; /* node 4's y shares node 2's y equation (nodes 5 and 3 with base 1) */
-    FAILS(mc_set_host_body(m, 1, nn, b->xy, bad, n_eq), MC_ERROR_ARGUMENT, "equations[9]");
+    FAILS(mc_set_host_body(m, 1, nn, b->xy, bad, n_eq), MC_ERROR_ARGUMENT, "equations(10)");
     printf("two freedoms on one equation: %s\n", mc_errmsg(m));
     ck_assert_msg(strstr(mc_errmsg(m), "node 5") && strstr(mc_errmsg(m), "node 3"), "the message names nodes 5 and 3: %s",
                   mc_errmsg(m));
@@ -963,17 +1157,17 @@ START_TEST(bad_host_input_is_refused_clearly) {
     const mc_int rows[4] = {1, 2, 2, 1}, cols[4] = {1, 2, 1, 2};
     double vals[4] = {1, 1, 0.5, 0.5};
     const mc_int above[4] = {1, 2, n_eq + 1, 1};
-    FAILS(mc_add_stiffness(m, 1, 4, above, cols, vals, MC_MATRIX_FULL), MC_ERROR_ARGUMENT, "rows[2]");
+    FAILS(mc_add_stiffness(m, 1, 4, above, cols, vals, MC_MATRIX_FULL), MC_ERROR_ARGUMENT, "rows(3)");
     printf("row above the system: %s\n", mc_errmsg(m));
     const mc_int col_above[4] = {1, 2, 2, n_eq + 1};
-    FAILS(mc_add_stiffness(m, 1, 4, rows, col_above, vals, MC_MATRIX_FULL), MC_ERROR_ARGUMENT, "cols[3]");
+    FAILS(mc_add_stiffness(m, 1, 4, rows, col_above, vals, MC_MATRIX_FULL), MC_ERROR_ARGUMENT, "cols(4)");
     vals[3] = NAN;
-    FAILS(mc_add_stiffness(m, 1, 4, rows, cols, vals, MC_MATRIX_FULL), MC_ERROR_ARGUMENT, "values[3]");
+    FAILS(mc_add_stiffness(m, 1, 4, rows, cols, vals, MC_MATRIX_FULL), MC_ERROR_ARGUMENT, "values(4)");
     printf("NaN entry: %s\n", mc_errmsg(m));
     vals[3] = INFINITY;
-    FAILS(mc_add_stiffness(m, 1, 4, rows, cols, vals, MC_MATRIX_TRIANGLE), MC_ERROR_ARGUMENT, "values[3]");
+    FAILS(mc_add_stiffness(m, 1, 4, rows, cols, vals, MC_MATRIX_TRIANGLE), MC_ERROR_ARGUMENT, "values(4)");
     vals[3] = 0.5;
-    FAILS(mc_add_stiffness(m, 1, 4, rows, cols, vals, MC_MATRIX_TRIANGLE), MC_ERROR_ARGUMENT, "rows[3]");
+    FAILS(mc_add_stiffness(m, 1, 4, rows, cols, vals, MC_MATRIX_TRIANGLE), MC_ERROR_ARGUMENT, "rows(4)");
     printf("TRIANGLE with both triangles: %s\n", mc_errmsg(m));
     FAILS(mc_add_stiffness(m, 1, 4, rows, cols, vals, 0), MC_ERROR_ARGUMENT, "storage");
     FAILS(mc_add_stiffness(m, 2, 4, rows, cols, vals, MC_MATRIX_FULL), MC_ERROR_STATE, NULL); /* a mesh body */
@@ -1007,16 +1201,16 @@ START_TEST(bad_host_input_is_refused_clearly) {
     const mc_int eltvar[8] = {1, 2, 3, 4, 5, 6, 7, 8};
     double a_elt[32] = {1, 0.5, 0.5, 1, 2, 0, 0, 2};
     const mc_int ptr_ok[3] = {1, 3, 5}, ptr_start[3] = {2, 3, 5}, ptr_down[3] = {1, 4, 3};
-    FAILS(mc_add_element_matrices(m, 1, 2, ptr_start, eltvar, a_elt), MC_ERROR_ARGUMENT, "eltptr[0]");
+    FAILS(mc_add_element_matrices(m, 1, 2, ptr_start, eltvar, a_elt), MC_ERROR_ARGUMENT, "eltptr(1)");
     printf("eltptr[0] not the base: %s\n", mc_errmsg(m));
-    FAILS(mc_add_element_matrices(m, 1, 2, ptr_down, eltvar, a_elt), MC_ERROR_ARGUMENT, "eltptr[2]");
+    FAILS(mc_add_element_matrices(m, 1, 2, ptr_down, eltvar, a_elt), MC_ERROR_ARGUMENT, "eltptr(3)");
     printf("eltptr decreasing: %s\n", mc_errmsg(m));
     const mc_int var_above[8] = {1, 2, 3, n_eq + 1, 5, 6, 7, 8};
-    FAILS(mc_add_element_matrices(m, 1, 2, ptr_ok, var_above, a_elt), MC_ERROR_ARGUMENT, "eltvar[3]");
+    FAILS(mc_add_element_matrices(m, 1, 2, ptr_ok, var_above, a_elt), MC_ERROR_ARGUMENT, "eltvar(4)");
     a_elt[5] = NAN;
-    FAILS(mc_add_element_matrices(m, 1, 2, ptr_ok, eltvar, a_elt), MC_ERROR_ARGUMENT, "a_elt[5]");
+    FAILS(mc_add_element_matrices(m, 1, 2, ptr_ok, eltvar, a_elt), MC_ERROR_ARGUMENT, "a_elt(6)");
     a_elt[5] = 0.25; /* the second element's (1,0) = 0.25, its (0,1) = 0; with base 1 it is element 2 */
-    FAILS(mc_add_element_matrices(m, 1, 2, ptr_ok, eltvar, a_elt), MC_ERROR_ARGUMENT, "a_elt[6] (element 2");
+    FAILS(mc_add_element_matrices(m, 1, 2, ptr_ok, eltvar, a_elt), MC_ERROR_ARGUMENT, "a_elt(7) (element 2");
     printf("asymmetric element matrix: %s\n", mc_errmsg(m));
     FAILS(mc_add_element_matrices(m, 2, 2, ptr_ok, eltvar, a_elt), MC_ERROR_STATE, NULL);
   }
@@ -1028,7 +1222,7 @@ START_TEST(bad_host_input_is_refused_clearly) {
     memcpy(f, sh.hb.f, sizeof(double) * (size_t)n_eq);
     FAILS(mc_set_load_vector(m, 1, n_eq - 1, f), MC_ERROR_ARGUMENT, "n_equations");
     f[4] = NAN;
-    FAILS(mc_set_load_vector(m, 1, n_eq, f), MC_ERROR_ARGUMENT, "f[4]");
+    FAILS(mc_set_load_vector(m, 1, n_eq, f), MC_ERROR_ARGUMENT, "f(5)");
     FAILS(mc_set_load_vector(m, 2, n_eq, sh.hb.f), MC_ERROR_STATE, NULL);
     free(f);
   }
@@ -1106,6 +1300,8 @@ START_TEST(bad_host_input_is_refused_clearly) {
     snprintf(needle, sizeof needle, "equation %d", (int)e);
     FAILS(mc_solve(m), MC_ERROR_SINGULAR, needle);
     printf("negative diagonal: %s\n", mc_errmsg(m));
+    ck_assert_ptr_nonnull(strstr(mc_errmsg(m), "negative diagonal")); /* said as such, with its likely cause */
+    ck_assert_ptr_nonnull(strstr(mc_errmsg(m), "inverted element"));
     SUCCEEDS(mc_add_stiffness(m, 1, 1, &e, &e, &plus, MC_MATRIX_FULL));
   }
   assert_same_as_reference(m, &sh, "a negative diagonal repaired");
@@ -1159,6 +1355,12 @@ int main(void) {
   tcase_add_test(tc, hertz_host_equals_mesh);
   tcase_add_test(tc, layered_orthotropic_host_body_patch_test);
   suite_add_tcase(s, tc);
+  TCase *edges = tcase_create("host contact edges and host elements");
+  tcase_set_timeout(edges, 120);
+  tcase_add_test(edges, host_corner_middle_corner_sides);
+  tcase_add_loop_test(edges, host_curved_edges_checked, 0, 2);
+  tcase_add_test(edges, host_inverted_element_and_reversed_surface);
+  suite_add_tcase(s, edges);
   TCase *bad = tcase_create("bad input");
   tcase_set_timeout(bad, 120);
   tcase_add_test(bad, bad_host_input_is_refused_clearly);

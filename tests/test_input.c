@@ -134,9 +134,9 @@ static void scene_free(scene *s) {
   free(s->u1), free(s->u2), free(s->p);
 }
 
-/* "name[index] = id" as the library writes it */
-static const char *needle(char *buf, size_t size, const char *name, long index, long id) {
-  snprintf(buf, size, "%s[%ld] = %ld", name, index, id);
+/* "name[index] = id" as the library writes it in base 0, "name(index + 1) = id" in base 1 */
+static const char *needle(char *buf, size_t size, const char *name, long index, long id, int base) {
+  snprintf(buf, size, "%s = %ld", AT(name, index, base), id);
   return buf;
 }
 
@@ -244,16 +244,16 @@ START_TEST(test_mesh_arguments) {
   scene_usable(&s);
   /* ids: base - 1 and n_nodes + base are the first ids out of range on either side */
   cells[7] = base - 1;
-  FAILS(mc_set_mesh(m, 1, n, s.top.xy, nc, 3, cells), MC_ERROR_ARGUMENT, needle(buf, sizeof buf, "cells", 7, base - 1));
+  FAILS(mc_set_mesh(m, 1, n, s.top.xy, nc, 3, cells), MC_ERROR_ARGUMENT, needle(buf, sizeof buf, "cells", 7, base - 1, base));
   FAILS(mc_set_mesh(m, 1, n, s.top.xy, nc, 3, cells), MC_ERROR_ARGUMENT, base ? "(cell 3)" : "(cell 2)");
   cells[7] = s.top.cells[7] + base;
   cells[3 * nc - 1] = n + base;
   FAILS(mc_set_mesh(m, 1, n, s.top.xy, nc, 3, cells), MC_ERROR_ARGUMENT,
-        needle(buf, sizeof buf, "cells", 3 * nc - 1, n + base));
+        needle(buf, sizeof buf, "cells", 3 * nc - 1, n + base, base));
   for (k = 0; k < 2; ++k) {
     cells[3 * nc - 1] = extreme[k];
     FAILS(mc_set_mesh(m, 1, n, s.top.xy, nc, 3, cells), MC_ERROR_ARGUMENT,
-          needle(buf, sizeof buf, "cells", 3 * nc - 1, extreme[k]));
+          needle(buf, sizeof buf, "cells", 3 * nc - 1, extreme[k], base));
   }
   cells[3 * nc - 1] = s.top.cells[3 * nc - 1] + base;
   scene_usable(&s);
@@ -349,16 +349,16 @@ START_TEST(test_extreme_ids) {
     mc_int nodes[2] = {base, id};
     mc_int edges[4] = {s.top.side_edges[SC_TOP][0] + base, s.top.side_edges[SC_TOP][1] + base, id, base};
     double v[4] = {0, 0, 0, 0};
-    FAILS(mc_fix(m, 1, 2, nodes, MC_XY, NULL), MC_ERROR_ARGUMENT, needle(buf, sizeof buf, "nodes", 1, id));
-    FAILS(mc_add_nodal_force(m, 2, 2, nodes, v), MC_ERROR_ARGUMENT, needle(buf, sizeof buf, "nodes", 1, id));
-    FAILS(mc_add_traction(m, 1, 2, edges, v), MC_ERROR_ARGUMENT, needle(buf, sizeof buf, "edges", 2, id));
-    FAILS(mc_add_pressure(m, 1, 2, edges, v), MC_ERROR_ARGUMENT, needle(buf, sizeof buf, "edges", 2, id));
-    FAILS(mc_set_contact(m, 1, 2, edges), MC_ERROR_ARGUMENT, needle(buf, sizeof buf, "edges", 2, id));
-    FAILS(mc_set_gap_offset(m, 2, nodes, v), MC_ERROR_ARGUMENT, needle(buf, sizeof buf, "nodes", 1, id));
+    FAILS(mc_fix(m, 1, 2, nodes, MC_XY, NULL), MC_ERROR_ARGUMENT, needle(buf, sizeof buf, "nodes", 1, id, base));
+    FAILS(mc_add_nodal_force(m, 2, 2, nodes, v), MC_ERROR_ARGUMENT, needle(buf, sizeof buf, "nodes", 1, id, base));
+    FAILS(mc_add_traction(m, 1, 2, edges, v), MC_ERROR_ARGUMENT, needle(buf, sizeof buf, "edges", 2, id, base));
+    FAILS(mc_add_pressure(m, 1, 2, edges, v), MC_ERROR_ARGUMENT, needle(buf, sizeof buf, "edges", 2, id, base));
+    FAILS(mc_set_contact(m, 1, 2, edges), MC_ERROR_ARGUMENT, needle(buf, sizeof buf, "edges", 2, id, base));
+    FAILS(mc_set_gap_offset(m, 2, nodes, v), MC_ERROR_ARGUMENT, needle(buf, sizeof buf, "nodes", 1, id, base));
     {
       mc_int cells[6] = {base, 1 + base, 2 + base, base, id, 2 + base};
       double xy[8] = {0, 0, 1, 0, 1, 1, 0, 1};
-      FAILS(mc_set_mesh(m, 2, 4, xy, 2, 3, cells), MC_ERROR_ARGUMENT, needle(buf, sizeof buf, "cells", 4, id));
+      FAILS(mc_set_mesh(m, 2, 4, xy, 2, 3, cells), MC_ERROR_ARGUMENT, needle(buf, sizeof buf, "cells", 4, id, base));
     }
   }
   scene_usable(&s);
@@ -384,19 +384,19 @@ START_TEST(test_edges) {
   same[0] = same[1] = sc_node(top, 0, 0) + base;
   side = shifted(top, SC_BOTTOM, base);
   /* loads: not an edge on the boundary (MC_ERROR_MESH), naming the pair of entries */
-  FAILS(mc_add_traction(m, 1, 1, interior, t), MC_ERROR_MESH, "edges[0..1]");
-  FAILS(mc_add_traction(m, 1, 1, corners, t), MC_ERROR_MESH, "edges[0..1]");
-  FAILS(mc_add_pressure(m, 1, 1, same, t), MC_ERROR_MESH, "edges[0..1]");
+  FAILS(mc_add_traction(m, 1, 1, interior, t), MC_ERROR_MESH, AT_RANGE("edges", 0, 1, base));
+  FAILS(mc_add_traction(m, 1, 1, corners, t), MC_ERROR_MESH, AT_RANGE("edges", 0, 1, base));
+  FAILS(mc_add_pressure(m, 1, 1, same, t), MC_ERROR_MESH, AT_RANGE("edges", 0, 1, base));
   {
     mc_int two[4] = {side[0], side[1], interior[0], interior[1]};
-    FAILS(mc_add_pressure(m, 1, 2, two, t), MC_ERROR_MESH, "edges[2..3]");
+    FAILS(mc_add_pressure(m, 1, 2, two, t), MC_ERROR_MESH, AT_RANGE("edges", 2, 3, base));
     snprintf(buf, sizeof buf, "(%d, %d)", (int)interior[0], (int)interior[1]);
     FAILS(mc_add_traction(m, 1, 2, two, t), MC_ERROR_MESH, buf);
   }
   /* with base 1, 0-based ids of the last node are one off */
   if (base == 1) {
     mc_int zero_based[2] = {0, 1};
-    FAILS(mc_add_traction(m, 1, 1, zero_based, t), MC_ERROR_ARGUMENT, "edges[0] = 0");
+    FAILS(mc_add_traction(m, 1, 1, zero_based, t), MC_ERROR_ARGUMENT, "edges(1) = 0");
     FAILS(mc_add_traction(m, 1, 1, zero_based, t), MC_ERROR_ARGUMENT, "index base 1");
   }
   scene_usable(&s);
@@ -404,9 +404,9 @@ START_TEST(test_edges) {
   /* contact surfaces */
   FAILS(mc_set_contact(m, 1, 0, side), MC_ERROR_ARGUMENT, "n_edges = 0");
   FAILS(mc_set_contact(m, 1, -1, side), MC_ERROR_ARGUMENT, "n_edges = -1");
-  FAILS(mc_set_contact(m, 1, 1, interior), MC_ERROR_CONTACT, "edges[0..1]");
-  FAILS(mc_set_contact(m, 1, 1, corners), MC_ERROR_CONTACT, "edges[0..1]");
-  FAILS(mc_set_contact(m, 2, 1, same), MC_ERROR_CONTACT, "edges[0..1]");
+  FAILS(mc_set_contact(m, 1, 1, interior), MC_ERROR_CONTACT, AT_RANGE("edges", 0, 1, base));
+  FAILS(mc_set_contact(m, 1, 1, corners), MC_ERROR_CONTACT, AT_RANGE("edges", 0, 1, base));
+  FAILS(mc_set_contact(m, 2, 1, same), MC_ERROR_CONTACT, AT_RANGE("edges", 0, 1, base));
   reversed[0] = side[2], reversed[1] = side[3], reversed[2] = side[3], reversed[3] = side[2];
   snprintf(buf, sizeof buf, "edge (%d, %d) is given twice", (int)(side[2] < side[3] ? side[2] : side[3]),
            (int)(side[2] < side[3] ? side[3] : side[2]));
@@ -450,11 +450,11 @@ START_TEST(test_pinched_contact) {
   SUCCEEDS(mc_set_contact(m, 2, 1, top));
   snprintf(buf, sizeof buf, "arrive at node %d", base);
   FAILS(mc_set_contact(m, 1, 4, loop), MC_ERROR_CONTACT, buf);
-  FAILS(mc_set_contact(m, 1, 4, loop), MC_ERROR_CONTACT, "edges[6..7]");
+  FAILS(mc_set_contact(m, 1, 4, loop), MC_ERROR_CONTACT, AT_RANGE("edges", 6, 7, base));
   FAILS(mc_set_contact(m, 1, 2, both), MC_ERROR_CONTACT, buf);
   snprintf(buf, sizeof buf, "leave node %d", base);
   FAILS(mc_set_contact(m, 1, 2, out), MC_ERROR_CONTACT, buf);
-  FAILS(mc_set_contact(m, 1, 2, out), MC_ERROR_CONTACT, "edges[2..3]");
+  FAILS(mc_set_contact(m, 1, 2, out), MC_ERROR_CONTACT, AT_RANGE("edges", 2, 3, base));
   /* the model is usable: a simple chain of the same mesh solves. Each triangle is held by
      supports (they would hinge about node 0), body 1's weight pulls it towards body 2. */
   SUCCEEDS(mc_set_contact(m, 1, 2, chain));
@@ -554,8 +554,8 @@ START_TEST(test_non_finite) {
     double v[4] = {0, 0, 0, x}, d[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
     double *dd = malloc(sizeof(double) * 9 * (size_t)s.top.n_cells), *xy;
     mc_int c, *cells;
-    FAILS(mc_fix(m, 1, 2, nodes, MC_Y, v), MC_ERROR_ARGUMENT, "values[3]");
-    FAILS(mc_fix(m, 1, 2, nodes, MC_XY, v), MC_ERROR_ARGUMENT, "values[3]");
+    FAILS(mc_fix(m, 1, 2, nodes, MC_Y, v), MC_ERROR_ARGUMENT, AT("values", 3, base));
+    FAILS(mc_fix(m, 1, 2, nodes, MC_XY, v), MC_ERROR_ARGUMENT, AT("values", 3, base));
     {
       /* components outside the mask are ignored, even when not finite (a fresh model) */
       mc_model *m2 = NULL;
@@ -566,10 +566,10 @@ START_TEST(test_non_finite) {
       ck_assert_str_eq(mc_errmsg(m2), "");
       mc_destroy(m2);
     }
-    FAILS(mc_add_nodal_force(m, 1, 2, nodes, v), MC_ERROR_ARGUMENT, "force[3]");
-    FAILS(mc_add_traction(m, 1, 2, edges, v), MC_ERROR_ARGUMENT, "traction[3]");
+    FAILS(mc_add_nodal_force(m, 1, 2, nodes, v), MC_ERROR_ARGUMENT, AT("force", 3, base));
+    FAILS(mc_add_traction(m, 1, 2, edges, v), MC_ERROR_ARGUMENT, AT("traction", 3, base));
     v[1] = x;
-    FAILS(mc_add_pressure(m, 1, 2, edges, v), MC_ERROR_ARGUMENT, "pressure[1]");
+    FAILS(mc_add_pressure(m, 1, 2, edges, v), MC_ERROR_ARGUMENT, AT("pressure", 1, base));
     FAILS(mc_set_body_force(m, 2, x, 0), MC_ERROR_ARGUMENT, "fx");
     FAILS(mc_set_body_force(m, 2, 0, x), MC_ERROR_ARGUMENT, "fy");
     FAILS(mc_set_plane(m, MC_PLANE_STRAIN, x), MC_ERROR_ARGUMENT, "thickness");
@@ -578,19 +578,19 @@ START_TEST(test_non_finite) {
     FAILS(mc_set_option_real(m, MC_OPTION_TOLERANCE, x), MC_ERROR_ARGUMENT, "value");
     /* offsets of body-1 contact nodes (the bottom side) */
     nodes[0] = s.top.side_nodes[SC_BOTTOM][0] + base, nodes[1] = s.top.side_nodes[SC_BOTTOM][1] + base;
-    FAILS(mc_set_gap_offset(m, 2, nodes, v), MC_ERROR_ARGUMENT, "offset[1]");
+    FAILS(mc_set_gap_offset(m, 2, nodes, v), MC_ERROR_ARGUMENT, AT("offset", 1, base));
     for (c = 0; c < s.top.n_cells; ++c) memcpy(dd + 9 * c, d, sizeof d);
     dd[9 * (s.top.n_cells - 1) + 4] = x;
     {
       char buf[32];
-      snprintf(buf, sizeof buf, "d[%d]", (int)(9 * (s.top.n_cells - 1) + 4));
+      snprintf(buf, sizeof buf, "%s", AT("d", 9 * (s.top.n_cells - 1) + 4, base));
       FAILS(mc_set_cell_elasticity(m, 1, dd), MC_ERROR_ARGUMENT, buf);
     }
     xy = malloc(sizeof(double) * 2 * (size_t)s.bottom.n_nodes);
     memcpy(xy, s.bottom.xy, sizeof(double) * 2 * (size_t)s.bottom.n_nodes);
     xy[0] = x;
     cells = sc_ids(s.bottom.cells, 4 * s.bottom.n_cells, base);
-    FAILS(mc_set_mesh(m, 2, s.bottom.n_nodes, xy, s.bottom.n_cells, 4, cells), MC_ERROR_ARGUMENT, "xy[0]");
+    FAILS(mc_set_mesh(m, 2, s.bottom.n_nodes, xy, s.bottom.n_cells, 4, cells), MC_ERROR_ARGUMENT, AT("xy", 0, base));
     free(edges), free(dd), free(xy), free(cells);
   }
   /* finite but huge coordinates: span overflows to infinity; rejected, not a crash */
@@ -796,7 +796,7 @@ START_TEST(test_out_of_order) {
     /* the index base changes how ids are read, not the stored mesh */
     SUCCEEDS(mc_set_index_base(m, 1 - base));
     cells = sc_ids(s.top.cells, 3 * s.top.n_cells, base);
-    FAILS(mc_set_mesh(m, 1, s.top.n_nodes, s.top.xy, s.top.n_cells, 3, cells), MC_ERROR_ARGUMENT, "cells[");
+    FAILS(mc_set_mesh(m, 1, s.top.n_nodes, s.top.xy, s.top.n_cells, 3, cells), MC_ERROR_ARGUMENT, 1 - base ? "cells(" : "cells[");
     free(cells);
     SUCCEEDS(mc_set_index_base(m, base));
     mc_destroy(m2);
@@ -839,14 +839,14 @@ START_TEST(test_gap_offset) {
   nodes[0] = s.top.side_nodes[SC_BOTTOM][1] + base;
   nodes[1] = s.top.side_nodes[SC_TOP][1] + base; /* on body 1, not on its contact surface */
   inner = sc_node(&s.top, 2, 1) + base;
-  snprintf(buf, sizeof buf, "nodes[1] = %d", (int)nodes[1]);
+  snprintf(buf, sizeof buf, "%s = %d", AT("nodes", 1, base), (int)nodes[1]);
   FAILS(mc_set_gap_offset(m, 2, nodes, off), MC_ERROR_ARGUMENT, buf);
-  FAILS(mc_set_gap_offset(m, 1, &inner, off), MC_ERROR_ARGUMENT, "nodes[0]");
+  FAILS(mc_set_gap_offset(m, 1, &inner, off), MC_ERROR_ARGUMENT, AT("nodes", 0, base));
   FAILS(mc_set_gap_offset(m, -1, nodes, off), MC_ERROR_ARGUMENT, "n = -1");
   FAILS(mc_set_gap_offset(m, 1, NULL, off), MC_ERROR_ARGUMENT, "nodes is NULL");
   FAILS(mc_set_gap_offset(m, 1, nodes, NULL), MC_ERROR_ARGUMENT, "offset is NULL");
   nodes[1] = s.top.n_nodes + base;
-  FAILS(mc_set_gap_offset(m, 2, nodes, off), MC_ERROR_ARGUMENT, needle(buf, sizeof buf, "nodes", 1, s.top.n_nodes + base));
+  FAILS(mc_set_gap_offset(m, 2, nodes, off), MC_ERROR_ARGUMENT, needle(buf, sizeof buf, "nodes", 1, s.top.n_nodes + base, base));
   scene_usable(&s);
   /* zero offsets on the right nodes: accepted, the same answer */
   nodes[1] = s.top.side_nodes[SC_BOTTOM][2] + base;

@@ -387,9 +387,9 @@ START_TEST(test_index_base) {
   OK(sc_traction_side(m, 1, &mesh, SC_TOP, 0.3, -0.2, 1));
   /* id 0 is out of range in base 1, n_nodes is in range */
   bad[0] = 0;
-  FAILS(mc_add_nodal_force(m, 1, 1, bad, force), MC_ERROR_ARGUMENT, "nodes[0] = 0");
+  FAILS(mc_add_nodal_force(m, 1, 1, bad, force), MC_ERROR_ARGUMENT, "nodes(1) = 0"); /* the position in base 1 too */
   bad[0] = mesh.n_nodes + 1;
-  FAILS(mc_add_nodal_force(m, 1, 1, bad, force), MC_ERROR_ARGUMENT, "nodes[0]");
+  FAILS(mc_add_nodal_force(m, 1, 1, bad, force), MC_ERROR_ARGUMENT, "nodes(1)");
   OK(mc_add_nodal_force(m, 1, 1, &corner1, force));
   OK(mc_solve(m));
   OK(mc_get_displacement(m, 1, u1));
@@ -402,7 +402,7 @@ START_TEST(test_index_base) {
   {
     mc_int cells[3] = {0, 1, 2};
     double xy[6] = {0, 0, 1, 0, 0, 1};
-    FAILS(mc_set_mesh(m, 2, 3, xy, 1, 3, cells), MC_ERROR_ARGUMENT, "cells[0]");
+    FAILS(mc_set_mesh(m, 2, 3, xy, 1, 3, cells), MC_ERROR_ARGUMENT, "cells(1)");
   }
   FAILS(mc_set_index_base(m, 2), MC_ERROR_ARGUMENT, "base");
   FAILS(mc_set_index_base(m, -1), MC_ERROR_ARGUMENT, "base");
