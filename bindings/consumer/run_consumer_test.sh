@@ -5,7 +5,9 @@
 #            (mortarcontact::mortarcontact, mortarcontact::mortarcontact_static)
 #   C++      examples/cxx/readme_example.cpp, #include <mortarcontact.hpp>, -Wall -Wextra -Werror
 #   Fortran  examples/fortran/patch_test.f90 against the compiled module: pkg-config
-#            mortarcontact-fortran, and find_package (mortarcontact::fortran, ::fortran_static)
+#            mortarcontact-fortran, and find_package (mortarcontact::fortran, ::fortran_static);
+#            examples/legacy/contact_blocks.f90 with the tutorial's line (an rpath instead of
+#            LD_LIBRARY_PATH)
 #   Python   the prefix is a virtual environment: its python imports the installed package,
 #            which loads the installed library, and solves examples/python/readme_example.py;
 #            MORTARCONTACT_LIBRARY still overrides; a DESTDIR install for /usr gets Debian's
@@ -141,6 +143,13 @@ fortran_consumers() {
   (cd "$work" && "$FC" -o "$work/f_pc_shared" "$repo/examples/fortran/patch_test.f90" $fflags)
   needs "$work/f_pc_shared" libmortarcontact_fortran.so.0 yes
   LD_LIBRARY_PATH=$libdir "$work/f_pc_shared"
+
+  step "Fortran: the legacy program with docs/tutorial_legacy.md's line (pkg-config and an rpath, no LD_LIBRARY_PATH)"
+  # shellcheck disable=SC2046
+  (cd "$work" && "$FC" -O2 -o "$work/f_legacy" "$repo/examples/legacy/fe_library.f90" \
+     "$repo/examples/legacy/contact_blocks.f90" $("$PKG_CONFIG" --cflags --libs mortarcontact-fortran) \
+     -Wl,-rpath,"$("$PKG_CONFIG" --variable=libdir mortarcontact-fortran)")
+  run_logged f_legacy "$work/f_legacy"
 
   step "Fortran: CMake find_package(mortarcontact COMPONENTS fortran), shared and static"
   run_logged fortran-configure "$CMAKE" -S "$here/fortran" -B "$work/fortran-build" \

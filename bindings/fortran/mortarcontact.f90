@@ -24,6 +24,7 @@
 !>
 !> Free a model with mc_destroy (there is no finalizer: a type(mc_model) may be copied).
 !>
+!> Standard: Fortran 2008 with no extensions (the build compiles it with gfortran -std=f2008).
 !> Build: gfortran -c mortarcontact.f90, then link the program with -lmortarcontact.
 module mortarcontact
   use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_associated, c_f_pointer, c_char, &
@@ -180,7 +181,7 @@ module mortarcontact
        integer(c_int), value :: body, components
        integer(c_int32_t), value :: n
        integer(c_int32_t), intent(in) :: nodes(*)
-       real(c_double), intent(in), optional :: values(*)  ! absent = NULL = zero
+       real(c_double), intent(in) :: values(*)  ! not OPTIONAL: that needs Fortran 2018 in BIND(C)
      end function
      integer(c_int) function c_mc_add_traction(m, body, n_edges, edges, traction) &
           bind(C, name="mc_add_traction")
@@ -609,14 +610,19 @@ contains
     integer, intent(in) :: body, components
     integer(mc_int), intent(in) :: nodes(:)
     real(mc_real), intent(in), optional :: values(:, :)
+    real(mc_real), allocatable :: zeros(:, :)
     if (present(values)) then
        if (.not. shape_ok(model, 'mc_fix: values', shape(values), [2, size(nodes)], '(2, size(nodes))', &
             status)) return
        status = finish(model, c_mc_fix(model%ptr, int(body, c_int), int(size(nodes), mc_int), nodes, &
             int(components, c_int), values))
     else
+       ! zeros, as the C API's NULL means: passing NULL would need an OPTIONAL argument of a
+       ! BIND(C) interface, Fortran 2018, and the module keeps to Fortran 2008
+       allocate(zeros(2, size(nodes)))
+       zeros = 0._mc_real
        status = finish(model, c_mc_fix(model%ptr, int(body, c_int), int(size(nodes), mc_int), nodes, &
-            int(components, c_int)))
+            int(components, c_int), zeros))
     end if
   end function mc_fix
 

@@ -2,11 +2,15 @@
 ! contact_blocks.f90 - a legacy finite-element program adds contact between two of its bodies
 ! through mortarcontact's host bodies. docs/tutorial_legacy.md walks through it.
 !
-! The program is written in the manner of Smith and Griffiths' "Programming the Finite Element
-! Method": its own 8-node quadrilateral (fe_library.f90: plane strain, 3 x 3 Gauss points),
-! restraints in nf (0 = restrained, the free freedoms then numbered 1..neq node by node), element
-! steering vectors in g_g(ndof, nels), element stiffnesses stored element by element in
-! storkm(ndof, ndof, nels), and its own load vector loads(0:neq).
+! The program is written against Smith, Griffiths and Margetts' "Programming the Finite Element
+! Method" (5th ed.) library, modules geom and main (fe_library.f90 here, a stand-in with the
+! same routine names, argument lists and numbering: link the real library instead and the
+! program is unchanged). As their chapter-5 programs do, it builds its meshes with geom_rect
+! (8-node quadrilaterals, nodes and elements counted down each column from the TOP), numbers the
+! restraints with formnf, integrates with sample/shape_der/beemat/deemat at 3 x 3 Gauss points,
+! and stores the stiffness both ways their programs do: element by element (g_g and storkm, as
+! the preconditioned conjugate gradient programs) and in skyline storage (kv and kdiag from
+! fkdiag and fsparv, as p51 before sparin and spabac). Its load vector is loads(0:neq).
 !
 ! The scene, plane strain with unit thickness:
 !   body 1  a crowned block (a short cylinder): -1 <= x <= 1, its top y = 1, its bottom a
@@ -15,39 +19,49 @@
 !           vertically and in rotation by contact alone;
 !   body 2  a foundation -3 <= x <= 3, -2 <= y <= 0; 16 x 4 elements; E = 100, v = 0.25; its
 !           base restrained.
-! Steps 1-4 are what the legacy program did before it knew about contact. Steps 5-7 hand both
-! bodies to mortarcontact as host bodies (their nf, g_g, storkm, loads and contact sides), solve,
-! and read the displacements and contact forces back into the program's own arrays. Step 8 solves
-! again with body 2 as a library mesh body of Q8 cells (mc_set_mesh). Step 9 solves the same
-! scene with both bodies as mesh bodies (mc_set_mesh, mc_set_material, mc_fix, mc_add_pressure)
-! and checks that the displacements and the contact pressures of steps 5 and 8 agree with it to
-! 1e-10 of their largest values.
+! Steps 1-4 are what the program did before it knew about contact. Steps 5-7 hand both bodies
+! to mortarcontact as host bodies (nf, g_g, storkm, loads and the contact sides), solve, and read
+! the displacements and contact forces back into the program's own arrays. Step 8 solves again
+! with both bodies handed over as their skyline matrices kv, kdiag, and checks body 2 against the
+! program's own sparin and spabac. Step 9 solves with body 2 as a library mesh body of Q8 cells
+! (mc_set_mesh). Step 10 solves the same scene with both bodies as mesh bodies (mc_set_mesh,
+! mc_set_material, mc_fix, mc_add_pressure) and checks that the displacements and the contact
+! pressures of steps 5, 8 and 9 agree with it to 1e-10 of their largest values.
 !
 ! Exit status: 0 if they agree, 1 if they do not, 2 if a call fails. Build and run: ctest runs it
-! as tutorial_legacy (examples/legacy/CMakeLists.txt); by hand, with the library installed,
-!   gfortran fe_library.f90 contact_blocks.f90 $(pkg-config --cflags --libs mortarcontact-fortran)
+! as tutorial_legacy (examples/legacy/CMakeLists.txt); by hand, with the library installed in
+! PREFIX (docs/tutorial_legacy.md, "Building against an installed library"),
+!   gfortran fe_library.f90 contact_blocks.f90 $(pkg-config --cflags --libs mortarcontact-fortran) \
+!     -Wl,-rpath,$(pkg-config --variable=libdir mortarcontact-fortran)
 !-------------------------------------------------------------------------------------------------
 program contact_blocks
-  use fe_library
+  use geom
+  use main
   use mortarcontact
   implicit none
+  integer, parameter :: iwp = selected_real_kind(15)
   integer, parameter :: nod = 8, nodof = 2, ndof = nod * nodof, nip = 9
-  ! Smith and Griffiths' local node order (fe_library.f90) in the library's (Gmsh's) order:
+  character(len=15), parameter :: element = 'quadrilateral'
+  ! The local order of the 8-node quadrilateral (fe_library.f90) in the library's (Gmsh's) order:
   ! corners counter-clockwise from (-1, -1), then the mid-sides of sides 1-2, 2-3, 3-4, 4-1
   integer, parameter :: to_library(nod) = [1, 7, 5, 3, 8, 6, 4, 2]
-  ! an element's bottom and top sides as (end, end, middle) with the element on their left
-  integer, parameter :: bottom_side(3) = [1, 7, 8], top_side(3) = [5, 3, 4]
-  integer, parameter :: host_host = 1, host_mesh = 2, mesh_mesh = 3     ! the three solves
+  ! An element's bottom and top sides in the book's order, corner-middle-corner, each walked with
+  ! the element on its left; mc_set_contact_curved wants (end, end, middle): side(to_curved)
+  integer, parameter :: bottom_side(3) = [1, 8, 7], top_side(3) = [5, 4, 3], to_curved(3) = [1, 3, 2]
+  integer, parameter :: host_host = 1, skyline = 2, host_mesh = 3, mesh_mesh = 4   ! the solves
   real(iwp), parameter :: p = 1.5_iwp, tolerance = 1.e-10_iwp
 
   type body_arrays                                   ! what the program holds for each body
      integer :: nxe, nye, nn, nels, neq
      real(iwp) :: e, v                               ! Young's modulus, Poisson's ratio
+     real(iwp), allocatable :: x_coords(:), y_coords(:)  ! mesh lines for geom_rect, y top down
      real(iwp), allocatable :: g_coord(:, :)         ! (2, nn) node coordinates
      integer, allocatable :: g_num(:, :)             ! (nod, nels) element nodes
      integer, allocatable :: nf(:, :)                ! (nodof, nn) equation numbers, 0 = restrained
      integer, allocatable :: g_g(:, :)               ! (ndof, nels) steering vectors
      real(iwp), allocatable :: storkm(:, :, :)       ! (ndof, ndof, nels) element stiffnesses
+     integer, allocatable :: kdiag(:)                ! (neq) skyline: positions of the diagonals
+     real(iwp), allocatable :: kv(:)                 ! (kdiag(neq)) skyline: lower triangle
      real(iwp), allocatable :: loads(:)              ! (0:neq) load vector
      real(iwp), allocatable :: displ(:)              ! (0:neq) solution vector
      real(iwp), allocatable :: fcont(:)              ! (0:neq) contact forces as a load vector
@@ -63,35 +77,60 @@ program contact_blocks
   integer :: num(nod), g(ndof)
   integer(mc_int64) :: iterations, rows, active
   real(iwp) :: points(nip, 2), weights(nip), dee(3, 3), coord(nod, 2), der(2, nod), deriv(2, nod)
-  real(iwp) :: jac(2, 2), det, bee(3, ndof), km(ndof, ndof), kd(ndof), side
-  real(iwp) :: du(2), dp(2)
-  real(iwp), allocatable :: residual(:), sigma(:, :)
+  real(iwp) :: jac(2, 2), det, bee(3, ndof), km(ndof, ndof), kd(ndof), side, bottom
+  real(iwp) :: du(3), dp(3), dx
+  real(iwp), allocatable :: residual(:), sigma(:, :), kv_factor(:), x(:)
   character(len=:), allocatable :: refusal
   logical :: passed
 
   ! ---- step 1: the meshes of the two bodies ----
+  ! geom_rect's mesh lines: x_coords left to right, y_coords from the TOP down (row 1 is the top)
   b(1)%nxe = 8
   b(1)%nye = 4
   b(1)%e = 200._iwp
   b(1)%v = 0.3_iwp
-  call mesh_q8(b(1)%nxe, b(1)%nye, -1._iwp, 2._iwp, 1._iwp, 1._iwp, 10._iwp, b(1)%g_coord, b(1)%g_num)
+  b(1)%x_coords = [(-1._iwp + 2._iwp * i / b(1)%nxe, i = 0, b(1)%nxe)]
+  b(1)%y_coords = [(1._iwp - 1._iwp * i / b(1)%nye, i = 0, b(1)%nye)]
   b(2)%nxe = 16
   b(2)%nye = 4
   b(2)%e = 100._iwp
   b(2)%v = 0.25_iwp
-  call mesh_q8(b(2)%nxe, b(2)%nye, -3._iwp, 6._iwp, 0._iwp, 2._iwp, 0._iwp, b(2)%g_coord, b(2)%g_num)
+  b(2)%x_coords = [(-3._iwp + 6._iwp * i / b(2)%nxe, i = 0, b(2)%nxe)]
+  b(2)%y_coords = [(0._iwp - 2._iwp * i / b(2)%nye, i = 0, b(2)%nye)]
   do ib = 1, 2
-     b(ib)%nn = size(b(ib)%g_coord, 2)
-     b(ib)%nels = size(b(ib)%g_num, 2)
+     call mesh_size(element, nod, b(ib)%nels, b(ib)%nn, b(ib)%nxe, b(ib)%nye)
+     allocate(b(ib)%g_coord(2, b(ib)%nn), b(ib)%g_num(nod, b(ib)%nels))
+     do iel = 1, b(ib)%nels
+        call geom_rect(element, iel, b(ib)%x_coords, b(ib)%y_coords, coord, num, 'y')
+        b(ib)%g_num(:, iel) = num
+        b(ib)%g_coord(:, num) = transpose(coord)
+     end do
   end do
-  ! elements are numbered column by column from the bottom: element (ip, iq) is (ip - 1) * nye + iq
+  ! body 1's bottom becomes the arc y = 10 - sqrt(100 - x**2): each node keeps its fraction of
+  ! the height between the arc and the top y = 1 (geom_rect makes rectangles only)
+  do i = 1, b(1)%nn
+     bottom = 10._iwp - sqrt(100._iwp - b(1)%g_coord(1, i)**2)
+     b(1)%g_coord(2, i) = bottom + (1._iwp - bottom) * b(1)%g_coord(2, i)
+  end do
+  ! geom_rect counts down each column: element (ip, iq), iq = 1 the TOP row, is (ip - 1) * nye + iq.
+  ! Body 1 touches with its bottom row (iq = nye), body 2 with its top row (iq = 1).
   allocate(b(1)%surface(3, b(1)%nxe), b(2)%surface(3, b(2)%nxe), top(3, b(1)%nxe))
   do ip = 1, b(1)%nxe
-     b(1)%surface(:, ip) = b(1)%g_num(bottom_side, (ip - 1) * b(1)%nye + 1)
-     top(:, ip) = b(1)%g_num(top_side, ip * b(1)%nye)
+     b(1)%surface(:, ip) = b(1)%g_num(bottom_side(to_curved), ip * b(1)%nye)
+     top(:, ip) = b(1)%g_num(top_side(to_curved), (ip - 1) * b(1)%nye + 1)
   end do
   do ip = 1, b(2)%nxe
-     b(2)%surface(:, ip) = b(2)%g_num(top_side, ip * b(2)%nye)
+     b(2)%surface(:, ip) = b(2)%g_num(top_side(to_curved), (ip - 1) * b(2)%nye + 1)
+  end do
+  ! a contact side must lie on the boundary: an interior line (the wrong row) belongs to two elements
+  do ib = 1, 2
+     do k = 1, size(b(ib)%surface, 2)
+        if (count(any(b(ib)%g_num == b(ib)%surface(1, k), 1) .and. &
+             any(b(ib)%g_num == b(ib)%surface(2, k), 1)) /= 1) then
+           write (*, '(a, i0, a, i0, a)') 'contact_blocks: body ', ib, ' contact side ', k, ' is not on the boundary'
+           stop 1
+        end if
+     end do
   end do
 
   ! ---- step 2: restraints and equation numbering ----
@@ -109,30 +148,45 @@ program contact_blocks
      if (abs(b(2)%g_coord(2, i) + 2._iwp) < 1.e-9_iwp) b(2)%nf(:, i) = 0
   end do
   do ib = 1, 2
-     call formnf(b(ib)%nf, b(ib)%neq)
+     call formnf(b(ib)%nf)
+     b(ib)%neq = maxval(b(ib)%nf)
   end do
 
   ! ---- step 3: element stiffness integration and storage ----
-  call sample_3x3(points, weights)
+  ! the skyline profile first, as p51 does: row lengths from every steering vector, then positions
   do ib = 1, 2
-     allocate(b(ib)%g_g(ndof, b(ib)%nels), b(ib)%storkm(ndof, ndof, b(ib)%nels))
+     allocate(b(ib)%g_g(ndof, b(ib)%nels), b(ib)%kdiag(b(ib)%neq))
+     b(ib)%kdiag = 0
+     do iel = 1, b(ib)%nels
+        call num_to_g(b(ib)%g_num(:, iel), b(ib)%nf, g)
+        b(ib)%g_g(:, iel) = g
+        call fkdiag(b(ib)%kdiag, g)
+     end do
+     do i = 2, b(ib)%neq
+        b(ib)%kdiag(i) = b(ib)%kdiag(i) + b(ib)%kdiag(i - 1)
+     end do
+     allocate(b(ib)%kv(b(ib)%kdiag(b(ib)%neq)), b(ib)%storkm(ndof, ndof, b(ib)%nels))
+     b(ib)%kv = 0._iwp
+  end do
+  call sample(element, points, weights)
+  do ib = 1, 2
      call deemat(dee, b(ib)%e, b(ib)%v)
      do iel = 1, b(ib)%nels
         num = b(ib)%g_num(:, iel)
         coord = transpose(b(ib)%g_coord(:, num))
-        call num_to_g(num, b(ib)%nf, g)
-        b(ib)%g_g(:, iel) = g
+        g = b(ib)%g_g(:, iel)
         km = 0._iwp
         do i = 1, nip
-           call shape_der_q8(der, points, i)
+           call shape_der(der, points, i)
            jac = matmul(der, coord)
            det = determinant(jac)
-           call invert2(jac)
+           call invert(jac)
            deriv = matmul(jac, der)
            call beemat(bee, deriv)
            km = km + matmul(matmul(transpose(bee), dee), bee) * det * weights(i)
         end do
-        b(ib)%storkm(:, :, iel) = km
+        b(ib)%storkm(:, :, iel) = km               ! element by element ...
+        call fsparv(b(ib)%kv, km, g, b(ib)%kdiag)  ! ... or assembled in skyline storage
      end do
   end do
 
@@ -141,7 +195,7 @@ program contact_blocks
   ! side's length at its ends and middle; body 2 carries no load
   do ib = 1, 2
      allocate(b(ib)%loads(0:b(ib)%neq), b(ib)%displ(0:b(ib)%neq), b(ib)%fcont(0:b(ib)%neq))
-     allocate(b(ib)%disps(nodof, b(ib)%nn, 3))
+     allocate(b(ib)%disps(nodof, b(ib)%nn, 4))
      b(ib)%loads = 0._iwp
   end do
   do ip = 1, b(1)%nxe
@@ -207,7 +261,29 @@ program contact_blocks
      stop 1
   end if
 
-  ! ---- step 8: body 2 as a library mesh body ----
+  ! ---- step 8: both bodies as skyline matrices ----
+  ! kv is handed over before sparin factors it in place; the library keeps its own copy
+  call check(mc_create(m), 'mc_create')
+  do ib = 1, 2
+     call check(mc_set_host_body(m, ib, b(ib)%g_coord, b(ib)%nf, b(ib)%neq), 'mc_set_host_body')
+     call check(add_skyline_stiffness(m, ib, b(ib)%kv, b(ib)%kdiag), 'mc_add_stiffness')
+     call check(mc_set_load_vector(m, ib, b(ib)%loads(1:)), 'mc_set_load_vector')
+     call check(mc_set_contact_curved(m, ib, b(ib)%surface), 'mc_set_contact_curved')
+  end do
+  call check(mc_solve(m), 'mc_solve')
+  call read_results(skyline, [.true., .true.])
+  call mc_destroy(m)
+  ! body 2 is held by its base, so its kv alone is positive definite: the program's own solver
+  ! with the contact forces added to the loads gives the same displacements
+  kv_factor = b(2)%kv
+  call sparin(kv_factor, b(2)%kdiag)
+  allocate(x(0:b(2)%neq))
+  x = b(2)%loads + b(2)%fcont
+  call spabac(kv_factor, x, b(2)%kdiag)
+  dx = maxval(abs(x(1:) - b(2)%displ(1:))) / maxval(abs(b(2)%displ))
+  write (*, '(a, es8.1, a)') 'body 2: sparin/spabac of loads + contact forces: ', dx, ' from the contact solve'
+
+  ! ---- step 9: body 2 as a library mesh body ----
   call check(mc_create(m), 'mc_create')
   call add_host_body(1)
   call add_mesh_body(2)
@@ -215,7 +291,7 @@ program contact_blocks
   call read_results(host_mesh, [.true., .false.])
   call mc_destroy(m)
 
-  ! ---- step 9: the same scene with mesh bodies, and the check ----
+  ! ---- step 10: the same scene with mesh bodies, and the check ----
   call check(mc_create(m), 'mc_create')
   call add_mesh_body(1)
   call add_mesh_body(2)
@@ -223,11 +299,13 @@ program contact_blocks
   call read_results(mesh_mesh, [.false., .false.])
   call mc_destroy(m)
   call compare(host_host, du(1), dp(1))
-  call compare(host_mesh, du(2), dp(2))
+  call compare(skyline, du(2), dp(2))
+  call compare(host_mesh, du(3), dp(3))
   write (*, '(a)') 'against mesh bodies (Q8 cells), largest difference / largest value:'
   write (*, '(a, es8.1, a, es8.1)') '  both bodies host bodies: displacements ', du(1), ', pressures ', dp(1)
-  write (*, '(a, es8.1, a, es8.1)') '  body 2 a mesh body:      displacements ', du(2), ', pressures ', dp(2)
-  passed = max(maxval(du), maxval(dp)) <= tolerance
+  write (*, '(a, es8.1, a, es8.1)') '  both bodies skylines:    displacements ', du(2), ', pressures ', dp(2)
+  write (*, '(a, es8.1, a, es8.1)') '  body 2 a mesh body:      displacements ', du(3), ', pressures ', dp(3)
+  passed = max(maxval(du), maxval(dp), dx) <= tolerance
   if (.not. passed) then
      write (*, '(a, es8.1)') 'contact_blocks: FAILED, differences above ', tolerance
      stop 1
@@ -245,6 +323,30 @@ contains
     call check(mc_set_load_vector(m, ib, b(ib)%loads(1:)), 'mc_set_load_vector')
     call check(mc_set_contact_curved(m, ib, b(ib)%surface), 'mc_set_contact_curved')
   end subroutine add_host_body
+
+  !> Hands a skyline matrix to host body `body`: Smith and Griffiths' kv and kdiag (kdiag(i) the
+  !> position of equation i's diagonal in kv, row i of the lower triangle ending there), taken
+  !> before sparin overwrites kv with its factor. Every position of kv becomes one coordinate
+  !> entry (row, column) of the lower triangle, MC_MATRIX_TRIANGLE; the zeros inside the profile
+  !> go along (they cost memory only). Returns the status of mc_add_stiffness.
+  integer function add_skyline_stiffness(model, body, kv, kdiag) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: body
+    real(iwp), intent(in) :: kv(:)
+    integer, intent(in) :: kdiag(:)
+    integer(mc_int), allocatable :: rows(:), cols(:)
+    integer :: row, first, k
+    allocate(rows(size(kv)), cols(size(kv)))
+    first = 1                                         ! kv(first:kdiag(row)) is row `row`
+    do row = 1, size(kdiag)
+       do k = first, kdiag(row)
+          rows(k) = row
+          cols(k) = row - (kdiag(row) - k)            ! the diagonal at k = kdiag(row)
+       end do
+       first = kdiag(row) + 1
+    end do
+    status = mc_add_stiffness(model, body, rows, cols, kv, MC_MATRIX_TRIANGLE)
+  end function add_skyline_stiffness
 
   !> Hands body ib to the model as a mesh body of the library's Q8 cells, with the same
   !> material, restraints, load and contact sides.
@@ -295,7 +397,7 @@ contains
     call check(mc_get_contact_count(m, n), 'mc_get_contact_count')
     if (.not. allocated(cnodes)) then
        ncontact = n
-       allocate(cnodes(ncontact, 3), pres(ncontact, 3))
+       allocate(cnodes(ncontact, 4), pres(ncontact, 4))
     end if
     if (n /= ncontact) then
        write (*, '(a, i0, a, i0)') 'contact_blocks: FAILED, contact positions ', n, ' instead of ', ncontact
