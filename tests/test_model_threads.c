@@ -14,7 +14,7 @@
  * - Two models solved at once from two host threads (each with its own body thread) still match
  *   serial results; the library never oversubscribes: the process runs no threads besides the
  *   host's, the body threads and OpenBLAS's pool (CHOLMOD's fixed 4-thread OpenMP team is kept
- *   at one thread, lib/sparse_cholesky.cpp).
+ *   at one thread, lib/linalg/sparse_cholesky.cpp).
  * - An error on body 2's thread reaches the caller as a status with the serial message, and the
  *   model stays usable; the log callback is only called from the calling thread, in the serial
  *   order.

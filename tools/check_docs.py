@@ -134,9 +134,10 @@ def check_names(doc, libdir):
     problems = []
     text = open(doc, encoding="utf-8").read()
     sources = ""
-    for name in sorted(os.listdir(libdir)):
-        if name.endswith((".cpp", ".hpp", ".h")):
-            sources += open(os.path.join(libdir, name), encoding="utf-8").read()
+    for folder, _, files in sorted(os.walk(libdir)):  # lib/ and its layers' folders
+        for name in sorted(files):
+            if name.endswith((".cpp", ".hpp", ".h")):
+                sources += open(os.path.join(folder, name), encoding="utf-8").read()
     names = set(re.findall(r"`((?:\w+::)*\w+)\(\)`", text))
     for name in sorted(names):
         if name.startswith("mc_"):

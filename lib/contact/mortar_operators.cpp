@@ -1,0 +1,304 @@
+#include "contact/mortar_operators.hpp"
+#include "contact/mortar_spaces.hpp"
+#include "bodies/cell_shapes.hpp"
+#include "bodies/plane_vectors.hpp"
+#include "support/error.hpp"
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+
+namespace mc {
+
+// The body-2 trace at a surface point: its nodes (2, or 3 on a quadratic edge: ends, middle) and
+// their shape functions there. Returns the count.
+int mortar_trace(const ContactGeometry &g, SurfacePoint at, int node[3], double shape[3]) {
+  const CurveSegment &s = g.mortar.segments()[at.segment];
+  double ds[3];
+  const int count = s.quadratic() ? 3 : 2;
+  line_shapes(count, at.eta, shape, ds);
+  node[0] = s.a, node[1] = s.b, node[2] = s.mid;
+  return count;
+}
+
+namespace {
+
+// The body-1 test functions of an element's two trace points at element coordinate s:
+// standard hats for the paper's mortar; for the dual method (Wohlmuth) the biorthogonal ones in
+// the measure, psi_0 = c0 phi_0 + c1 phi_1, psi_1 = c2 phi_0 + c3 phi_1 (2, -1, -1, 2 with a
+// constant weight; LineMeasure::dual_basis with 2 pi r).
+void test_functions(int method, double s, const double c[4], double psi[2]) {
+  const double phi0 = 1 - s, phi1 = s;
+  if (method == MC_METHOD_DUAL_MORTAR) psi[0] = c[0] * phi0 + c[1] * phi1, psi[1] = c[2] * phi0 + c[3] * phi1;
+  else psi[0] = phi0, psi[1] = phi1;
+}
+
+// Interpolation weights of u2 at a body-2 surface point.
+void add_interpolation(const ContactGeometry &g, SurfacePoint at, std::map<int, double> &row) {
+  int node[3];
+  double shape[3];
+  const int count = mortar_trace(g, at, node, shape);
+  for (int a = 0; a < count; ++a) row[node[a]] += shape[a];
+}
+
+
+// A row: body 1 at trace point t; body 2 with weights w over nodes (both n long, nodes
+// ascending). Weights below 1e-17 of the row's largest are left out: D^-1 decays geometrically
+// away from the diagonal, so most of a long run's row is round-off, and B stays sparse.
+void append_row(ConstraintRows &rows, const TracePoint &t, const int *nodes, const double *w, int n) {
+  rows.position1.push_back(t.a);
+  rows.weight1.push_back(t.is_position() ? 1.0 : 1 - t.xi);
+  if (!t.is_position()) rows.position1.push_back(t.b), rows.weight1.push_back(t.xi);
+  rows.start1.push_back(int(rows.position1.size()));
+  double largest = 0;
+  for (int k = 0; k < n; ++k) largest = std::max(largest, std::fabs(w[k]));
+  for (int k = 0; k < n; ++k)
+    if (w[k] != 0 && std::fabs(w[k]) >= 1e-17 * largest) rows.body2_node.push_back(nodes[k]), rows.weight2.push_back(w[k]);
+  rows.start2.push_back(int(rows.body2_node.size()));
+  rows.normal.push_back(t.normal);
+  rows.gap0.push_back(t.gap0);
+  rows.own_position.push_back(t.is_position() ? t.a : -1);
+  rows.aux.push_back(-1);
+}
+
+// The pointwise row at a trace point (node-to-segment, and the ends of Gamma_c in (3.2)).
+void append_pointwise_row(const ContactGeometry &g, ConstraintRows &rows, const TracePoint &t) {
+  std::map<int, double> row;
+  add_interpolation(g, t.projection, row);
+  std::vector<int> nodes;
+  std::vector<double> w;
+  for (auto &[node, value] : row) nodes.push_back(node), w.push_back(value);
+  append_row(rows, t, nodes.data(), w.data(), int(nodes.size()));
+}
+
+// Solves the tridiagonal system rows first..last of (lower, diag, upper) for nc right-hand
+// sides stored row-major in rhs (Thomas algorithm; D is diagonally dominant on a covered run).
+// Returns the row of a vanishing pivot, or -1.
+int solve_tridiagonal(const std::vector<double> &lower, const std::vector<double> &diag, const std::vector<double> &upper,
+                      int first, int last, int nc, std::vector<double> &rhs) {
+  double scale = 0;
+  for (int i = first; i <= last; ++i) scale = std::max(scale, std::fabs(diag[i]));
+  std::vector<double> c_prime(diag.size(), 0.0);
+  for (int i = first; i <= last; ++i) {
+    const double pivot = diag[i] - (i > first ? lower[i] * c_prime[i - 1] : 0);
+    if (!(std::fabs(pivot) > 1e-12 * scale)) return i;
+    c_prime[i] = upper[i] / pivot;
+    for (int c = 0; c < nc; ++c) {
+      double &r = rhs[size_t(i) * nc + c];
+      if (i > first) r -= lower[i] * rhs[size_t(i - 1) * nc + c];
+      r /= pivot;
+    }
+  }
+  for (int i = last - 1; i >= first; --i)
+    for (int c = 0; c < nc; ++c) rhs[size_t(i) * nc + c] -= c_prime[i] * rhs[size_t(i + 1) * nc + c];
+  return -1;
+}
+
+// The same for a cyclic tridiagonal matrix (corners lower[0] at (0, n-1) and upper[n-1] at
+// (n-1, 0)) by the Sherman-Morrison formula: a closed loop's D.
+int solve_cyclic_tridiagonal(std::vector<double> lower, std::vector<double> diag, std::vector<double> upper, int nc,
+                             std::vector<double> &rhs) {
+  const int n = int(diag.size());
+  const double top_right = lower[0], bottom_left = upper[n - 1], gamma = -diag[0];
+  diag[0] -= gamma;
+  diag[n - 1] -= bottom_left * top_right / gamma;
+  lower[0] = 0, upper[n - 1] = 0;
+  std::vector<double> z(n, 0.0);
+  z[0] = gamma, z[n - 1] = bottom_left;
+  int bad = solve_tridiagonal(lower, diag, upper, 0, n - 1, nc, rhs);
+  if (bad >= 0) return bad;
+  solve_tridiagonal(lower, diag, upper, 0, n - 1, 1, z);
+  const double denominator = 1 + z[0] + top_right * z[n - 1] / gamma;
+  for (int c = 0; c < nc; ++c) {
+    const double factor = (rhs[c] + top_right * rhs[size_t(n - 1) * nc + c] / gamma) / denominator;
+    for (int i = 0; i < n; ++i) rhs[size_t(i) * nc + c] -= factor * z[i];
+  }
+  return -1;
+}
+
+// A sparse row: (column, value), columns ascending and distinct once merged.
+using SparseRow = std::vector<std::pair<int, double>>;
+
+void merge(SparseRow &row) {
+  std::sort(row.begin(), row.end());
+  size_t kept = 0;
+  for (size_t i = 0; i < row.size(); ++i) {
+    if (kept > 0 && row[kept - 1].first == row[i].first) row[kept - 1].second += row[i].second;
+    else row[kept++] = row[i];
+  }
+  row.resize(kept);
+}
+
+// Row k of D^-1 (D tridiagonal: lower, diag, upper; cyclic on a closed run), restricted to the
+// points whose entries are not round-off: D is diagonally dominant (a mass matrix on the trace,
+// or the dual basis' diagonal one), so the row decays geometrically away from k (about 0.27 per
+// point) and a window of points around k gives it to full precision. The window grows until
+// its ends are below 1e-20 of the largest entry, or it covers the run. Interior points
+// first..last (open run) or all n (closed). Cost: O(window) per row, where solving D with one
+// right-hand side per column of M cost O(n) per column, O(n^2) for a long run.
+SparseRow inverse_row(const std::vector<double> &lower, const std::vector<double> &diag, const std::vector<double> &upper,
+                      int first, int last, bool closed, int k) {
+  const int n = last - first + 1;
+  for (int half = 24;; half *= 2) {
+    const bool whole = 2 * half + 1 >= n;
+    // Row k of D^-1 is the solution of D^T z = e_k. Window: positions k - half .. k + half
+    // (mod n on a loop), or the whole run.
+    std::vector<int> point;
+    if (whole) {
+      for (int i = first; i <= last; ++i) point.push_back(i);
+    } else if (closed) {
+      for (int j = -half; j <= half; ++j) point.push_back(((k + j) % n + n) % n);
+    } else {
+      for (int i = std::max(first, k - half); i <= std::min(last, k + half); ++i) point.push_back(i);
+    }
+    const int m = int(point.size());
+    // D^T restricted to the window: (D^T)_{i,i-1} = upper[i-1], (D^T)_{i,i+1} = lower[i+1].
+    std::vector<double> lo(m, 0.0), di(m), up(m, 0.0), z(m, 0.0);
+    for (int j = 0; j < m; ++j) {
+      const int i = point[j];
+      di[j] = diag[i];
+      const int before = closed ? (i + n - 1) % n : i - 1, after = closed ? (i + 1) % n : i + 1;
+      if (j > 0 || (whole && closed)) lo[j] = upper[before];
+      if (j < m - 1 || (whole && closed)) up[j] = lower[after];
+      if (i == k) z[j] = 1;
+    }
+    int bad;
+    if (whole && closed) bad = solve_cyclic_tridiagonal(lo, di, up, 1, z);
+    else bad = solve_tridiagonal(lo, di, up, 0, m - 1, 1, z);
+    if (bad >= 0) return {};  // the caller has checked D's pivots over the whole run
+    double largest = 0;
+    for (double v : z) largest = std::max(largest, std::fabs(v));
+    const bool converged = whole || ((closed || point.front() == first || std::fabs(z.front()) <= 1e-20 * largest) &&
+                                     (closed || point.back() == last || std::fabs(z.back()) <= 1e-20 * largest) &&
+                                     (!closed || std::max(std::fabs(z.front()), std::fabs(z.back())) <= 1e-20 * largest));
+    if (!converged) continue;
+    SparseRow row;
+    for (int j = 0; j < m; ++j)
+      if (z[j] != 0) row.emplace_back(point[j], z[j]);
+    return row;
+  }
+}
+
+// Rows of one run for the mortar methods: the paper's pi_h^1 (3.2).
+void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, const LineMeasure &measure,
+                 ConstraintRows &rows) {
+  const int n = int(run.trace.size());
+  const bool closed = run.closed;
+  // End rows: (pi phi)(c_i) = phi(c_i), i.e. interpolation at the projection of c_1, c_2.
+  SparseRow end_row[2];
+  if (!closed)
+    for (int e = 0; e < 2; ++e) {
+      std::map<int, double> w;
+      add_interpolation(g, run.trace[e == 0 ? 0 : n - 1].projection, w);
+      for (auto &[node, value] : w) end_row[e].emplace_back(node, value);
+    }
+  // The multipliers (rows of D and M) that trace point k's test function on element e feeds.
+  const MultiplierSpace space(run, true);  // shared ends for both bases (mortar_spaces.hpp)
+  // D (band: trace points i-1, i, i+1 of row i, cyclic on a loop) and M (sparse: row i over the
+  // body-2 nodes that its multiplier's support faces).
+  std::vector<double> lower(n, 0.0), diag(n, 0.0), upper(n, 0.0);
+  std::vector<SparseRow> mm(n);
+  for (int e = 0; e < int(run.elements.size()); ++e) {
+    double c[4] = {2, -1, -1, 2};
+    if (method == MC_METHOD_DUAL_MORTAR) measure.dual_basis(run.trace[e].x, run.trace[(e + 1) % n].x, c);
+    for (const QuadraturePoint &q : run.elements[e]) {
+      double psi[2];
+      test_functions(method, q.s, c, psi);
+      const double phi[2] = {1 - q.s, q.s};
+      double phi2[3];
+      int node2[3];
+      const int count2 = mortar_trace(g, q.mortar, node2, phi2);
+      for (int t = 0; t < 2; ++t)
+        space.feed(e, e + t, q.weight * psi[t], [&](int i, double w) {
+          for (int j = 0; j < 2; ++j) {
+            const int trace = closed ? (e + j) % n : e + j;
+            const int offset = closed ? ((trace - i) % n + n + 1) % n - 1 : trace - i;  // -1, 0 or +1
+            (offset == 0 ? diag : offset > 0 ? upper : lower)[i] += w * phi[j];
+          }
+          for (int j = 0; j < count2; ++j) mm[i].emplace_back(node2[j], w * phi2[j]);
+        });
+    }
+  }
+  // R = M - D_E P_E on the interior points (open), M (closed): D_II P_I = R (3.2).
+  std::vector<SparseRow> r(std::move(mm));
+  if (!closed) {
+    for (auto &[node, value] : end_row[0]) r[1].emplace_back(node, -lower[1] * value);
+    for (auto &[node, value] : end_row[1]) r[n - 2].emplace_back(node, -upper[n - 2] * value);
+  }
+  for (SparseRow &row : r) merge(row);
+  // D's pivots over the whole run (no right-hand side): a vanishing one is an error.
+  const int first = closed ? 0 : 1, last = closed ? n - 1 : n - 2;
+  std::vector<double> none;
+  const int singular = closed ? solve_cyclic_tridiagonal(lower, diag, upper, 0, none)
+                              : solve_tridiagonal(lower, diag, upper, first, last, 0, none);
+  if (singular >= 0)
+    fail(MC_ERROR_CONTACT,
+         "the mortar matrix D is singular at body-1 contact node %d: body 2's surface covers too little "
+         "of the body-1 edges around it",
+         g.nodes[run.trace[singular].a]);
+
+  // The sparse form: interior point k is auxiliary point aux0 + k (open runs: k - 1, the ends
+  // have none). Its equation: D's band on the interior points, R on the body-2 nodes.
+  const int aux0 = rows.aux_count - first;
+  for (int k = first; k <= last; ++k) {
+    const int neighbour[3] = {closed ? (k + n - 1) % n : k - 1, k, closed ? (k + 1) % n : k + 1};
+    const double d[3] = {lower[k], diag[k], upper[k]};
+    for (int j = 0; j < 3; ++j) {
+      if (!closed && (neighbour[j] < first || neighbour[j] > last)) continue;  // an end: moved into R
+      if (d[j] != 0) rows.aux_d_point.push_back(aux0 + neighbour[j]), rows.aux_d.push_back(d[j]);
+    }
+    rows.aux_d_start.push_back(int(rows.aux_d_point.size()));
+    for (auto &[node, value] : r[k])
+      if (value != 0) rows.aux_r_node.push_back(node), rows.aux_r.push_back(value);
+    rows.aux_r_start.push_back(int(rows.aux_r_node.size()));
+  }
+  // The explicit rows pi_h = D^-1 R (row k: sum_j (D^-1)_kj R_j), for the condensed path.
+  for (int k = 0; k < n; ++k) {
+    const bool end = !closed && (k == 0 || k == n - 1);
+    SparseRow values;
+    if (end) {
+      values = end_row[k == 0 ? 0 : 1];
+    } else {
+      for (auto &[j, z] : inverse_row(lower, diag, upper, first, last, closed, k))
+        for (auto &[node, value] : r[j]) values.emplace_back(node, z * value);
+    }
+    merge(values);
+    std::vector<int> nodes;
+    std::vector<double> w;
+    for (auto &[node, value] : values) nodes.push_back(node), w.push_back(value);
+    append_row(rows, run.trace[k], nodes.data(), w.data(), int(nodes.size()));
+    if (!end) rows.aux.back() = aux0 + k;
+  }
+  rows.aux_count += last - first + 1;
+}
+
+}  // namespace
+
+ConstraintRows build_constraint_rows(const ContactGeometry &g, int method, int multiplier, const LineMeasure &measure) {
+  ConstraintRows rows;
+  if (method == MC_METHOD_NODE_TO_SEGMENT) {
+    // Each body-1 node that sees body 2, against the point it projects to.
+    for (size_t pos = 0; pos < g.nodes.size(); ++pos)
+      if (g.projection[pos].segment >= 0) {
+        TracePoint t;
+        t.a = int(pos), t.normal = g.normals[pos], t.gap0 = g.gap0[pos], t.projection = g.projection[pos];
+        append_pointwise_row(g, rows, t);
+      }
+    return rows;
+  }
+  for (const ContactRun &run : g.runs) {
+    if (g.quadratic_nonmortar) {
+      weak_mortar_rows(g, run, multiplier == MC_MULTIPLIER_QUADRATIC, method == MC_METHOD_DUAL_MORTAR, rows);
+      continue;
+    }
+    // Runs of one element carry no multiplier: only the end conditions of (3.2) remain.
+    if (!run.closed && run.trace.size() <= 2) {
+      for (const TracePoint &t : run.trace) append_pointwise_row(g, rows, t);
+    } else {
+      mortar_rows(g, run, method, measure, rows);
+    }
+  }
+  return rows;
+}
+
+}  // namespace mc

@@ -1,0 +1,327 @@
+#include "linalg/sparse_cholesky.hpp"
+#include "support/error.hpp"
+#include <cholmod.h>
+#include <cstdint>
+#include <cstring>
+#ifdef __linux__
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
+
+#ifdef MC_SERIAL_CHOLMOD_OPENMP
+// libgomp's per-thread controls (CHOLMOD links libgomp; declared here so that no OpenMP
+// compiler flag is needed).
+extern "C" {
+int omp_get_dynamic(void);
+void omp_set_dynamic(int dynamic_threads);
+int omp_get_max_threads(void);
+void omp_set_num_threads(int num_threads);
+}
+#endif
+
+namespace mc {
+
+namespace {
+// Debian's CHOLMOD runs the zeroing and scatter loops of its supernodal factorization with a
+// fixed OpenMP team (CHOLMOD_OMP_NUM_THREADS = 4, a num_threads clause), between the BLAS
+// calls that OpenBLAS already spreads over every core. The two thread pools then compete for
+// the same cores, and OpenMP's spinning workers starve OpenBLAS's (docs/benchmarks.md,
+// "Threads": 1.6x slower on 2 cores, 30x with OMP_THREAD_LIMIT=2). While CHOLMOD runs, the
+// calling thread's OpenMP controls ask for one thread: with dyn-var true, a num_threads clause
+// is bounded by nthreads-var = 1. Both are the calling thread's own settings (OpenMP data-
+// environment ICVs), restored on return: no global state, and the host's own OpenMP is untouched.
+class CholmodWithoutOpenMpTeam {
+public:
+#ifdef MC_SERIAL_CHOLMOD_OPENMP
+  CholmodWithoutOpenMpTeam() : dynamic_(omp_get_dynamic()), threads_(omp_get_max_threads()) {
+    omp_set_dynamic(1);
+    omp_set_num_threads(1);
+  }
+  ~CholmodWithoutOpenMpTeam() {
+    omp_set_num_threads(threads_);
+    omp_set_dynamic(dynamic_);
+  }
+
+private:
+  int dynamic_, threads_;
+#else
+  CholmodWithoutOpenMpTeam() {}  // (user-provided: a guard object, not an unused variable)
+  ~CholmodWithoutOpenMpTeam() {}
+#endif
+};
+
+// Asks the kernel to back [data, data + bytes) with memory now, in one call, instead of one page
+// fault per 4 KiB page when the factorization first writes it: the supernodal factor of a body
+// with 2.5*10^5 unknowns is about 200 MB of fresh pages (50 thousand faults), and on these
+// machines a 4 KiB fault costs about 2.6 microseconds against 1.7 a page populated in one call
+// (docs/benchmarks.md, "Plain elasticity"). MADV_POPULATE_WRITE (Linux 5.14) faults the pages in
+// as a write would and leaves their contents alone; where it is not known (older kernels:
+// EINVAL) nothing happens and the pages fault in as before.
+void populate_pages(void *data, size_t bytes) {
+#ifdef __linux__
+  constexpr int populate_write = 23;  // MADV_POPULATE_WRITE; older headers do not name it
+  const long page_size = sysconf(_SC_PAGESIZE);
+  if (page_size <= 0) return;
+  const uintptr_t page = uintptr_t(page_size);
+  const uintptr_t first = (uintptr_t(data) + page - 1) & ~(page - 1);
+  const uintptr_t end = (uintptr_t(data) + bytes) & ~(page - 1);
+  if (end > first) (void)madvise(reinterpret_cast<void *>(first), end - first, populate_write);
+#else
+  (void)data, (void)bytes;
+#endif
+}
+}  // namespace
+
+struct SparseCholesky::Impl {
+  cholmod_common common;
+  cholmod_factor *factor = nullptr;
+  std::vector<int> interface;  // original indices, in the caller's order
+  Impl() {
+    cholmod_start(&common);
+    common.print = 0;  // the library never prints; errors are reported through statuses
+    common.error_handler = nullptr;
+    common.supernodal = CHOLMOD_SUPERNODAL;
+  }
+  ~Impl() {
+    if (factor) cholmod_free_factor(&factor, &common);
+    cholmod_finish(&common);
+  }
+  // A cholmod_sparse view (no copy) of the upper triangle.
+  cholmod_sparse view(const SymmetricCsc &a) {
+    cholmod_sparse s;
+    std::memset(&s, 0, sizeof s);
+    s.nrow = s.ncol = size_t(a.n);
+    s.nzmax = a.values.size();
+    s.p = const_cast<int *>(a.colptr.data());
+    s.i = const_cast<int *>(a.rows.data());
+    s.x = const_cast<double *>(a.values.data());
+    s.stype = 1;
+    s.itype = CHOLMOD_INT;
+    s.xtype = CHOLMOD_REAL;
+    s.dtype = CHOLMOD_DOUBLE;
+    s.sorted = 1;
+    s.packed = 1;
+    return s;
+  }
+  void check(const char *what) {
+    if (common.status == CHOLMOD_OUT_OF_MEMORY) fail(MC_ERROR_MEMORY, "CHOLMOD ran out of memory in %s", what);
+    if (common.status == CHOLMOD_TOO_LARGE)
+      fail(MC_ERROR_MEMORY, "CHOLMOD in %s: the factor is too large for its 32-bit indices", what);
+    if (common.status < CHOLMOD_OK) fail(MC_ERROR_INTERNAL, "CHOLMOD failed in %s (status %d)", what, common.status);
+  }
+};
+
+SparseCholesky::SparseCholesky() : impl_(new Impl) {}
+SparseCholesky::~SparseCholesky() = default;
+
+void SparseCholesky::analyze(const SymmetricCsc &a, const std::vector<int> &interface, int ordering) {
+  Impl &d = *impl_;
+  CholmodWithoutOpenMpTeam serial_openmp;
+  if (d.factor) cholmod_free_factor(&d.factor, &d.common);
+  n_ = a.n;
+  analyzed_ = true;
+  d.interface = interface;
+  if (n_ == 0) return;  // every unknown prescribed (a fully supported body): nothing to factor
+  cholmod_sparse s = d.view(a);
+  if (interface.empty()) {
+    d.common.nmethods = 1;
+    d.common.method[0].ordering = ordering == MC_ORDERING_METIS ? CHOLMOD_METIS : CHOLMOD_AMD;
+    d.common.postorder = 1;
+    d.factor = cholmod_analyze(&s, &d.common);
+    d.check("analyze");
+    return;
+  }
+  // Interface last: a constrained minimum-degree ordering (CAMD) when AMD is asked, or METIS
+  // with the interface moved to the end; no postordering, which could move interior unknowns
+  // behind interface ones.
+  std::vector<int> perm(a.n);
+  std::vector<char> is_interface(a.n, 0);
+  // The list is the caller's (interface_factor reads the factor's trailing block in its order):
+  // an unknown outside the matrix or listed twice is a defect upstream, refused before CAMD sees it.
+  const int n_interface = int(interface.size());
+  for (int g : interface) {
+    if (g < 0 || g >= a.n) fail(MC_ERROR_INTERNAL, "interface unknown %d outside the %d unknowns of the analysis", g, a.n);
+    if (is_interface[g]) fail(MC_ERROR_INTERNAL, "interface unknown %d listed twice", g);
+    is_interface[g] = 1;
+  }
+  if (ordering == MC_ORDERING_METIS) {
+    std::vector<int> metis(a.n);
+    cholmod_metis(&s, nullptr, 0, 1, metis.data(), &d.common);
+    d.check("METIS ordering");
+    int k = 0;
+    for (int i : metis) if (!is_interface[i]) perm[k++] = i;
+    for (int i : metis) if (is_interface[i]) perm[k++] = i;
+  } else {
+    // CAMD's constraint sets must lie in 0..n-1 (it indexes arrays of n by them): a body whose
+    // every unknown is on the interface (n = 1 with set 1 read past its arrays: a fuzz finding,
+    // docs/robustness.md) needs no constraint, so all go in set 0.
+    std::vector<int> member(a.n, 0);
+    if (n_interface < a.n)
+      for (int i = 0; i < a.n; ++i) member[i] = is_interface[i];
+    cholmod_camd(&s, nullptr, 0, member.data(), perm.data(), &d.common);
+    d.check("CAMD ordering");
+  }
+  d.common.nmethods = 1;
+  d.common.method[0].ordering = CHOLMOD_GIVEN;
+  d.common.postorder = 0;
+  d.factor = cholmod_analyze_p(&s, perm.data(), nullptr, 0, &d.common);
+  d.check("analyze");
+  const int *final_perm = static_cast<const int *>(d.factor->Perm);
+  for (int k = a.n - n_interface; k < a.n; ++k)
+    if (!is_interface[final_perm[k]])
+      fail(MC_ERROR_INTERNAL, "the ordering did not keep the %d interface unknowns last", n_interface);
+}
+
+bool SparseCholesky::analyzed() const { return analyzed_; }
+
+void SparseCholesky::release() {
+  Impl &d = *impl_;
+  if (d.factor) cholmod_free_factor(&d.factor, &d.common);
+  cholmod_free_work(&d.common);  // the workspace CHOLMOD keeps between calls (a few n-sized arrays)
+  d.interface.clear();
+  n_ = 0;
+  analyzed_ = false;
+}
+
+void SparseCholesky::factorize(const SymmetricCsc &a) {
+  Impl &d = *impl_;
+  failed_unknown_ = -1;
+  if (n_ == 0) return;
+  if (!d.factor) fail(MC_ERROR_INTERNAL, "factorize before analyze");
+  cholmod_sparse s = d.view(a);
+  {
+    CholmodWithoutOpenMpTeam serial_openmp;
+    if (d.factor->is_super && d.factor->xtype == CHOLMOD_PATTERN) {
+      // The numeric part allocated here, as cholmod_super_numeric would (same arguments), so
+      // that its pages can be populated before the factorization writes them.
+      cholmod_change_factor(CHOLMOD_REAL, 1, 1, 1, 1, d.factor, &d.common);
+      d.check("allocating the factor");
+      populate_pages(d.factor->x, d.factor->xsize * sizeof(double));
+    }
+    cholmod_factorize(&s, d.factor, &d.common);
+  }
+  if (d.common.status == CHOLMOD_NOT_POSDEF) {
+    const int *perm = static_cast<const int *>(d.factor->Perm);
+    const int minor = int(d.factor->minor);
+    failed_unknown_ = perm && minor < a.n ? perm[minor] : minor;
+  }
+  if (d.common.status == CHOLMOD_NOT_POSDEF)
+    fail(MC_ERROR_SINGULAR,
+         "the stiffness matrix is not positive definite (pivot %d of %d): a part of the body can move "
+         "rigidly, or a material is not positive definite",
+         int(d.factor->minor), a.n);
+  d.check("factorize");
+}
+
+void SparseCholesky::solve(double *x, int nrhs) const {
+  Impl &d = *impl_;
+  if (n_ == 0) return;
+  cholmod_dense b;
+  std::memset(&b, 0, sizeof b);
+  b.nrow = size_t(n_);
+  b.ncol = size_t(nrhs);
+  b.nzmax = size_t(n_) * nrhs;
+  b.d = size_t(n_);
+  b.x = x;
+  b.xtype = CHOLMOD_REAL;
+  b.dtype = CHOLMOD_DOUBLE;
+  cholmod_dense *solution;
+  {
+    CholmodWithoutOpenMpTeam serial_openmp;
+    solution = cholmod_solve(CHOLMOD_A, d.factor, &b, &d.common);
+  }
+  d.check("solve");
+  std::memcpy(x, solution->x, sizeof(double) * size_t(n_) * nrhs);
+  cholmod_free_dense(&solution, &d.common);
+}
+
+namespace {
+// One triangular solve with the factor (system CHOLMOD_L or CHOLMOD_Lt) in place on x.
+void triangular_solve(cholmod_factor *factor, cholmod_common &common, int system, double *x, int n) {
+  cholmod_dense b;
+  std::memset(&b, 0, sizeof b);
+  b.nrow = b.d = b.nzmax = size_t(n);
+  b.ncol = 1;
+  b.x = x;
+  b.xtype = CHOLMOD_REAL;
+  b.dtype = CHOLMOD_DOUBLE;
+  cholmod_dense *solution;
+  {
+    CholmodWithoutOpenMpTeam serial_openmp;
+    solution = cholmod_solve(system, factor, &b, &common);
+  }
+  if (!solution) fail(MC_ERROR_INTERNAL, "CHOLMOD failed in a triangular solve (status %d)", common.status);
+  std::memcpy(x, solution->x, sizeof(double) * size_t(n));
+  cholmod_free_dense(&solution, &common);
+}
+}  // namespace
+
+void SparseCholesky::forward(const double *b, double *y) const {
+  Impl &d = *impl_;
+  if (n_ == 0) return;
+  const int *perm = static_cast<const int *>(d.factor->Perm);
+  bool zero = true;
+  for (int k = 0; k < n_; ++k) y[k] = b[perm[k]], zero = zero && y[k] == 0;
+  // A body loaded only through contact (a foundation held by supports at rest): L^-1 0 = 0,
+  // and a quarter of a re-solve's work is saved.
+  if (!zero) triangular_solve(d.factor, d.common, CHOLMOD_L, y, n_);
+}
+
+void SparseCholesky::backward(const double *z, double *x) const {
+  Impl &d = *impl_;
+  if (n_ == 0) return;
+  std::vector<double> t(z, z + n_);
+  triangular_solve(d.factor, d.common, CHOLMOD_Lt, t.data(), n_);
+  const int *perm = static_cast<const int *>(d.factor->Perm);
+  for (int k = 0; k < n_; ++k) x[perm[k]] = t[k];
+}
+
+int SparseCholesky::interface_start() const { return n_ - int(impl_->interface.size()); }
+
+std::vector<double> SparseCholesky::interface_factor(std::vector<int> &order) const {
+  const Impl &d = *impl_;
+  const cholmod_factor *f = d.factor;
+  const int ng = int(d.interface.size()), first = n_ - ng;
+  if (!f->is_super) fail(MC_ERROR_INTERNAL, "expected a supernodal factor");
+  // position in the factor -> position in the caller's interface list
+  std::vector<int> inverse(n_, -1);
+  const int *perm = static_cast<const int *>(f->Perm);
+  for (int k = 0; k < n_; ++k) inverse[perm[k]] = k;
+  order.assign(ng, -1);
+  for (int i = 0; i < ng; ++i) order[inverse[d.interface[i]] - first] = i;
+  std::vector<double> l(size_t(ng) * ng, 0.0);
+  const int *super = static_cast<const int *>(f->super), *pi = static_cast<const int *>(f->pi);
+  const int *px = static_cast<const int *>(f->px), *ls = static_cast<const int *>(f->s);
+  const double *lx = static_cast<const double *>(f->x);
+  for (size_t s = 0; s < f->nsuper; ++s) {
+    int k1 = super[s], k2 = super[s + 1];
+    if (k2 <= first) continue;
+    int nsrow = pi[s + 1] - pi[s];
+    for (int k = std::max(k1, first); k < k2; ++k)
+      for (int r = 0; r < nsrow; ++r) {
+        int row = ls[pi[s] + r];
+        if (row < k) continue;  // the upper part of a supernode's diagonal block is not L
+        l[size_t(row - first) + size_t(k - first) * ng] = lx[px[s] + r + size_t(k - k1) * nsrow];
+      }
+  }
+  return l;
+}
+
+double SparseCholesky::analysis_flops() const { return impl_->factor ? impl_->common.fl : 0; }
+
+long SparseCholesky::factor_nnz() const {
+  const cholmod_factor *f = impl_->factor;
+  if (!f) return 0;
+  if (f->is_super) {
+    long nnz = 0;
+    const int *super = static_cast<const int *>(f->super), *pi = static_cast<const int *>(f->pi);
+    for (size_t s = 0; s < f->nsuper; ++s) {
+      long ncol = super[s + 1] - super[s], nrow = pi[s + 1] - pi[s];
+      nnz += ncol * nrow - ncol * (ncol - 1) / 2;
+    }
+    return nnz;
+  }
+  return long(impl_->common.lnz);
+}
+
+}  // namespace mc

@@ -1,0 +1,103 @@
+// The contact problem solved sparse (MC_INTERFACE_SPARSE): both bodies, the auxiliary mortar
+// values and the active rows together, at the cost of a few sparse factorizations whatever the
+// length of the interface (docs/theory.md, "Two interface solvers").
+//
+// Unknowns x = (u_1, u_2, w, alpha): each body's free unknowns (supports and the pins of its
+// rigid modes removed: K_b is SPD), the mortar values w of the interior trace points
+// (ConstraintRows::aux), and the amplitudes alpha of the free rigid modes. H = diag(K_1, K_2,
+// 0, 0). Rows C x = t, each an equation (w's mortar equations, always kept) or an inequality
+// (the contact rows, C x <= t: the paper's cone K_h, (3.2)-(3.5)). The KKT system on an active
+// set A is
+//     H x + C_A^T lambda_A = F,   C_A x = t_A,   lambda = 0 off A.
+// It is solved exactly through the augmented-Lagrangian matrix H_P = H + C_A^T P C_A (SPD once
+// the active rows hold the rigid modes; P > 0 diagonal, one weight per row): for any lambda,
+// x(lambda) = H_P^-1 (F + C_A^T P t_A - C_A^T lambda) satisfies the first equation whenever the
+// second holds, and the second is S_P lambda = b with S_P = C_A H_P^-1 C_A^T, solved by
+// conjugate gradients preconditioned by P. P's weights make the local compliances of S_P small
+// beside 1/P (kAugmentation), so P S_P has its spectrum in (0, 1] clustered at 1 and CG takes a
+// few steps; each is a forward and a backward solve with the factor of H_P. The penalty never
+// enters the answer: it is the exact solution of the KKT system, refined on its residuals.
+//
+// The active set is found by the same primal-dual active-set (semismooth Newton) iteration as
+// the condensed path's (dual_qp.hpp): one numeric factorization of H_P per active set, one
+// symbolic analysis for all (the pattern of H + C^T C holds every row's terms).
+#pragma once
+#include "bodies/assembly.hpp"
+#include "linalg/dual_qp.hpp"
+#include "linalg/sparse_cholesky.hpp"
+#include <vector>
+
+namespace mc {
+
+// The problem's structure: what stays when only loads or prescribed values change.
+struct SparseContactStructure {
+  int n_unknowns = 0;             // columns of C and H
+  // H's nonzero blocks: symmetric matrices placed at block_offset on the diagonal.
+  std::vector<const SymmetricCsc *> blocks;
+  std::vector<int> block_offset;
+  // C by rows (CSR); row_is_inequality[r] for the contact rows.
+  std::vector<int> row_start{0}, column;
+  std::vector<double> value;
+  std::vector<char> row_is_inequality;
+  int rows() const { return int(row_is_inequality.size()); }
+};
+
+enum class SparseContactOutcome { solved, modes_not_held, not_converged };
+
+struct SparseContactResult {
+  SparseContactOutcome outcome = SparseContactOutcome::solved;
+  std::vector<double> x;       // n_unknowns
+  std::vector<double> lambda;  // one per row (the equations' too)
+  std::vector<char> active;    // the final active set (contact rows; a re-solve starts from it)
+  int iterations = 0;          // active-set iterations
+  int factorizations = 0;      // numeric factorizations of H_P in this solve
+  int cg_steps = 0;            // conjugate-gradient steps (each: one forward and one backward solve)
+  double violation = 0;        // largest relative violation of complementarity (as MC_INFO_COMPLEMENTARITY)
+  double t_factor = 0, t_solve = 0;
+  bool cycled = false;         // not_converged because the iteration cycled or wandered
+};
+
+class SparseContactSolver {
+public:
+  // The pattern of H + C^T C, its ordering and symbolic factorization (ordering: MC_ORDERING_*).
+  // `structure` must outlive the solver (its blocks are read at each factorization).
+  void analyze(const SparseContactStructure &structure, int ordering);
+  // Frees the pattern and the factor.
+  void release() { cholesky_.release(), matrix_ = SymmetricCsc{}, factorized_.clear(); }
+  // CHOLMOD's estimates from the analysis, for the automatic choice of path.
+  double factor_flops() const { return flops_; }
+  long factor_nnz() const { return cholesky_.factor_nnz(); }
+  // After a factorization threw MC_ERROR_SINGULAR: the unknown whose pivot failed, or -1.
+  int failed_unknown() const { return cholesky_.failed_unknown(); }
+  double analysis_seconds() const { return t_analysis_; }
+
+  // Solves for loads F (n_unknowns) and right-hand sides t (one per row). start: the active
+  // contact rows to begin with (one per row, equations ignored), e.g. the previous solve's;
+  // empty: every contact row. `hold_modes(active)`, if given, says whether an active set holds
+  // the floating bodies (G_A of full rank); a set that does not is not factorized.
+  SparseContactResult solve(const std::vector<double> &load, const std::vector<double> &target,
+                            const std::vector<char> &start, double tolerance, int max_iterations,
+                            const std::function<bool(const std::vector<char> &)> &hold_modes,
+                            const DualQpObserver &observe = {});
+
+private:
+  void factorize(const std::vector<char> &active, SparseContactResult &result);
+  // The exact solution of the KKT system on the factorized active set, from lambda's start.
+  void solve_on_active_set(const std::vector<double> &load, const std::vector<double> &target,
+                           std::vector<double> &x, std::vector<double> &lambda, SparseContactResult &result) const;
+  // CG on S_P lambda = b for the active rows; x follows lambda. Returns the steps taken.
+  int conjugate_gradients(const std::vector<double> &load, const std::vector<double> &target, std::vector<double> &x,
+                          std::vector<double> &lambda, SparseContactResult &result) const;
+  void apply_ct(const std::vector<double> &y, std::vector<double> &out) const;  // out = C_A^T y
+  double row_times(int r, const std::vector<double> &x) const;                // C_r x
+
+  const SparseContactStructure *structure_ = nullptr;
+  int position(int i, int j) const;  // of entry (min(i, j), max(i, j)) in matrix_
+  SymmetricCsc matrix_;              // H_P's pattern (H + C^T C), values of the factorized set
+  std::vector<double> weight_;       // P, one per row
+  SparseCholesky cholesky_;
+  std::vector<char> factorized_;     // the active set of the current factor (empty: none)
+  double flops_ = 0, t_analysis_ = 0;
+};
+
+}  // namespace mc

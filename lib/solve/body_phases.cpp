@@ -1,0 +1,213 @@
+// The bodies' own phases of a solve, each run for both bodies (Model::for_each_body): their
+// load vectors, stiffness and rigid modes (assembled from cells, or the host's), the reduced
+// matrices, their analyses and factorizations, and after the solve their stresses.
+#include "bodies/cell_shapes.hpp"
+#include "support/error.hpp"
+#include "solve/model.hpp"
+#include "support/stopwatch.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace mc {
+
+std::vector<double> Model::load_vector(int b) const {
+  const Body &body_ = body[b];
+  const Mesh &mesh = body_.mesh;
+  std::vector<double> f(body_.nodal_force);
+  if (body_.host) {  // the host's load vector, plus nodal forces on its nodes' equations
+    for (int e = 0; e < body_.host_data.n_equations; ++e) f[e] += body_.host_data.load[e];
+    return f;
+  }
+  f.resize(2 * size_t(mesh.n_nodes()), 0.0);
+  double fe[2 * kMaxCellNodes];
+  for (const EdgeLoad &load : body_.edge_loads) {
+    Point p = mesh.node(load.a), q = mesh.node(load.b);
+    const BoundaryEdge *edge = mesh.quadratic() ? mesh.boundary_edge(load.a, load.b) : nullptr;
+    if (edge && edge->mid >= 0) {  // a 3-node edge, curved if its middle is off the chord
+      quadratic_edge_force(p, q, mesh.node(edge->mid), load.tx, load.ty, load.is_pressure, measure(), fe);
+      const int node[3] = {load.a, load.b, edge->mid};
+      for (int a = 0; a < 3; ++a) f[2 * node[a]] += fe[2 * a], f[2 * node[a] + 1] += fe[2 * a + 1];
+      continue;
+    }
+    double tx = load.tx, ty = load.ty;
+    if (load.is_pressure) {  // pressure pushes against the outward normal (dy, -dx)/|e|
+      double length = std::hypot(q.x - p.x, q.y - p.y);
+      tx = -load.tx * (q.y - p.y) / length;
+      ty = -load.tx * (p.x - q.x) / length;
+    }
+    edge_traction_force(p, q, tx, ty, measure(), fe);
+    f[2 * load.a] += fe[0], f[2 * load.a + 1] += fe[1];
+    f[2 * load.b] += fe[2], f[2 * load.b + 1] += fe[3];
+  }
+  if (body_.body_force[0] != 0 || body_.body_force[1] != 0) {
+    const int npc = mesh.nodes_per_cell();
+    Point p[kMaxCellNodes];
+    for (int c = 0; c < mesh.n_cells(); ++c) {
+      const int *v = mesh.cell(c);
+      for (int a = 0; a < npc; ++a) p[a] = mesh.node(v[a]);
+      cell_body_force(p, npc, body_.body_force[0], body_.body_force[1], measure(), fe);
+      for (int a = 0; a < npc; ++a) f[2 * v[a]] += fe[2 * a], f[2 * v[a] + 1] += fe[2 * a + 1];
+    }
+  }
+  return f;
+}
+
+// Stresses averaged over each cell, and at the nodes: each cell's stress at its own nodes,
+// averaged over the cells sharing a node.
+void Model::cell_and_nodal_stresses(int b, const std::vector<PlaneLaw> &laws) {
+  Body &body_ = body[b];
+  const Mesh &mesh = body_.mesh;
+  const int npc = mesh.nodes_per_cell();
+  const bool bbar = options.q1_integration == MC_Q1_BBAR && npc == 4;
+  body_.stress.assign(4 * size_t(mesh.n_cells()), 0.0);
+  body_.nodal_stress.assign(4 * size_t(mesh.n_nodes()), 0.0);
+  std::vector<int> cells_at(mesh.n_nodes(), 0);
+  Point p[kMaxCellNodes];
+  double ue[2 * kMaxCellNodes], at_nodes[4 * kMaxCellNodes];
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    const int *cv = mesh.cell(c);
+    for (int a = 0; a < npc; ++a) p[a] = mesh.node(cv[a]), ue[2 * a] = body_.u[2 * cv[a]], ue[2 * a + 1] = body_.u[2 * cv[a] + 1];
+    const PlaneLaw &law = laws.size() == 1 ? laws[0] : laws[c];
+    cell_stress(p, npc, law, measure(), bbar, ue, &body_.stress[4 * size_t(c)]);
+    cell_nodal_stresses(p, npc, law, measure(), bbar, ue, at_nodes);
+    for (int a = 0; a < npc; ++a) {
+      cells_at[cv[a]]++;
+      for (int k = 0; k < 4; ++k) body_.nodal_stress[4 * size_t(cv[a]) + k] += at_nodes[4 * a + k];
+    }
+  }
+  for (int i = 0; i < mesh.n_nodes(); ++i)
+    for (int k = 0; k < 4; ++k) body_.nodal_stress[4 * size_t(i) + k] /= cells_at[i];
+}
+
+// Stiffness and rigid modes of one body (the first half of its structure).
+std::unique_ptr<BodySystem> Model::assemble_body(int b, BodyWork &work) const {
+  const Body &body_ = body[b];
+  if (!body_.has_mesh) return nullptr;
+  auto sys = std::make_unique<BodySystem>();
+  const double t_assembly = now();
+  if (body_.host) {
+    {
+      Stopwatch watch(work.infos.t_assembly);
+      sys->stiffness = assemble_host_stiffness(body_.host_data, b + 1, index_base);
+      // The rigid modes from the coordinates of every unknown, when every one is a given node's
+      // freedom: the motions the host's matrix does not resist.
+      const HostBody &h = body_.host_data;
+      if (std::all_of(h.node_of_equation.begin(), h.node_of_equation.end(), [](int node) { return node >= 0; })) {
+        std::vector<Point> point(h.n_equations);
+        for (int e = 0; e < h.n_equations; ++e) point[e] = body_.mesh.node(h.node_of_equation[e]);
+        sys->rigid = kernel_rigid_modes(point, h.component_of_equation, sys->stiffness, axisymmetric);
+      }
+    }
+    work.log(MC_LOG_PHASE, "assembly: body %d, host body of %d equations, %zu stiffness entries, %.3g s", b + 1,
+             body_.host_data.n_equations, body_.host_data.entry_value.size(), now() - t_assembly);
+    if (sys->rigid.count > 0 && !contact_active())
+      fail(MC_ERROR_SINGULAR,
+           "body %d is not held: the host's stiffness leaves %s free; restrain freedoms (give them no equation), or "
+           "give both bodies contact surfaces so that contact can hold it",
+           b + 1, sys->rigid.description.c_str());
+    return sys;
+  }
+  {
+    Stopwatch watch(work.infos.t_assembly);
+    if (!body_.cell_elasticity.empty()) {
+      for (int c = 0; c < body_.mesh.n_cells(); ++c) sys->laws.push_back(general_plane_law(&body_.cell_elasticity[9 * size_t(c)]));
+    } else {
+      sys->laws.push_back(axisymmetric ? isotropic_axisymmetric_law(body_.young, body_.poisson)
+                                       : isotropic_plane_law(body_.young, body_.poisson, plane_stress));
+    }
+    sys->stiffness = assemble_stiffness(body_.mesh, sys->laws, measure(),
+                                        options.q1_integration == MC_Q1_BBAR && body_.mesh.nodes_per_cell() == 4);
+  }
+  work.log(MC_LOG_PHASE, "assembly: body %d, %d nodes, %d cells, stiffness in %.3g s", b + 1,
+           body_.mesh.n_nodes(), body_.mesh.n_cells(), now() - t_assembly);
+  sys->rigid = axisymmetric ? free_axial_translation(body_.mesh, fixed_[b]) : free_rigid_modes(body_.mesh, fixed_[b]);
+  if (sys->rigid.count > 0 && !contact_active())
+    fail(MC_ERROR_SINGULAR,
+         "body %d is not held: its supports leave %s free; add supports with mc_fix, or contact "
+         "surfaces on both bodies with mc_set_contact so that contact can hold it",
+         b + 1, sys->rigid.description.c_str());
+  return sys;
+}
+
+// The reduced stiffness of one body: supports and the pins of its rigid modes removed, and its
+// contact unknowns (those in B), which the condensed path orders last.
+void Model::reduce_body(int b, BodyWork &work) {
+  BodySystem *sys = system_[b].get();
+  if (!sys) return;
+  const int ndof = sys->stiffness.n;
+  std::vector<char> excluded(fixed_[b]);
+  for (int dof : sys->rigid.pinned_dofs) excluded[dof] = 1;
+  sys->solve_index.assign(ndof, -1);
+  sys->solve_dofs.clear();
+  for (int i = 0; i < ndof; ++i)
+    if (!excluded[i]) sys->solve_index[i] = int(sys->solve_dofs.size()), sys->solve_dofs.push_back(i);
+  sys->interface.clear();
+  if (contact_) {
+    std::vector<char> mark(ndof, 0);
+    for (int dof : contact_->b_dof[b])
+      if (sys->solve_index[dof] >= 0 && !mark[dof]) mark[dof] = 1, sys->interface.push_back(dof);
+  }
+  Stopwatch watch(work.infos.t_assembly);
+  sys->reduced = sys->stiffness.principal_submatrix(sys->solve_index, int(sys->solve_dofs.size()));
+}
+
+// The condensed path's ordering (interface unknowns last) and symbolic factorization.
+void Model::analyze_body(int b, BodyWork &work, bool needed) {
+  BodySystem *sys = system_[b].get();
+  if (!sys) return;
+  std::vector<int> interface_reduced;
+  for (int dof : sys->interface) interface_reduced.push_back(sys->solve_index[dof]);
+  // The dense trailing block alone: past a billion entries (8 GiB, and near CHOLMOD's 32-bit
+  // index range, which made its analysis fail with "too large") the condensed path is out of
+  // reach whatever the memory. For the automatic choice (needed false) the body is then left
+  // unanalysed and the choice takes the sparse path (measured: two Q8 strips with 32001
+  // contact nodes failed here before); the condensed path itself (needed) is refused.
+  const double ng = double(interface_reduced.size());
+  if (ng * (ng + 1) / 2 > 1e9) {
+    if (needed)
+      fail(MC_ERROR_MEMORY,
+           "the condensed interface solver (MC_INTERFACE_CONDENSED): body %d has %.0f interface unknowns, whose dense "
+           "block in its factor would hold %.3g entries: use MC_INTERFACE_SPARSE or MC_INTERFACE_AUTO",
+           b + 1, ng, ng * (ng + 1) / 2);
+    work.log(MC_LOG_PHASE, "analysis: body %d, %.0f interface unknowns: too many for the condensed path, not analysed "
+             "for it", b + 1, ng);
+    return;
+  }
+  const double t_analysis = now();
+  {
+    Stopwatch watch(work.infos.t_analysis);
+    sys->cholesky.analyze(sys->reduced, interface_reduced, options.ordering);
+  }
+  work.log(MC_LOG_PHASE, "analysis: body %d, %zu unknowns, ordering and symbolic factorization in %.3g s", b + 1,
+           sys->solve_dofs.size(), now() - t_analysis);
+}
+
+void Model::factorize_body(int b, BodyWork &work) {
+  BodySystem *sys = system_[b].get();
+  if (!sys) return;
+  const double t_factor = now();
+  {
+    Stopwatch watch(work.infos.t_factor);
+    try {
+      sys->cholesky.factorize(sys->reduced);
+    } catch (const Error &e) {
+      if (e.status() != MC_ERROR_SINGULAR) throw;
+      const int failed = sys->cholesky.failed_unknown();
+      if (body[b].host && failed >= 0 && failed < int(sys->solve_dofs.size())) {
+        const int equation = sys->solve_dofs[failed];
+        fail(MC_ERROR_SINGULAR,
+             "body %d: the host's stiffness is not positive definite: the factorization fails at its equation %d "
+             "(a part of the body moves without resistance, beyond %s, or the matrix is not a stiffness)",
+             b + 1, equation + index_base,
+             sys->rigid.count > 0 ? "the rigid modes found from the coordinates" : "any rigid mode");
+      }
+      fail(MC_ERROR_SINGULAR, "body %d: %s", b + 1, e.what());
+    }
+  }
+  work.infos.factorizations++;
+  work.log(MC_LOG_PHASE, "factorization: body %d, %ld nonzeros in the Cholesky factor, %.3g s", b + 1,
+           long(sys->cholesky.factor_nnz()), now() - t_factor);
+}
+
+
+}  // namespace mc

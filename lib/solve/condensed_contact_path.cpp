@@ -1,0 +1,274 @@
+// The condensed interface solver (MC_INTERFACE_CONDENSED; design note "Solving the QP fast"):
+// each body factorized alone with its contact unknowns last, the problem condensed onto the
+// q contact rows through the trailing blocks of the factors,
+//     S = B K^+ B^T = sum_b W_b^T W_b,  W_b = L_GG^-1 (P B_b^T)_G,
+// and the dual QP (dual_qp.hpp) solved densely. Cheap while q is small beside the bodies (a
+// re-solve then costs two triangular solves per body); O(q^3) time and O(q^2) memory when it is
+// not, where the sparse path (sparse_contact_path.cpp) takes over.
+#include "solve/model.hpp"
+#include "support/error.hpp"
+#include "support/lapack.hpp"
+#include "support/stopwatch.hpp"
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace mc {
+
+// One body's share of the interface operator, s_b = B_G L_GG^-T L_GG^-1 B_G^T (upper triangle,
+// q x q): a triangular solve with the trailing block of the factor and a rank-k update, all
+// dense BLAS 3. W_b is kept for the loads and the recovery.
+void Model::interface_block(int b, std::vector<double> &s_b, BodyWork &work) {
+  Stopwatch watch(work.infos.t_contact);
+  ContactSystem &cs = *contact_;
+  BodySystem &sys = *system_[b];
+  const int q = cs.rows.size(), ng = int(sys.interface.size());
+  if (ng == 0 || q == 0) return;
+  std::vector<int> order;
+  std::vector<double> l = sys.cholesky.interface_factor(order);
+  std::vector<int> factor_position(sys.stiffness.n, -1);
+  for (int k = 0; k < ng; ++k) factor_position[sys.interface[order[k]]] = k;
+  std::vector<double> w(size_t(ng) * q, 0.0);
+  for (int r = 0; r < q; ++r)
+    for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) {
+      int k = factor_position[cs.b_dof[b][p]];
+      if (k >= 0) w[size_t(r) * ng + k] += cs.b_value[b][p];
+    }
+  double one = 1.0, zero = 0.0;
+  dtrsm_("L", "L", "N", "N", &ng, &q, &one, l.data(), &ng, w.data(), &ng);
+  s_b.assign(size_t(q) * q, 0.0);
+  dsyrk_("U", "T", &q, &ng, &one, w.data(), &ng, &zero, s_b.data(), &q);
+  cs.w[b] = std::move(w), cs.w_rows[b] = ng;
+}
+
+// Each body's factorization, its share of S = sum_b s_b and, through `then`, its load solve,
+// in one phase per body; then S. The sum is formed the same way whatever the thread count, so
+// that the results do not depend on it. Bodies not yet analysed for this path (the sparse path
+// was forced, or chosen and then fell back) are analysed first.
+void Model::build_condensed(const std::function<void(int, BodyWork &)> &then) {
+  if (contact_) contact_->sparse = false;
+  std::vector<double> s_b[2];
+  double t_operator[2] = {0, 0};
+  for_each_body([&](int b, BodyWork &work) {
+    if (system_[b] && !system_[b]->cholesky.analyzed()) analyze_body(b, work, true);
+    factorize_body(b, work);
+    if (contact_ && system_[b]) {
+      const double start = now();
+      interface_block(b, s_b[b], work);
+      t_operator[b] = now() - start;
+    }
+    then(b, work);
+  });
+  if (contact_) {
+    Stopwatch watch(infos.t_contact);
+    const double start = now();
+    ContactSystem &cs = *contact_;
+    const size_t q = size_t(cs.rows.size());
+    cs.s.assign(q * q, 0.0);
+    for (int b = 0; b < 2; ++b)
+      if (!s_b[b].empty())
+        for (size_t k = 0; k < q * q; ++k) cs.s[k] += s_b[b][k];
+    for (size_t j = 0; j < q; ++j)
+      for (size_t i = j + 1; i < q; ++i) cs.s[j * q + i] = cs.s[i * q + j];
+    cs.last_active.clear();
+    progress(MC_LOG_PHASE, "interface operator: S = B K^+ B^T of order %zu, %.3g s", q,
+             t_operator[0] + t_operator[1] + now() - start);
+  }
+}
+
+// The sparse path's active-set iteration cycled (SparseContactResult::cycled): the condensed
+// path, whose QP solver then falls back to a primal active-set method that cannot cycle
+// (dual_qp.cpp), if it fits in memory (choose_interface_solver refuses it otherwise, with
+// MC_ERROR_MEMORY). The structure stays condensed until it is rebuilt.
+void Model::fall_back_to_condensed(LoadSolve loads[2]) {
+  const double start = now();
+  check_condensed_fits();
+  contact_->last_active.clear();
+  contact_->solver.release();
+  infos.dofs = 0, infos.factor_nnz = 0;  // counted again by the condensed path's load solves
+  build_condensed([&](int b, BodyWork &work) { solve_loads(b, work, loads[b]); });
+  progress(MC_LOG_PHASE,
+           "interface solver: condensed (the sparse path's active-set iteration cycled; the condensed QP has a "
+           "fallback for that), factorized in %.3g s",
+           now() - start);
+}
+
+// The condensed problem of the current loads (d, G, e; S from the structure), its QP, and the
+// errors it can report. lambda and alpha: the contact forces and the floating bodies' rigid
+// motion; qp keeps S and G for the refinement.
+void Model::solve_condensed(LoadSolve loads[2], DualQp &qp, std::vector<double> &lambda, std::vector<double> &alpha) {
+  ContactSystem &cs = *contact_;
+  const int q = cs.rows.size();
+  qp.q = q;
+  {
+    Stopwatch watch(infos.t_contact);
+    qp.s = cs.s;
+    // d = B K^+ f_eff - g0 (with the prescribed values' share of the gap): B K^+ f_eff is
+    // sum W_b^T y_G.
+    std::vector<double> bv(q, 0.0);
+    for (int b = 0; b < 2; ++b) {
+      const int ng = cs.w_rows[b];
+      if (ng == 0 || q == 0) continue;
+      int one = 1;
+      double plus = 1.0;
+      const double *y_interface = loads[b].y.data() + system_[b]->cholesky.interface_start();
+      dgemv_("T", &ng, &q, &plus, cs.w[b].data(), &ng, y_interface, &one, &plus, bv.data(), &one);
+    }
+    qp.d.assign(q, 0.0);
+    for (int r = 0; r < q; ++r) {
+      double g = row_initial_gap(r);
+      for (int b = 0; b < 2; ++b)
+        for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) {
+          int dof = cs.b_dof[b][p];
+          if (fixed_[b][dof]) g -= cs.b_value[b][p] * fixed_value_[b][dof];
+        }
+      qp.d[r] = bv[r] - g;
+    }
+    qp.g = rigid_mode_rows();
+    qp.e = rigid_mode_loads(loads);
+    qp.k = int(qp.e.size());
+  }
+  DualQpResult result;
+  const double t_active_set = now();
+  const DualQpObserver observe = iteration_log(q);
+  {
+    Stopwatch watch(infos.t_contact);
+    result = solve_dual_qp(qp, options.tolerance, options.max_iterations, cs.last_active, observe);
+  }
+  static const char *const outcome[] = {"solved", "loads not balanced", "floating body not held", "not converged"};
+  progress(MC_LOG_PHASE, "active-set solve: %s, %d iterations, residual %.3g, %.3g s", outcome[int(result.outcome)],
+           result.iterations, result.violation, now() - t_active_set);
+  infos.iterations = result.iterations;
+  if (result.outcome == DualQpOutcome::loads_not_balanced) {
+    const std::string modes = free_modes_description();
+    fail(MC_ERROR_SINGULAR,
+         "the loads cannot be balanced by contact forces (which only push): with free rigid motion (%s) "
+         "the best nonnegative contact forces leave %.3g of the load unbalanced; add supports or change the loads",
+         modes.c_str(), result.imbalance);
+  }
+  if (result.outcome == DualQpOutcome::modes_not_held) {
+    const std::string modes = free_modes_description();
+    fail(MC_ERROR_SINGULAR,
+         "contact cannot hold the free rigid motion (%s): the contact normals do not restrain it; add supports",
+         modes.c_str());
+  }
+  if (result.outcome == DualQpOutcome::not_converged)
+    fail(MC_ERROR_NOT_CONVERGED,
+         "the active-set iteration stopped after %d iterations (limit %d) with a relative complementarity "
+         "violation of %.3g (tolerance %.3g)",
+         result.iterations, options.max_iterations, result.violation, options.tolerance);
+  lambda = result.lambda;
+  alpha = result.alpha;
+  infos.complementarity = result.violation;
+  cs.last_active.assign(q, 0);
+  for (int r = 0; r < q; ++r) cs.last_active[r] = lambda[r] > 0, infos.active += lambda[r] > 0;
+  infos.contact_rows = q;
+}
+
+// Iterative refinement of the solution on the active set the QP found (docs/benchmarks.md,
+// "Long contact interfaces"). The condensed problem's right-hand side d = B K^+ f - g can be
+// far larger than the gaps and displacements it yields (a slender body factorized alone bends
+// like a free beam: |d|/|u| reached 4*10^7 on the long strips), and the recovered u then
+// carries round-off of d's size. The residuals of the full problem, computed in the original
+// unknowns, are free of that cancellation:
+//   r_f = f - K u - B^T lambda (free unknowns),  gap = g - B u (active rows),
+// and the correction (du, dl, da) with K du + B_A^T dl = r_f, B_A du = gap, i.e.
+//   S_AA dl - G_A da = (B K^+ r_f)_A - gap_A,  G_A^T dl = R^T r_f,  du = K^+ (r_f - B^T dl) + R da,
+// costs one forward and one backward solve per body and a dense solve of the active block.
+// A step is kept only if it lowers MC_INFO_GAP_RESIDUAL by half and keeps lambda >= 0; at most
+// kMaxRefinementSteps. Returns whether any step was kept (loads[b].v, lambda, alpha, body[b].u
+// and infos.gap_residual then hold the refined solution). `qp` keeps S and G; its d and e are
+// overwritten with the residuals.
+bool Model::refine_solution(DualQp &qp, LoadSolve loads[2], std::vector<double> &lambda, std::vector<double> &alpha) {
+  const double start = now(), first = infos.gap_residual;
+  const ContactSystem &cs = *contact_;
+  const int q = cs.rows.size();
+  const int mode_offset[2] = {0, system_[0] ? system_[0]->rigid.count : 0};
+  std::vector<char> active(q);
+  for (int r = 0; r < q; ++r) active[r] = lambda[r] > 0;
+  int steps = 0;
+  for (int step = 0; step < kMaxRefinementSteps; ++step) {
+    // 1. The equilibrium residual of each body and its forward solve y_r = L^-1 P r_f.
+    std::vector<double> residual[2], residual_y[2];
+    for_each_body([&](int b, BodyWork &work) {
+      if (!system_[b]) return;
+      const BodySystem &sys = *system_[b];
+      const int ndof = sys.stiffness.n;
+      std::vector<double> elastic(loads[b].v), ku(ndof);
+      for (int i = 0; i < ndof; ++i)
+        if (fixed_[b][i]) elastic[i] = fixed_value_[b][i];
+      sys.stiffness.multiply(elastic.data(), ku.data());  // K R = 0: the rigid motion drops out
+      std::vector<double> &rf = residual[b];
+      rf.assign(ndof, 0.0);
+      for (int i = 0; i < ndof; ++i)
+        if (!fixed_[b][i]) rf[i] = loads[b].f[i] - ku[i];
+      for (int r = 0; r < q; ++r)
+        for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p)
+          if (!fixed_[b][cs.b_dof[b][p]]) rf[cs.b_dof[b][p]] -= cs.b_value[b][p] * lambda[r];
+      std::vector<double> x(sys.solve_dofs.size());
+      for (size_t k = 0; k < x.size(); ++k) x[k] = rf[sys.solve_dofs[k]];
+      residual_y[b].resize(x.size());
+      Stopwatch watch(work.infos.t_solve);
+      sys.cholesky.forward(x.data(), residual_y[b].data());
+    });
+    // 2. The correction on the active set: d = B K^+ r_f - gap (B K^+ r_f = sum W_b^T y_r,G),
+    //    e = R^T r_f, in body order.
+    qp.d.assign(q, 0.0);
+    for (int b = 0; b < 2; ++b) {
+      const int ng = cs.w_rows[b];
+      if (!system_[b] || ng == 0 || q == 0) continue;
+      int one = 1, rows = q;
+      double plus = 1.0;
+      const double *y_interface = residual_y[b].data() + system_[b]->cholesky.interface_start();
+      dgemv_("T", &ng, &rows, &plus, cs.w[b].data(), &ng, y_interface, &one, &plus, qp.d.data(), &one);
+    }
+    for (int r = 0; r < q; ++r) qp.d[r] -= row_gap(r);
+    qp.e.assign(qp.k, 0.0);
+    for (int b = 0; b < 2; ++b) {
+      if (!system_[b]) continue;
+      const RigidModes &rm = system_[b]->rigid;
+      const int ndof = system_[b]->stiffness.n;
+      for (int c = 0; c < rm.count; ++c)
+        for (int i = 0; i < ndof; ++i) qp.e[mode_offset[b] + c] += rm.modes[size_t(c) * ndof + i] * residual[b][i];
+    }
+    std::vector<double> dl, da;
+    if (!solve_correction(qp, active, dl, da)) break;
+    std::vector<double> new_lambda(lambda), new_alpha(alpha);
+    bool feasible = true;
+    for (int r = 0; r < q; ++r) new_lambda[r] += dl[r], feasible = feasible && new_lambda[r] >= 0;
+    for (int c = 0; c < qp.k; ++c) new_alpha[c] += da[c];
+    if (!feasible) break;
+    // 3. du = K^+ (r_f - B^T dl) + R da = P^T L^-T (y_r - [0; W dl]) + R da, per body.
+    std::vector<double> kept_v[2] = {loads[0].v, loads[1].v}, kept_u[2] = {body[0].u, body[1].u};
+    for_each_body([&](int b, BodyWork &work) {
+      if (!system_[b]) return;
+      const BodySystem &sys = *system_[b];
+      const int ndof = sys.stiffness.n, ng = cs.w_rows[b];
+      std::vector<double> &z = residual_y[b], dx(sys.solve_dofs.size());
+      if (ng > 0 && q > 0) {
+        int one = 1, rows = q;
+        double minus = -1.0, plus = 1.0;
+        dgemv_("N", &ng, &rows, &minus, cs.w[b].data(), &ng, dl.data(), &one, &plus, z.data() + sys.cholesky.interface_start(),
+               &one);
+      }
+      {
+        Stopwatch watch(work.infos.t_solve);
+        sys.cholesky.backward(z.data(), dx.data());
+      }
+      for (size_t k = 0; k < dx.size(); ++k) loads[b].v[sys.solve_dofs[k]] += dx[k];
+      std::vector<double> &u = body[b].u;
+      for (int i = 0; i < ndof; ++i) u[i] = fixed_[b][i] ? fixed_value_[b][i] : loads[b].v[i];
+      add_rigid_motion(b, new_alpha, u);
+    });
+    const double refined = recovered_gap_residual(new_lambda);
+    if (!(refined <= 0.5 * infos.gap_residual)) {  // no real gain: the step is undone
+      for (int b = 0; b < 2; ++b) loads[b].v = kept_v[b], body[b].u = kept_u[b];
+      break;
+    }
+    lambda = new_lambda, alpha = new_alpha, infos.gap_residual = refined, ++steps;
+  }
+  progress(MC_LOG_PHASE, "refinement: gap residual of the displacements %.3g -> %.3g in %d step%s, %.3g s", first,
+           infos.gap_residual, steps, steps == 1 ? "" : "s", now() - start);
+  return steps > 0;
+}
+}  // namespace mc

@@ -1,0 +1,511 @@
+#include "solve/model.hpp"
+#include "bodies/cell_shapes.hpp"
+#include "support/blas_threads.hpp"
+#include "support/error.hpp"
+#include "support/lapack.hpp"
+#include "bodies/plane_vectors.hpp"
+#include <algorithm>
+#include "support/stopwatch.hpp"
+#include <cmath>
+#include <exception>
+#include <functional>
+#include <pthread.h>
+#include <sched.h>
+#include <system_error>
+#include <thread>
+#include <unistd.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
+namespace mc {
+
+namespace {
+
+
+
+double dot(const std::vector<double> &a, const std::vector<double> &b) {
+  double s = 0;
+  for (size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
+  return s;
+}
+
+// The cores this process may run on (its affinity mask, which is also how OpenBLAS sizes its pool).
+int available_cores() {
+  cpu_set_t set;
+  if (sched_getaffinity(0, sizeof set, &set) == 0) return CPU_COUNT(&set);
+  long online = sysconf(_SC_NPROCESSORS_ONLN);
+  return online > 0 ? int(online) : 1;
+}
+
+void keep_line(void *work, mc_log_level level, const char *line) {
+  static_cast<BodyWork *>(work)->lines.emplace_back(level, line);
+}
+
+void add_body_infos(Infos &to, const Infos &from) {
+  to.dofs += from.dofs, to.factor_nnz += from.factor_nnz, to.factorizations += from.factorizations;
+  to.t_assembly += from.t_assembly, to.t_analysis += from.t_analysis, to.t_factor += from.t_factor;
+  to.t_solve += from.t_solve, to.t_contact += from.t_contact, to.t_estimate += from.t_estimate;
+}
+
+}  // namespace
+
+double axis_tolerance(const Mesh &mesh) { return 1e-12 * mesh.characteristic_length(); }
+
+int first_node_left_of_axis(const Mesh &mesh) {
+  for (int i = 0; i < mesh.n_nodes(); ++i)
+    if (mesh.node(i).x < -axis_tolerance(mesh)) return i;
+  return -1;
+}
+
+int Model::dof_count(int b) const {
+  return body[b].host ? body[b].host_data.n_equations : 2 * body[b].mesh.n_nodes();
+}
+
+int Model::dof_of(int b, int node, int component) const {
+  return body[b].host ? body[b].host_data.equation(node, component) : 2 * node + component;
+}
+
+std::vector<double> Model::nodal_displacement(int b) const {
+  if (!body[b].host) return body[b].u;
+  std::vector<double> u(2 * size_t(body[b].mesh.n_nodes()), 0.0);
+  for (int i = 0; i < body[b].mesh.n_nodes(); ++i)
+    for (int c = 0; c < 2; ++c) {
+      const int dof = dof_of(b, i, c);
+      if (dof >= 0) u[2 * size_t(i) + c] = body[b].u[dof];
+    }
+  return u;
+}
+
+// A body of revolution: a node on the axis stays there (u_r = 0), whatever its loads, or its
+// meridian would tear open along the axis. The host's value of a prescribed u_r there is
+// overridden by 0.
+void Model::effective_supports() {
+  for (int b = 0; b < 2; ++b) {
+    fixed_[b] = body[b].prescribed;
+    fixed_value_[b] = body[b].prescribed_value;
+    if (!axisymmetric || !body[b].has_mesh || body[b].host) continue;  // a host restrains its own axis
+    const Mesh &mesh = body[b].mesh;
+    for (int i = 0; i < mesh.n_nodes(); ++i)
+      if (std::fabs(mesh.node(i).x) <= axis_tolerance(mesh)) fixed_[b][2 * i] = 1, fixed_value_[b][2 * i] = 0;
+  }
+}
+
+int Model::body_threads() const {
+  if (!body[0].has_mesh || !body[1].has_mesh || options.threads == 1) return 1;
+  if (options.threads >= 2) return 2;  // asked for: at most that many, and two bodies use two
+  const long smaller = std::min(dof_count(0), dof_count(1));
+  return available_cores() >= 2 && smaller >= kParallelMinBodyDofs ? 2 : 1;
+}
+
+void Model::for_each_body(const std::function<void(int, BodyWork &)> &task) {
+  BodyWork work[2];
+  std::exception_ptr error[2];
+  // With two body threads, each one's BLAS calls get its share of the cores (blas_threads.hpp):
+  // one thread with OpenBLAS's pthread build (the count solve() lowered for the whole solve),
+  // half the cores with the OpenMP build (each body thread's own setting, here).
+  const bool parallel = threads_ > 1;
+  const int blas_per_body = parallel ? std::max(1, available_cores() / 2) : 0;
+  auto run = [&](int b) {
+    try {
+      BlasThreadsOfThisThread blas_share(blas_per_body);
+      task(b, work[b]);
+    } catch (...) {
+      error[b] = std::current_exception();
+    }
+  };
+  if (threads_ > 1) {
+    // Body 2 on a thread of its own, body 1 on the calling thread. The host's log callback is
+    // only ever called from the calling thread: each body keeps its messages, sent on below.
+    for (BodyWork &w : work)
+      if (progress.enabled()) w.log = ProgressLog{&keep_line, &w};
+    std::thread other;
+    try {
+      other = std::thread(run, 1);
+      // A name a host (and test_model_threads) can see in /proc/self/task/*/comm.
+      pthread_setname_np(other.native_handle(), "mc-body2");
+    } catch (const std::system_error &) {  // no thread to be had: body 2 after body 1
+    }
+    run(0);
+    if (other.joinable()) other.join();
+    else run(1);
+  } else {
+    for (int b = 0; b < 2 && !error[0]; ++b) work[b].log = progress, run(b);
+  }
+  // What a serial solve would have shown: body 1's messages, its error if any, then body 2's.
+  for (int b = 0; b < 2; ++b) {
+    for (const auto &line : work[b].lines) progress(line.first, "%s", line.second.c_str());
+    add_body_infos(infos, work[b].infos);
+    if (error[b]) std::rethrow_exception(error[b]);
+  }
+}
+
+// The contact geometry, then everything one body needs up to the interface problem in one
+// phase per body: stiffness, ordering, factorization, its block of S and, through `then`, its
+// load solve. One phase, not one per step, so that a body finishing a step early goes on with
+// its next one instead of waiting for the other body (docs/benchmarks.md, "Threads").
+void Model::build_structure(const std::function<void(int, BodyWork &)> &then) {
+  contact_.reset();
+  for (auto &sys : system_) sys.reset();
+  if (contact_active()) {
+    Stopwatch watch(infos.t_contact);
+    const double t_geometry = now();
+    auto cs = std::make_unique<ContactSystem>();
+    SurfaceOptions surface_options;
+    surface_options.smooth = options.contact_surface == MC_SURFACE_SMOOTH;
+    surface_options.feature_angle_degrees = options.feature_angle;
+    cs->geometry = build_contact_geometry(body[0].mesh, body[0].contact, body[1].mesh, body[1].contact,
+                                          options.contact_normal, surface_options, measure());
+    cs->rows = build_constraint_rows(cs->geometry, options.method, options.multiplier, measure());
+    const ConstraintRows &rows = cs->rows;
+    for (int b = 0; b < 2; ++b) cs->b_start[b].push_back(0);
+    for (int r = 0; r < rows.size(); ++r) {
+      const Point n = rows.normal[r];
+      const bool vectors = !rows.vector1.empty();  // each entry with its own direction
+      // (A host body's freedom without an equation is restrained: it adds nothing to B.)
+      auto add = [&](int b, int node, Point v) {
+        for (int c = 0; c < 2; ++c) {
+          const int dof = dof_of(b, node, c);
+          if (dof >= 0) cs->b_dof[b].push_back(dof), cs->b_value[b].push_back(c == 0 ? v.x : v.y);
+        }
+      };
+      for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p)
+        add(0, cs->geometry.nodes[rows.position1[p]], vectors ? rows.vector1[p] : scaled(n, rows.weight1[p]));
+      for (int p = rows.start2[r]; p < rows.start2[r + 1]; ++p)
+        add(1, rows.body2_node[p], scaled(vectors ? rows.vector2[p] : scaled(n, rows.weight2[p]), -1));
+      for (int b = 0; b < 2; ++b) cs->b_start[b].push_back(int(cs->b_dof[b].size()));
+    }
+    // B holds the body-2 weights from here on: the rows' own copy goes (on a long interface each
+    // mortar row has some 60 of them).
+    std::vector<int>().swap(cs->rows.body2_node);
+    std::vector<double>().swap(cs->rows.weight2);
+    std::vector<Point>().swap(cs->rows.vector2);
+    progress(MC_LOG_PHASE, "contact geometry and mortar operators: %zu body-1 contact nodes, %d constraint rows, %.3g s",
+             cs->geometry.nodes.size(), cs->rows.size(), now() - t_geometry);
+    contact_ = std::move(cs);
+  }
+
+  // Each body's factorization and, with contact, its share of S = sum_b s_b. The sum is formed
+  // the same way whatever the thread count, so that the results do not depend on it.
+  // The sparse path when it is forced; otherwise each body is analysed for the condensed path
+  // first, and the automatic choice reads those analyses (choose_interface_solver).
+  const bool forced_sparse = contact_ && options.interface_solver == MC_INTERFACE_SPARSE;
+  for_each_body([&](int b, BodyWork &work) {
+    system_[b] = assemble_body(b, work);
+    reduce_body(b, work);
+    if (!forced_sparse) analyze_body(b, work, options.interface_solver == MC_INTERFACE_CONDENSED);
+  });
+  if (contact_) contact_->sparse = forced_sparse || choose_interface_solver();
+  if (contact_ && contact_->sparse) {
+    for (auto &sys : system_)
+      if (sys) sys->cholesky.release();  // the condensed path's analyses, read by the choice
+#ifdef __GLIBC__
+    malloc_trim(0);  // and their pages back to the system before the larger factor is allocated
+#endif
+    build_sparse_structure();
+    for_each_body(then);
+    built_version_ = structure_version_;
+    return;
+  }
+  build_condensed(then);
+  built_version_ = structure_version_;
+}
+
+double Model::initial_gap(size_t pos) const {
+  const ContactGeometry &g = contact_->geometry;
+  const std::vector<double> &offset = body[0].gap_offset;
+  return offset.empty() ? g.gap0[pos] : g.gap0[pos] + offset[g.nodes[pos]];
+}
+
+double Model::row_initial_gap(int r) const {
+  const ConstraintRows &rows = contact_->rows;
+  const std::vector<double> &offset = body[0].gap_offset;
+  double g = rows.gap0[r];
+  if (!offset.empty())  // the host's offsets, interpolated like u1 at a trace point inside a segment
+    for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p)
+      g += rows.weight1[p] * offset[contact_->geometry.nodes[rows.position1[p]]];
+  return g;
+}
+
+// Row r's gap g_r - B_r u with the bodies' current displacements (body[b].u).
+double Model::row_gap(int r) const {
+  double gap = row_initial_gap(r);
+  for (int b = 0; b < 2; ++b)
+    for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
+      gap -= contact_->b_value[b][p] * body[b].u[contact_->b_dof[b][p]];
+  return gap;
+}
+
+// The gap at contact position pos itself, g0 - (u1 - u2(y)) . n with y its projection on body 2.
+double Model::pointwise_gap(size_t pos) const {
+  const ContactGeometry &g = contact_->geometry;
+  const CurveSegment &c = g.mortar.segments()[g.projection[pos].segment];
+  double shape[3], ds[3];
+  line_shapes(c.quadratic() ? 3 : 2, g.projection[pos].eta, shape, ds);
+  const int node2[3] = {c.a, c.b, c.mid}, node1 = g.nodes[pos];
+  auto u = [&](int b, int node, int component) {
+    const int dof = dof_of(b, node, component);
+    return dof >= 0 ? body[b].u[dof] : 0.0;
+  };
+  double ux = u(0, node1, 0), uy = u(0, node1, 1);
+  for (int a = 0; a < (c.quadratic() ? 3 : 2); ++a)
+    ux -= shape[a] * u(1, node2[a], 0), uy -= shape[a] * u(1, node2[a], 1);
+  return initial_gap(pos) - (ux * g.normals[pos].x + uy * g.normals[pos].y);
+}
+
+// u += R alpha for body b (its rigid modes' share of alpha; nothing for a held body).
+void Model::add_rigid_motion(int b, const std::vector<double> &alpha, std::vector<double> &u) const {
+  const RigidModes &rm = system_[b]->rigid;
+  const int ndof = system_[b]->stiffness.n, offset = b == 0 || !system_[0] ? 0 : system_[0]->rigid.count;
+  for (int c = 0; c < rm.count; ++c)
+    for (int i = 0; i < ndof; ++i) u[i] += alpha[offset + c] * rm.modes[size_t(c) * ndof + i];
+}
+
+// MC_INFO_GAP_RESIDUAL: the complementarity of the gaps of the displacements returned, not of
+// the condensed problem's (MC_INFO_COMPLEMENTARITY). The two agree unless the condensation lost
+// accuracy: its right-hand side d = B K^+ f - g0 can be far larger than the gaps it yields (a
+// slender body factorized alone is as compliant as a free beam), and the gaps of the recovered
+// u then carry round-off of d's size (docs/robustness.md, "Known limitations"). A row's gap is a
+// weighted mean (the mortar weights); divided by the sum of its body-1 weights it is a length,
+// here relative to the largest displacement or initial gap, the size its round-off scales with.
+double Model::recovered_gap_residual(const std::vector<double> &lambda) const {
+  const ConstraintRows &rows = contact_->rows;
+  double worst = 0, scale = 0;
+  for (int b = 0; b < 2; ++b)
+    for (double u : body[b].u) scale = std::max(scale, std::fabs(u));
+  for (int r = 0; r < rows.size(); ++r) {
+    double weight = 0;
+    for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p) weight += std::fabs(rows.weight1[p]);
+    if (weight == 0) continue;
+    scale = std::max(scale, std::fabs(row_initial_gap(r)) / weight);
+    const double gap = row_gap(r);
+    // Active rows must close (gap 0), inactive ones must not penetrate (gap >= 0).
+    worst = std::max(worst, (lambda[r] > 0 ? std::fabs(gap) : std::max(0.0, -gap)) / weight);
+  }
+  return scale > 0 ? worst / scale : worst;
+}
+
+// One body's loads with the prescribed displacements lifted, f_eff = f - K u_prescribed, and
+// their first solve.
+void Model::solve_loads(int b, BodyWork &work, LoadSolve &out) const {
+  if (!system_[b]) return;
+  const double start = now();
+  BodySystem &sys = *system_[b];
+  {
+    Stopwatch watch(work.infos.t_assembly);
+    out.f = load_vector(b);
+    std::vector<double> up(sys.stiffness.n, 0.0), kup(sys.stiffness.n, 0.0);
+    bool any_prescribed_motion = false;  // supports at rest (the usual case) lift nothing
+    for (int i = 0; i < sys.stiffness.n; ++i)
+      if (fixed_[b][i] && fixed_value_[b][i] != 0) up[i] = fixed_value_[b][i], any_prescribed_motion = true;
+    if (any_prescribed_motion) sys.stiffness.multiply(up.data(), kup.data());
+    out.lifted.resize(sys.stiffness.n);
+    for (int i = 0; i < sys.stiffness.n; ++i) out.lifted[i] = fixed_[b][i] ? 0 : out.f[i] - kup[i];
+  }
+  // Without contact v = K^+ f_eff; with contact only its first half y = L^-1 P f_eff, which
+  // is all the interface problem needs (B v = W^T y_G); the recovery finishes the solve.
+  std::vector<double> x(sys.solve_dofs.size());
+  for (size_t k = 0; k < x.size(); ++k) x[k] = out.lifted[sys.solve_dofs[k]];
+  {
+    Stopwatch watch(work.infos.t_solve);
+    if (contact_ && contact_->sparse) {
+      // the sparse path solves the loads with the contact problem (solve_sparse)
+    } else if (contact_) {
+      out.y.resize(x.size());
+      sys.cholesky.forward(x.data(), out.y.data());
+    } else {
+      sys.cholesky.solve(x.data());
+    }
+  }
+  out.v.assign(sys.stiffness.n, 0.0);
+  if (!contact_)
+    for (size_t k = 0; k < x.size(); ++k) out.v[sys.solve_dofs[k]] = x[k];
+  work.infos.dofs += long(sys.solve_dofs.size() + sys.rigid.pinned_dofs.size());
+  if (!contact_ || !contact_->sparse) work.infos.factor_nnz += sys.cholesky.factor_nnz();  // (sparse: solve_sparse)
+  out.seconds = now() - start;
+}
+
+void Model::solve() {
+  const double start = now();
+  infos = Infos{};
+  solved = false;
+  if (!body[0].has_mesh && !body[1].has_mesh) fail(MC_ERROR_STATE, "no mesh: call mc_set_mesh first");
+  for (int b = 0; b < 2; ++b) {
+    if (body[b].host && body[b].host_data.entry_value.empty())
+      fail(MC_ERROR_STATE, "body %d is a host body without stiffness: call mc_add_stiffness or mc_add_element_matrices",
+           b + 1);
+    if (body[b].has_mesh && !body[b].host && !body[b].has_material)
+      fail(MC_ERROR_STATE, "body %d has no material: call mc_set_material or mc_set_cell_elasticity", b + 1);
+    // Checked here, before any work, so that this error comes first whatever else is wrong
+    // (the contact geometry is built before the bodies are assembled).
+    if (body[b].has_mesh && axisymmetric && !body[b].cell_elasticity.empty())
+      fail(MC_ERROR_MATERIAL,
+           "body %d: mc_set_cell_elasticity gives the in-plane law only, and an axisymmetric model also needs "
+           "its hoop terms: use mc_set_material, or a plane model",
+           b + 1);
+  }
+  if (body[0].has_contact != body[1].has_contact)
+    fail(MC_ERROR_STATE, "body %d has a contact surface but body %d has none: contact needs both (mc_set_contact)",
+         body[0].has_contact ? 1 : 2, body[0].has_contact ? 2 : 1);
+  const bool rebuild = built_version_ != structure_version_;
+  threads_ = body_threads();
+  infos.threads = threads_;
+  // With two body threads, OpenBLAS's pthread build runs one thread per call for the whole
+  // solve (from before its first log message), not only while both bodies run: its threaded
+  // level-3 calls take turns on one process-wide lock (two bodies asking for more would wait
+  // on each other), and a call between the phases (the active-set solve's) would wake its
+  // worker, which then spins for a while after the call, into the next phase, on a core a body
+  // thread needs (measured: the re-solve's recovery at 5*10^5 DOFs took 0.06 or 0.10 s,
+  // depending on it; docs/benchmarks.md, "Threads").
+  BlasPoolShare pool_share(threads_ > 1 ? 1 : 0);
+  progress(MC_LOG_PHASE, "solve: start, %s%s",
+           rebuild ? "assembling and factorizing" : "reusing the factorizations and the interface operator",
+           threads_ > 1 ? " (the two bodies at once, on 2 threads)" : "");
+  effective_supports();
+  // Each body's loads and their first solve: in the phase that factorizes it when the structure
+  // is rebuilt, on their own otherwise.
+  LoadSolve loads[2];
+  auto load_step = [&](int b, BodyWork &work) { solve_loads(b, work, loads[b]); };
+  if (rebuild) {
+    built_version_ = 0;
+    build_structure(load_step);
+  } else {
+    for_each_body(load_step);
+  }
+  progress(MC_LOG_PHASE, "loads: load vectors and %s, %.3g s", contact_ ? "forward solves y = L^-1 P f" : "solves v = K^-1 f",
+           loads[0].seconds + loads[1].seconds);
+  std::vector<double> lambda;
+  std::vector<double> alpha;
+  DualQp qp;  // kept for the refinement (its S and G)
+  // displacements_known: loads[b].v already holds K^+ (f_eff - B^T lambda) (the sparse path, or
+  // after a refinement).
+  bool displacements_known = false;
+  if (contact_ && contact_->sparse) {
+    // The sparse path, or (if its active-set iteration cycles) the condensed one, whose QP
+    // solver has a fallback for that (fall_back_to_condensed).
+    if (solve_sparse(loads, lambda, alpha)) displacements_known = true;
+    else fall_back_to_condensed(loads);
+  }
+  if (contact_ && !contact_->sparse) solve_condensed(loads, qp, lambda, alpha);
+  if (contact_) infos.interface_solver = contact_->sparse ? MC_INTERFACE_SPARSE : MC_INTERFACE_CONDENSED;
+
+  // u = K^+ (f_eff - B^T lambda) + R alpha, then the prescribed values.
+  const double t_recovery = now();
+  double f_norm2[2] = {0, 0}, residual_norm2[2] = {0, 0}, energy[2] = {0, 0};
+  auto recover = [&](int b, BodyWork &work) {
+    if (!system_[b]) return;
+    BodySystem &sys = *system_[b];
+    const int ndof = sys.stiffness.n;
+    std::vector<double> contact_force(ndof, 0.0), rigid_motion(ndof, 0.0);  // rigid_motion: R alpha
+    if (contact_) {
+      for (int r = 0; r < contact_->rows.size(); ++r)
+        for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
+          contact_force[contact_->b_dof[b][p]] -= contact_->b_value[b][p] * lambda[r];
+      add_rigid_motion(b, alpha, rigid_motion);
+    }
+    if (contact_ && !displacements_known) {
+      // u = K^+ (f_eff - B^T lambda) = P^T L^-T (y - [0; W lambda]): the backward half only.
+      std::vector<double> x(sys.solve_dofs.size()), z(loads[b].y);
+      const int ng = contact_->w_rows[b], q = contact_->rows.size();
+      if (ng > 0 && q > 0) {
+        int one = 1;
+        double minus = -1.0, plus = 1.0;
+        double *z_interface = z.data() + sys.cholesky.interface_start();
+        dgemv_("N", &ng, &q, &minus, contact_->w[b].data(), &ng, lambda.data(), &one, &plus, z_interface, &one);
+      }
+      {
+        Stopwatch watch(work.infos.t_solve);
+        sys.cholesky.backward(z.data(), x.data());
+      }
+      std::fill(loads[b].v.begin(), loads[b].v.end(), 0.0);
+      for (size_t k = 0; k < x.size(); ++k) loads[b].v[sys.solve_dofs[k]] = x[k];
+    }
+    Body &body_ = body[b];
+    // Reactions, energy and the equilibrium residual from the full stiffness. K R = 0, so K is
+    // applied to u without R alpha: a floating body that travels far compared with its
+    // deformation (a large initial gap) would otherwise leave round-off eps |K| |R alpha| in all
+    // three. (The rigid modes vanish at prescribed components.)
+    std::vector<double> elastic(loads[b].v);
+    for (int i = 0; i < ndof; ++i) if (fixed_[b][i]) elastic[i] = fixed_value_[b][i];
+    body_.u = elastic;
+    for (int i = 0; i < ndof; ++i) body_.u[i] += rigid_motion[i];
+    std::vector<double> ku(ndof);
+    sys.stiffness.multiply(elastic.data(), ku.data());
+    body_.reaction.assign(ndof, 0.0);
+    for (int i = 0; i < ndof; ++i) {
+      double r = ku[i] - loads[b].f[i] - contact_force[i];
+      if (fixed_[b][i]) body_.reaction[i] = r;
+      // Relative to the load of the reduced problem, f - K u_prescribed: a body moved only by
+      // prescribed displacements has f = 0, and its residual is then measured against the forces
+      // those displacements cause, not in absolute units.
+      else residual_norm2[b] += r * r, f_norm2[b] += loads[b].lifted[i] * loads[b].lifted[i] + contact_force[i] * contact_force[i];
+    }
+    energy[b] = 0.5 * dot(elastic, ku);
+    body_.contact_load = contact_force;
+    if (!body_.host) cell_and_nodal_stresses(b, sys.laws);
+  };
+  for_each_body(recover);
+  if (contact_) {
+    infos.gap_residual = recovered_gap_residual(lambda);
+    if (!contact_->sparse && infos.gap_residual > kRefineAboveGapResidual && refine_solution(qp, loads, lambda, alpha)) {
+      displacements_known = true;
+      f_norm2[0] = f_norm2[1] = residual_norm2[0] = residual_norm2[1] = 0;
+      for_each_body(recover);  // reactions, energy and stresses of the refined displacements
+    }
+  }
+  // Per-body sums added in body order, whatever the thread count.
+  const double residual_norm = residual_norm2[0] + residual_norm2[1], f_norm = f_norm2[0] + f_norm2[1];
+  infos.energy = energy[0] + energy[1];
+  infos.equilibrium = std::sqrt(residual_norm) / std::max(std::sqrt(f_norm), 1e-300);
+  if (f_norm == 0) infos.equilibrium = std::sqrt(residual_norm);
+
+  // Contact results per body-1 contact node.
+  contact_force.clear(), contact_gap.clear(), contact_pressure.clear();
+  if (contact_) {
+    const ContactGeometry &g = contact_->geometry;
+    const size_t n = g.nodes.size();
+    contact_force.assign(n, 0.0);
+    contact_gap.assign(n, kNoGap);
+    contact_pressure.assign(n, 0.0);
+    // A row's force lambda_r acts on its body-1 positions with the row's weights; the pressure
+    // of a position is its force over its tributary length on Gamma_c (lumped recovery).
+    const ConstraintRows &rows = contact_->rows;
+    for (int r = 0; r < rows.size(); ++r) {
+      const double gap = row_gap(r);
+      if (rows.own_position[r] >= 0) contact_gap[rows.own_position[r]] = gap;
+      for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p) contact_force[rows.position1[p]] += rows.weight1[p] * lambda[r];
+    }
+    if (g.quadratic_nonmortar)  // the middles and the ends own no row: their gaps pointwise
+      for (size_t pos = 0; pos < n; ++pos)
+        if (contact_gap[pos] == kNoGap && g.projection[pos].segment >= 0) contact_gap[pos] = pointwise_gap(pos);
+    if (!rows.pressure_of_position.empty()) {
+      // The weak rows' own pressure field (a quadratic body 1: mortar_operators.hpp). The lumped
+      // force over tributary measure would be it on straight evenly spaced edges, but a P2
+      // corner's tributary measure is h/6, and on graded or curved edges the forces that the
+      // neighbouring multipliers put on it make the lumped pressures alternate from corner to
+      // middle (measured: 3 to 5 % of p0 on two cylinders, docs/robustness.md).
+      for (size_t pos = 0; pos < n; ++pos)
+        for (auto &[r, c] : rows.pressure_of_position[pos]) contact_pressure[pos] += c * lambda[r];
+    } else {
+      for (size_t pos = 0; pos < n; ++pos)
+        // The tributary measure includes the thickness (or 2 pi r): a position whose contact edges
+        // all lie on the axis stands for no area; its force is reported, its pressure as 0.
+        if (g.tributary[pos] > 0) contact_pressure[pos] = contact_force[pos] / g.tributary[pos];
+    }
+  }
+  progress(MC_LOG_PHASE, "recovery: displacements, reactions, stresses and contact results, %.3g s", now() - t_recovery);
+  if (options.error_estimate) {
+    const double t_estimate = now();
+    estimate_error();
+    progress(MC_LOG_PHASE, "error estimate: %.3g (relative, energy norm), %.3g s", infos.error_estimate,
+             now() - t_estimate);
+  } else {
+    estimate_error();  // clears the previous solve's
+  }
+  infos.t_total = now() - start;
+  progress(MC_LOG_PHASE, "solve: done, %ld unknowns, %ld active of %ld contact nodes, %.3g s", infos.dofs, infos.active,
+           infos.contact_rows, infos.t_total);
+  solved = true;
+}
+
+}  // namespace mc

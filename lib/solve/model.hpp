@@ -1,0 +1,240 @@
+// The scene a host registers (two bodies, materials, supports, loads, contact surfaces), the
+// solve, and its results. ids are 0-based here; the C API layer handles the index base.
+#pragma once
+#include "mortarcontact.h"
+#include "bodies/assembly.hpp"
+#include "contact/contact_geometry.hpp"
+#include "linalg/dual_qp.hpp"
+#include "bodies/host_body.hpp"
+#include "bodies/mesh.hpp"
+#include "contact/mortar_operators.hpp"
+#include "support/progress_log.hpp"
+#include "bodies/rigid_modes.hpp"
+#include "linalg/sparse_cholesky.hpp"
+#include "linalg/sparse_contact_solve.hpp"
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace mc {
+
+// A node of an axisymmetric model lies on the axis when |x| <= axis_tolerance(mesh) (a
+// relative 1e-12 of the mesh's extent: a mesh generator's round-off); one with x below
+// -axis_tolerance is an error (first_node_left_of_axis finds it, -1 if none).
+double axis_tolerance(const Mesh &mesh);
+int first_node_left_of_axis(const Mesh &mesh);
+
+struct EdgeLoad {
+  int a, b;        // nodes, oriented as the cell (body on the left)
+  double tx, ty;   // traction (per unit length), or pressure in tx with is_pressure
+  bool is_pressure;
+};
+
+struct Body {
+  bool has_mesh = false;  // a mesh body, or a host body (whose mesh holds nodes only)
+  Mesh mesh;
+  bool host = false;      // mc_set_host_body: the stiffness and load are the host's (host_body.hpp)
+  HostBody host_data;
+  bool has_material = false;
+  double young = 0, poisson = 0;
+  std::vector<double> cell_elasticity;  // 9 per cell when given
+  // Per DOF: 2 per node (x, y) for a mesh body, one per host equation for a host body.
+  std::vector<char> prescribed;         // per DOF
+  std::vector<double> prescribed_value;
+  std::vector<double> nodal_force;      // per DOF
+  std::vector<EdgeLoad> edge_loads;
+  double body_force[2] = {0, 0};
+  bool has_contact = false;
+  std::vector<SurfaceSegment> contact;
+  std::vector<double> gap_offset;       // per node (body 1 only), added to g0; empty: none
+  // results
+  std::vector<double> u, reaction, stress, nodal_stress;  // u, reaction: per DOF
+  std::vector<double> contact_load;     // per DOF: the contact forces on the body (K u = f + contact_load)
+  std::vector<double> error_indicator;  // per cell, relative (mc_get_error_indicator); empty: not estimated
+};
+
+// What a solve keeps for the next one when only loads or prescribed values change.
+struct BodySystem {
+  SymmetricCsc stiffness;          // all 2n DOFs
+  std::vector<PlaneLaw> laws;
+  RigidModes rigid;
+  std::vector<int> solve_index;    // DOF -> reduced index, -1 if prescribed or pinned
+  std::vector<int> solve_dofs;
+  SymmetricCsc reduced;
+  SparseCholesky cholesky;
+  std::vector<int> interface;      // DOFs (full numbering) in B, ordered last in the factor
+};
+
+struct ContactSystem {
+  ContactGeometry geometry;
+  ConstraintRows rows;
+  // B per body as CSR over rows: (DOF, coefficient)
+  std::vector<int> b_start[2], b_dof[2];
+  std::vector<double> b_value[2];
+  std::vector<double> s;           // q x q interface operator B K^+ B^T
+  // W_b = L_GG^-1 (P B_b^T)_G per body (rows: the factor's trailing interface unknowns, q
+  // columns): S = sum W_b^T W_b, B K^-1 f = sum W_b^T (L^-1 P f)_G, and the recovery needs
+  // only L^-1 P B^T lambda = [0; W_b lambda]: one forward and one backward solve per body.
+  std::vector<double> w[2];
+  int w_rows[2] = {0, 0};
+  std::vector<char> last_active;
+  // The sparse path (MC_INTERFACE_SPARSE; sparse_contact_path.cpp): its unknowns are body 1's
+  // free unknowns from column_offset[0], body 2's from column_offset[1], the mortar values w
+  // (2 per ConstraintRows::aux point) from aux_offset, the rigid-mode amplitudes from
+  // mode_offset; its rows the q contact rows, then two mortar equations per aux point.
+  bool sparse = false;
+  SparseContactStructure structure;
+  SparseContactSolver solver;
+  int column_offset[2] = {0, 0}, aux_offset = 0, mode_offset = 0, modes = 0;
+  std::vector<double> g;           // G = B R, q x modes, column-major (both paths' floating bodies)
+};
+
+struct Options {
+  int method = MC_METHOD_MORTAR;
+  double tolerance = 1e-10;
+  int max_iterations = 200;
+  int ordering = MC_ORDERING_AUTO;
+  int q1_integration = MC_Q1_FULL;
+  int contact_normal = MC_NORMAL_NONMORTAR;
+  int contact_surface = MC_SURFACE_SMOOTH;
+  double feature_angle = 40;  // degrees (docs/robustness.md: chosen by measurement)
+  int threads = 0;  // MC_OPTION_THREADS: 0 automatic, 1 serial, n: at most n threads
+  int interface_solver = MC_INTERFACE_AUTO;  // MC_OPTION_INTERFACE_SOLVER
+  bool error_estimate = true;                // MC_OPTION_ERROR_ESTIMATE
+  int multiplier = MC_MULTIPLIER_LINEAR;     // MC_OPTION_MULTIPLIER
+};
+
+struct Infos {
+  long dofs = 0, factor_nnz = 0, iterations = 0, active = 0, contact_rows = 0, factorizations = 0;
+  double t_assembly = 0, t_analysis = 0, t_factor = 0, t_solve = 0, t_contact = 0, t_total = 0;
+  double energy = 0, complementarity = 0, equilibrium = 0;
+  double gap_residual = 0;  // MC_INFO_GAP_RESIDUAL: complementarity of the returned displacements' gaps
+  int threads = 1;  // threads the last solve ran the bodies' work on (1 or 2)
+  int interface_solver = 0;  // MC_INFO_INTERFACE_SOLVER: MC_INTERFACE_CONDENSED or _SPARSE; 0 without contact
+  double error_estimate = 0;  // MC_INFO_ERROR_ESTIMATE (error_estimate.cpp)
+  double t_estimate = 0;      // its time (part of MC_INFO_TIME_TOTAL)
+};
+
+// The smaller body's unknowns (2 x its nodes) from which MC_OPTION_THREADS = 0 (automatic)
+// solves the two bodies at once on a machine with two or more cores. Chosen by measurement
+// (docs/benchmarks.md, "Threads"): below about 15000 the re-solve, a few milliseconds, was
+// slower on two threads (starting them costs more than they save), and up to 25000 the gain was
+// within the noise of a shared machine; from 30000 on it was clear in every run.
+constexpr long kParallelMinBodyDofs = 30000;
+
+// The refinement of a contact solve (Model::refine_solution) runs when the gaps of the
+// recovered displacements (MC_INFO_GAP_RESIDUAL) exceed this: at most 1.1e-14 in every contact
+// scene of the test suite, 3e-11 and more on the long strips (docs/robustness.md). Each step
+// costs a forward and a backward solve per body and a dense solve of the active block.
+constexpr double kRefineAboveGapResidual = 1e-13;
+constexpr int kMaxRefinementSteps = 3;
+
+// One body's share of a phase that runs for both bodies at once: its own timings and counts
+// (added to the model's infos in body order) and, when it runs on a thread of its own, its
+// progress messages, kept until the calling thread sends them on.
+struct BodyWork {
+  Infos infos;
+  ProgressLog log;
+  std::vector<std::pair<mc_log_level, std::string>> lines;
+};
+
+// One body's loads and their first solve: f, f_eff = f - K u_prescribed (0 at prescribed
+// components), and either v = K^-1 f_eff (no contact) or y = L^-1 P f_eff (contact).
+struct LoadSolve {
+  std::vector<double> f, lifted, v, y;
+  double seconds = 0;
+};
+
+class Model {
+public:
+  Body body[2];
+  Options options;
+  Infos infos;
+  bool plane_stress = false;
+  bool axisymmetric = false;  // MC_AXISYMMETRIC: x = r >= 0, y the axis; thickness then unused
+  double thickness = 1;
+  int index_base = 0;
+  bool solved = false;
+  ProgressLog progress;  // the host's log callback (mc_set_log_callback), called by solve()
+
+  // Anything that changes K, the supports' set, the contact surfaces or the method.
+  void structure_changed() { ++structure_version_, solved = false; }
+  void values_changed() { solved = false; }
+  void solve();
+
+  bool contact_active() const { return body[0].has_contact && body[1].has_contact; }
+  // The body's unknowns before supports: 2 per node (mesh body) or the host's equations.
+  int dof_count(int b) const;
+  // The unknown of a node's component (0: x, 1: y), or -1 if a host body has none for it.
+  int dof_of(int b, int node, int component) const;
+  // Displacements 2 per node (0 where a host body's freedom has no equation).
+  std::vector<double> nodal_displacement(int b) const;
+  // The weight of every integral: the thickness, or 2 pi r (line_measure.hpp).
+  LineMeasure measure() const { return LineMeasure{axisymmetric, thickness}; }
+  const ContactSystem *contact() const { return contact_.get(); }
+  // g0 of contact node pos (ContactGeometry order) with the host's offset (mc_set_gap_offset).
+  double initial_gap(size_t pos) const;
+  // g0 of constraint row r with the host's offsets.
+  double row_initial_gap(int r) const;
+  double row_gap(int r) const;
+  double pointwise_gap(size_t pos) const;
+  void add_rigid_motion(int b, const std::vector<double> &alpha, std::vector<double> &u) const;
+  double recovered_gap_residual(const std::vector<double> &lambda) const;
+  bool refine_solution(DualQp &qp, LoadSolve loads[2], std::vector<double> &lambda, std::vector<double> &alpha);
+  // Contact results per body-1 contact node (after a contact solve).
+  std::vector<double> contact_force, contact_gap, contact_pressure;
+
+private:
+  int body_threads() const;
+  // Runs task(b, work) for both bodies: one after the other, or with two threads body 2's on a
+  // std::thread joined before returning. Exceptions are rethrown here, body 1's first.
+  void for_each_body(const std::function<void(int, BodyWork &)> &task);
+  std::unique_ptr<BodySystem> assemble_body(int b, BodyWork &work) const;
+  void reduce_body(int b, BodyWork &work);
+  // needed: the condensed path will use it (refused if the interface is too long for it); else
+  // for the automatic choice only (then skipped for such an interface, see body_phases.cpp).
+  void analyze_body(int b, BodyWork &work, bool needed);
+  void factorize_body(int b, BodyWork &work);
+  // The automatic choice of interface solver (MC_OPTION_INTERFACE_SOLVER), after the bodies'
+  // analyses for the condensed path; also refuses a path too large for memory. True: sparse.
+  bool choose_interface_solver();
+  // MC_ERROR_MEMORY if the condensed path's dense blocks (S, W_b, L_GG) would not fit.
+  void check_condensed_fits() const;
+  // The sparse path (sparse_contact_path.cpp). solve_sparse returns false if its active-set
+  // iteration cycled (then fall_back_to_condensed).
+  void build_sparse_structure();
+  bool solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::vector<double> &alpha);
+  // The condensed path (condensed_contact_path.cpp).
+  void build_condensed(const std::function<void(int, BodyWork &)> &then);
+  void fall_back_to_condensed(LoadSolve loads[2]);
+  void solve_condensed(LoadSolve loads[2], DualQp &qp, std::vector<double> &lambda, std::vector<double> &alpha);
+  // Row r's share of the rigid modes, G = B R (q x modes, column-major), and e = R^T f_eff (body
+  // 1's modes, then body 2's).
+  std::vector<double> rigid_mode_rows() const;
+  std::vector<double> rigid_mode_loads(const LoadSolve loads[2]) const;
+  // "body 1: translation in y; ..." for the floating bodies, for both paths' messages.
+  std::string free_modes_description() const;
+  // The active-set iterations' log messages (MC_LOG_ITERATION), for both paths; empty without a
+  // log callback.
+  DualQpObserver iteration_log(int q);
+  void interface_block(int b, std::vector<double> &s_b, BodyWork &work);
+  void build_structure(const std::function<void(int, BodyWork &)> &then);
+  void solve_loads(int b, BodyWork &work, LoadSolve &out) const;
+  void cell_and_nodal_stresses(int b, const std::vector<PlaneLaw> &laws);
+  // MC_INFO_ERROR_ESTIMATE and the cells' indicators, after the recovery (error_estimate.cpp).
+  void estimate_error();
+  std::vector<double> load_vector(int b) const;
+  void effective_supports();
+  // The supports a solve uses: the host's (mc_fix) and, in an axisymmetric model, u_r = 0 at
+  // the nodes on the axis. Per DOF, like Body::prescribed and prescribed_value.
+  std::vector<char> fixed_[2];
+  std::vector<double> fixed_value_[2];
+  int threads_ = 1;  // body threads of the solve under way
+  long structure_version_ = 1, built_version_ = 0;
+  std::unique_ptr<BodySystem> system_[2];
+  std::unique_ptr<ContactSystem> contact_;
+};
+
+}  // namespace mc

@@ -1,0 +1,406 @@
+// The model's side of the two interface solvers: which one runs (MC_OPTION_INTERFACE_SOLVER),
+// and the sparse path's problem built from the scene (sparse_contact_solve.hpp does the
+// solving). The condensed path is in model.cpp (its operator S) and dual_qp.cpp (its QP).
+#include "solve/model.hpp"
+#include "support/error.hpp"
+#include "support/lapack.hpp"
+#include <algorithm>
+#include "support/stopwatch.hpp"
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <sys/resource.h>
+#include <cstdlib>
+
+namespace mc {
+
+namespace {
+
+
+// The memory this process can still get: what the kernel says it can have without swapping
+// (MemAvailable), or less if the process runs under an address-space limit (RLIMIT_AS, `ulimit
+// -v`: then the limit less what is mapped already). In bytes; 0 if unknown (then no path is
+// refused for its size).
+// A "Key: value kB" line of a /proc file, in bytes; 0 if absent.
+double proc_field_bytes(const char *path, const char *key) {
+  FILE *f = std::fopen(path, "r");
+  if (!f) return 0;
+  char line[256];
+  double kib = 0;
+  const size_t length = std::strlen(key);
+  while (std::fgets(line, sizeof line, f))
+    if (std::strncmp(line, key, length) == 0) kib = std::atof(line + length);
+  std::fclose(f);
+  return kib * 1024;
+}
+
+double available_memory() {
+  double bytes = proc_field_bytes("/proc/meminfo", "MemAvailable:");
+  struct rlimit limit;
+  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+    const double headroom = std::max(double(limit.rlim_cur) - proc_field_bytes("/proc/self/status", "VmSize:"), 1.0);
+    bytes = bytes > 0 ? std::min(bytes, headroom) : headroom;
+  }
+  return bytes;
+}
+
+double gib(double bytes) { return bytes / (1024.0 * 1024.0 * 1024.0); }
+
+// Below this the memory is not asked for: reading /proc costs about 50 microseconds, a few % of
+// a solve of 10^3 unknowns, and a process that has got this far has 64 MiB more to give.
+constexpr double kMemoryQueryFrom = 64.0 * 1024 * 1024;
+
+// available_memory() for a need of `bytes`; 0 (unknown: nothing is refused) below kMemoryQueryFrom.
+double memory_for(double bytes) { return bytes < kMemoryQueryFrom ? 0 : available_memory(); }
+
+}  // namespace
+
+// Factorizations the sparse path is expected to need: one per active-set iteration. Measured
+// (docs/benchmarks.md, "Long contact interfaces"): 2 on the strips, 5 to 9 on the wavy
+// contact and on Hertz from the all-active start.
+constexpr double kSparseFactorizationsExpected = 6;
+// The condensed path is refused when it would take more than this share of the memory
+// available (MemAvailable), the sparse path when it would take more than all of it: the
+// operating system would otherwise kill the host process, which a library must not cause.
+constexpr double kCondensedMemoryShare = 0.5;
+
+void Model::check_condensed_fits() const {
+  const ContactSystem &cs = *contact_;
+  const double q = cs.rows.size();
+  double bytes = 8 * q * q;
+  for (int b = 0; b < 2; ++b)
+    if (system_[b]) {
+      const double ng = double(system_[b]->interface.size());
+      bytes += 8 * (ng * q + ng * ng);
+    }
+  const double memory = memory_for(bytes);
+  if (memory > 0 && bytes > memory)
+    fail(MC_ERROR_MEMORY,
+         "the condensed interface solver (MC_INTERFACE_CONDENSED) would need about %.3g GiB for %d contact rows "
+         "(a dense operator of order q), and %.3g GiB are available: use MC_INTERFACE_SPARSE or MC_INTERFACE_AUTO",
+         gib(bytes), int(q), gib(memory));
+}
+
+bool Model::choose_interface_solver() {
+  const double start = now();
+  ContactSystem &cs = *contact_;
+  const double q = cs.rows.size();
+  // The condensed path's cost from the bodies' analyses (interface last): their factors, each
+  // body's W_b = L_GG^-1 B_G^T (ng x q) and its dense L_GG copy, S (q x q); time: the
+  // factorizations, the triangular solve and rank-k update that form S, and the dense
+  // active-set solves (about q^3).
+  double flops = 0, nnz = 0, dense_block_flops = 0, dense_block_nnz = 0, extra_flops = 0, extra_bytes = 0;
+  for (int b = 0; b < 2; ++b) {
+    if (!system_[b]) continue;
+    const double ng = double(system_[b]->interface.size());
+    flops += system_[b]->cholesky.analysis_flops();
+    nnz += double(system_[b]->cholesky.factor_nnz());
+    dense_block_flops += ng * ng * ng / 3, dense_block_nnz += ng * ng / 2;
+    extra_flops += ng * ng * q + ng * q * q;
+    extra_bytes += 8 * (ng * q + ng * ng);
+  }
+  const double condensed_bytes = 8 * nnz + extra_bytes + 8 * q * q;
+  const double condensed_flops = flops + extra_flops + q * q * q;
+  // The sparse path: about the bodies' factorization without the dense trailing blocks, once
+  // per active-set iteration.
+  const double plain_flops = std::max(flops - dense_block_flops, 0.05 * flops);
+  const double sparse_flops = kSparseFactorizationsExpected * plain_flops;
+  const double sparse_bytes = 8 * std::max(nnz - dense_block_nnz, 0.05 * nnz);
+  const double memory = memory_for(condensed_bytes);
+  bool analysed = true;  // analyze_body skips an interface too long for the condensed path
+  for (int b = 0; b < 2; ++b)
+    if (system_[b] && !system_[b]->cholesky.analyzed()) analysed = false;
+  const bool condensed_fits = analysed && (memory <= 0 || condensed_bytes <= kCondensedMemoryShare * memory);
+  if (options.interface_solver == MC_INTERFACE_CONDENSED) {
+    if (memory > 0 && condensed_bytes > memory)
+      fail(MC_ERROR_MEMORY,
+           "the condensed interface solver (MC_INTERFACE_CONDENSED) would need about %.3g GiB for %d contact rows "
+           "(a dense operator of order q), and %.3g GiB are available: use MC_INTERFACE_SPARSE or MC_INTERFACE_AUTO",
+           gib(condensed_bytes), int(q), gib(memory));
+    progress(MC_LOG_PHASE, "interface solver: condensed (asked for), estimated %.3g flops and %.3g GiB, %.3g s",
+             condensed_flops, gib(condensed_bytes), now() - start);
+    return false;
+  }
+  const bool sparse = !condensed_fits || sparse_flops < condensed_flops;
+  progress(MC_LOG_PHASE,
+           "interface solver: %s (automatic: %s; condensed estimated %.3g flops and %.3g GiB, sparse %.0f x %.3g flops "
+           "and %.3g GiB, for %d contact rows), %.3g s",
+           sparse ? "sparse" : "condensed",
+           !condensed_fits ? "the condensed path would not fit in memory"
+                           : sparse ? "fewer operations" : "fewer operations, and a re-solve is then nearly free",
+           condensed_flops, gib(condensed_bytes), kSparseFactorizationsExpected, plain_flops, gib(sparse_bytes), int(q),
+           now() - start);
+  return sparse;
+}
+
+std::string Model::free_modes_description() const {
+  std::string text;
+  for (int b = 0; b < 2; ++b)
+    if (system_[b] && system_[b]->rigid.count > 0)
+      text += (text.empty() ? "" : "; ") + std::string("body ") + std::to_string(b + 1) + ": " + system_[b]->rigid.description;
+  return text;
+}
+
+DualQpObserver Model::iteration_log(int q) {
+  if (!progress.enabled()) return {};
+  return [this, q](const DualQpIteration &it) {
+    if (it.holds_modes)
+      progress(MC_LOG_ITERATION, "active-set iteration %d: %d active of %d, %d to flip, residual %.3g", it.iteration,
+               it.active, q, it.violating, it.residual);
+    else
+      progress(MC_LOG_ITERATION, "active-set iteration %d: %d active of %d do not hold the floating body", it.iteration,
+               it.active, q);
+  };
+}
+
+std::vector<double> Model::rigid_mode_loads(const LoadSolve loads[2]) const {
+  std::vector<double> e;
+  for (int b = 0; b < 2; ++b) {
+    if (!system_[b]) continue;
+    const RigidModes &rm = system_[b]->rigid;
+    const int ndof = system_[b]->stiffness.n;
+    for (int c = 0; c < rm.count; ++c) {
+      double s = 0;
+      for (int i = 0; i < ndof; ++i) s += rm.modes[size_t(c) * ndof + i] * loads[b].lifted[i];
+      e.push_back(s);
+    }
+  }
+  return e;
+}
+
+std::vector<double> Model::rigid_mode_rows() const {
+  const ContactSystem &cs = *contact_;
+  const int q = cs.rows.size();
+  std::vector<double> g;
+  for (int b = 0; b < 2; ++b) {
+    if (!system_[b]) continue;
+    const RigidModes &rm = system_[b]->rigid;
+    const int ndof = system_[b]->stiffness.n;
+    for (int c = 0; c < rm.count; ++c) {
+      const double *mode = &rm.modes[size_t(c) * ndof];
+      for (int r = 0; r < q; ++r) {
+        double s = 0;
+        for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) s += cs.b_value[b][p] * mode[cs.b_dof[b][p]];
+        g.push_back(s);
+      }
+    }
+  }
+  return g;
+}
+
+// The sparse path's unknowns and rows (ContactSystem, sparse_contact_solve.hpp), and the
+// symbolic analysis of H + C^T C.
+void Model::build_sparse_structure() {
+  const double start = now();
+  ContactSystem &cs = *contact_;
+  const ConstraintRows &rows = cs.rows;
+  const int q = rows.size();
+  SparseContactStructure &st = cs.structure;
+  st = SparseContactStructure{};
+  int offset = 0;
+  cs.modes = 0;
+  for (int b = 0; b < 2; ++b) {
+    cs.column_offset[b] = offset;
+    if (!system_[b]) continue;
+    if (system_[b]->reduced.n > 0) st.blocks.push_back(&system_[b]->reduced), st.block_offset.push_back(offset);
+    offset += system_[b]->reduced.n;
+    cs.modes += system_[b]->rigid.count;
+  }
+  cs.aux_offset = offset;
+  offset += 2 * rows.aux_count;
+  cs.mode_offset = offset;
+  offset += cs.modes;
+  st.n_unknowns = offset;
+  cs.g = rigid_mode_rows();
+
+  std::vector<std::pair<int, double>> entries;
+  auto add_row = [&](bool inequality) {
+    std::sort(entries.begin(), entries.end());
+    size_t kept = 0;
+    for (size_t i = 0; i < entries.size(); ++i) {
+      if (kept > 0 && entries[kept - 1].first == entries[i].first) entries[kept - 1].second += entries[i].second;
+      else entries[kept++] = entries[i];
+    }
+    for (size_t i = 0; i < kept; ++i)
+      if (entries[i].second != 0) st.column.push_back(entries[i].first), st.value.push_back(entries[i].second);
+    st.row_start.push_back(int(st.column.size()));
+    st.row_is_inequality.push_back(inequality);
+    entries.clear();
+  };
+  auto add_body_entries = [&](int b, int r) {
+    const BodySystem &sys = *system_[b];
+    for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) {
+      const int k = sys.solve_index[cs.b_dof[b][p]];
+      if (k >= 0) entries.emplace_back(cs.column_offset[b] + k, cs.b_value[b][p]);
+    }
+  };
+  // The contact rows: body 1's part, body 2's (its weights, or -n . w_a), the rigid modes'.
+  for (int r = 0; r < q; ++r) {
+    add_body_entries(0, r);
+    if (rows.aux[r] < 0) {
+      add_body_entries(1, r);
+    } else {
+      const int a = rows.aux[r];
+      entries.emplace_back(cs.aux_offset + 2 * a, -rows.normal[r].x);
+      entries.emplace_back(cs.aux_offset + 2 * a + 1, -rows.normal[r].y);
+    }
+    for (int c = 0; c < cs.modes; ++c)
+      if (cs.g[size_t(c) * q + r] != 0) entries.emplace_back(cs.mode_offset + c, cs.g[size_t(c) * q + r]);
+    add_row(true);
+  }
+  // The mortar equations D w - R u2 = 0, per component (ConstraintRows::aux).
+  const BodySystem &body2 = *system_[1];
+  for (int a = 0; a < rows.aux_count; ++a)
+    for (int c = 0; c < 2; ++c) {
+      for (int p = rows.aux_d_start[a]; p < rows.aux_d_start[a + 1]; ++p)
+        entries.emplace_back(cs.aux_offset + 2 * rows.aux_d_point[p] + c, rows.aux_d[p]);
+      for (int p = rows.aux_r_start[a]; p < rows.aux_r_start[a + 1]; ++p) {
+        const int dof = dof_of(1, rows.aux_r_node[p], c);  // (a host body's restrained freedom: none)
+        const int k = dof >= 0 ? body2.solve_index[dof] : -1;
+        if (k >= 0) entries.emplace_back(cs.column_offset[1] + k, -rows.aux_r[p]);
+      }
+      add_row(false);
+    }
+  {
+    Stopwatch watch(infos.t_analysis);
+    cs.solver.analyze(st, options.ordering);
+  }
+  const double bytes = 8.0 * double(cs.solver.factor_nnz()), memory = memory_for(bytes);
+  if (memory > 0 && bytes > memory)
+    fail(MC_ERROR_MEMORY,
+         "the sparse interface solver's factor would need about %.3g GiB and %.3g GiB are available: the model is "
+         "too large for this machine's memory",
+         gib(bytes), gib(memory));
+  progress(MC_LOG_PHASE,
+           "analysis: sparse interface solver, %d unknowns (%d mortar values, %d rigid modes), %d rows, %ld nonzeros "
+           "in the factor, %.3g s",
+           st.n_unknowns, 2 * rows.aux_count, cs.modes, st.rows(), cs.solver.factor_nnz(), now() - start);
+}
+
+bool Model::solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::vector<double> &alpha) {
+  ContactSystem &cs = *contact_;
+  const ConstraintRows &rows = cs.rows;
+  const SparseContactStructure &st = cs.structure;
+  const int q = rows.size(), nrows = st.rows(), k = cs.modes;
+  Stopwatch watch(infos.t_contact);
+  const double start = now();
+  // 1. Loads F = (f_1, f_2, 0, R^T f) and the rows' right-hand sides: the initial gaps less
+  //    what the prescribed values already close; the mortar equations' share of them.
+  std::vector<double> load(st.n_unknowns, 0.0), target(nrows, 0.0), e(k, 0.0);
+  for (int b = 0; b < 2; ++b) {
+    if (!system_[b]) continue;
+    const BodySystem &sys = *system_[b];
+    for (size_t i = 0; i < sys.solve_dofs.size(); ++i) load[cs.column_offset[b] + i] = loads[b].lifted[sys.solve_dofs[i]];
+  }
+  e = rigid_mode_loads(loads);
+  for (int c = 0; c < k; ++c) load[cs.mode_offset + c] = e[c];
+  for (int r = 0; r < q; ++r) {
+    double g = row_initial_gap(r);
+    for (int b = 0; b < 2; ++b) {
+      if (b == 1 && rows.aux[r] >= 0) continue;  // w carries body 2's prescribed values
+      for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) {
+        const int dof = cs.b_dof[b][p];
+        if (fixed_[b][dof]) g -= cs.b_value[b][p] * fixed_value_[b][dof];
+      }
+    }
+    target[r] = g;
+  }
+  for (int a = 0; a < rows.aux_count; ++a)
+    for (int c = 0; c < 2; ++c) {
+      double t = 0;
+      for (int p = rows.aux_r_start[a]; p < rows.aux_r_start[a + 1]; ++p) {
+        const int dof = dof_of(1, rows.aux_r_node[p], c);
+        if (dof >= 0 && fixed_[1][dof]) t += rows.aux_r[p] * fixed_value_[1][dof];
+      }
+      target[q + 2 * a + c] = t;
+    }
+  // 2. Floating bodies: loads that no pushing contact forces can balance have no solution.
+  if (k > 0) {
+    DualQp balance;
+    balance.q = q, balance.k = k, balance.g = cs.g, balance.e = e;
+    const double imbalance = load_imbalance(balance);
+    if (imbalance > 1e-8)
+      fail(MC_ERROR_SINGULAR,
+           "the loads cannot be balanced by contact forces (which only push): with free rigid motion (%s) "
+           "the best nonnegative contact forces leave %.3g of the load unbalanced; add supports or change the loads",
+           free_modes_description().c_str(), imbalance);
+  }
+  // 3. The active-set iteration. An active set must hold the floating bodies (G_A of full rank,
+  //    judged as the condensed path judges it) before H_P is factorized.
+  auto hold_modes = [&](const std::vector<char> &active) {
+    if (k == 0) return true;
+    std::vector<double> gram(size_t(k) * k, 0.0), eig(k);
+    int count = 0;
+    for (int r = 0; r < q; ++r) {
+      if (!active[r]) continue;
+      ++count;
+      for (int a = 0; a < k; ++a)
+        for (int b = 0; b < k; ++b) gram[size_t(b) * k + a] += cs.g[size_t(a) * q + r] * cs.g[size_t(b) * q + r];
+    }
+    if (count < k) return false;
+    int lwork = 64, info = 0;
+    std::vector<double> work(lwork);
+    dsyev_("N", "U", &k, gram.data(), &k, eig.data(), work.data(), &lwork, &info);
+    return info == 0 && eig[0] > 1e-12 * eig[k - 1];
+  };
+  std::vector<char> start_set;
+  if (int(cs.last_active.size()) == q) start_set.assign(nrows, 1), std::copy(cs.last_active.begin(), cs.last_active.end(), start_set.begin());
+  const DualQpObserver observe = iteration_log(q);
+  SparseContactResult result;
+  try {
+    result = cs.solver.solve(load, target, start_set, options.tolerance, options.max_iterations, hold_modes, observe);
+  } catch (const Error &error) {
+    if (error.status() != MC_ERROR_SINGULAR) throw;
+    // The unknown that failed, named in the body's terms: a host body's equation.
+    const int failed = cs.solver.failed_unknown();
+    for (int b = 0; b < 2 && failed >= 0; ++b) {
+      if (!system_[b] || !body[b].host) continue;
+      const int local = failed - cs.column_offset[b];
+      if (local >= 0 && local < int(system_[b]->solve_dofs.size()))
+        fail(MC_ERROR_SINGULAR,
+             "body %d: the host's stiffness is not positive definite: the sparse interface solver's factorization "
+             "fails at its equation %d (a part of the body moves without resistance, beyond %s, or the matrix is not "
+             "a stiffness)",
+             b + 1, system_[b]->solve_dofs[local] + index_base,
+             system_[b]->rigid.count > 0 ? "the rigid modes found from the coordinates" : "any rigid mode");
+    }
+    fail(MC_ERROR_SINGULAR, "sparse interface solver: %s", error.what());
+  }
+  infos.iterations = result.iterations;
+  infos.factorizations += result.factorizations;
+  infos.t_factor += result.t_factor;
+  infos.t_solve += result.t_solve;
+  infos.factor_nnz += cs.solver.factor_nnz();
+  progress(MC_LOG_PHASE,
+           "active-set solve (sparse): %s, %d iterations, %d factorizations, %d conjugate-gradient steps, residual %.3g, %.3g s",
+           result.outcome == SparseContactOutcome::solved ? "solved" : "not converged", result.iterations,
+           result.factorizations, result.cg_steps, result.violation, now() - start);
+  if (result.outcome == SparseContactOutcome::modes_not_held)
+    fail(MC_ERROR_SINGULAR,
+         "contact cannot hold the free rigid motion (%s): the contact normals do not restrain it; add supports",
+         free_modes_description().c_str());
+  if (result.outcome == SparseContactOutcome::not_converged && result.cycled) return false;
+  if (result.outcome == SparseContactOutcome::not_converged)
+    fail(MC_ERROR_NOT_CONVERGED,
+         "the active-set iteration of the sparse interface solver stopped after %d iterations (limit %d) with a "
+         "relative complementarity violation of %.3g (tolerance %.3g)",
+         result.iterations, options.max_iterations, result.violation, options.tolerance);
+  // 4. The answer in the model's terms.
+  lambda.assign(result.lambda.begin(), result.lambda.begin() + q);
+  alpha.assign(result.x.begin() + cs.mode_offset, result.x.begin() + cs.mode_offset + k);
+  for (int b = 0; b < 2; ++b) {
+    if (!system_[b]) continue;
+    const BodySystem &sys = *system_[b];
+    loads[b].v.assign(sys.stiffness.n, 0.0);
+    for (size_t i = 0; i < sys.solve_dofs.size(); ++i) loads[b].v[sys.solve_dofs[i]] = result.x[cs.column_offset[b] + i];
+  }
+  infos.complementarity = result.violation;
+  // The next solve starts from the set this one ended on, which is the factorized one: a
+  // re-solve whose active set does not change factorizes nothing.
+  cs.last_active.assign(result.active.begin(), result.active.begin() + q);
+  for (int r = 0; r < q; ++r) infos.active += lambda[r] > 0;
+  infos.contact_rows = q;
+  return true;
+}
+
+}  // namespace mc
