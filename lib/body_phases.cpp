@@ -227,7 +227,7 @@ void Model::check_host_rigid_candidates(int b, const RigidModes &rigid, BodyWork
   for (const RigidCandidate &c : rigid.candidates)
     if (c.kind == RigidCandidate::ambiguous)
       fail(MC_ERROR_SINGULAR,
-           "body %d: the host's stiffness holds its %s only weakly: it leaves %.3g of a row's forces unbalanced "
+           "body %d: the host's stiffness holds a rigid motion (%s) only weakly: it leaves %.3g of a row's forces unbalanced "
            "(|K R v| / (kmax |R v|) = %.3g), above round-off (free: <= %g) but far below a support (held: >= %g); the "
            "rigid motion is not determined: restrain the body (give freedoms no equation), or check the element "
            "matrices' precision",
@@ -295,11 +295,11 @@ void Model::check_held_motions_in_factor(int b, BodyWork &work) const {
   for (int a = 0; a < kept; ++a)
     for (int x = 0; x < 3; ++x) softest[x] += compliance[kept * (kept - 1) + a] * motion[3 * size_t(a) + x];
   const std::string name = axisymmetric ? std::string("translation along the axis (y)") : describe_rigid_motion(softest);
-  work.log(MC_LOG_PHASE, "factorization: body %d holds its %s with %.3g kmax (matrix rigid-body invariant to %.3g)", b + 1,
+  work.log(MC_LOG_PHASE, "factorization: body %d, its least held rigid motion (%s) held with %.3g kmax (matrix rigid-body invariant to %.3g)", b + 1,
            name.c_str(), k_eff / kmax, eta);
   if (eta * kmax / k_eff > 1e-2)
     fail(MC_ERROR_SINGULAR,
-         "body %d: the factorization is nearly singular along the %s: the host's stiffness holds it with %.3g of "
+         "body %d: the factorization is nearly singular along a rigid motion (%s): the host's stiffness holds it with %.3g of "
          "max|K_ij| per unit motion, while the matrix is rigid-body invariant only to %.3g of its rows' forces, so "
          "the rigid motion is not determined: restrain the body (give freedoms no equation), or check the element "
          "matrices' precision",
