@@ -134,12 +134,64 @@ RigidModes free_axial_translation(const Mesh &mesh, const std::vector<char> &pre
   return result;
 }
 
+namespace {
+
+// How firmly k holds the motion w: the largest share of a row's forces that w leaves
+// unbalanced, max_i |(K w)_i| / (sum_j |K_ij| max_j |w_j|) over the row's entries (rows w does
+// not reach skipped). Per row, so that neither the number of unknowns nor a stiffness contrast
+// between parts of the body moves it: round-off leaves the precision of the entries, a
+// restrained neighbour its column's share. The row's whole scale, not sum_j |K_ij w_j|: an x
+// row under a translation in y sees only the x-y couplings, which may themselves be round-off
+// (measured: 0.22 that way for an exactly free translation).
+double row_resistance(const SymmetricCsc &k, const double *w) {
+  std::vector<double> force(k.n, 0.0), scale(k.n, 0.0), reach(k.n, 0.0);
+  for (int j = 0; j < k.n; ++j)
+    for (int p = k.colptr[j]; p < k.colptr[j + 1]; ++p) {
+      const int i = k.rows[p];
+      const double v = k.values[p];
+      force[i] += v * w[j], scale[i] += std::fabs(v), reach[i] = std::max(reach[i], std::fabs(w[j]));
+      if (i != j) force[j] += v * w[i], scale[j] += std::fabs(v), reach[j] = std::max(reach[j], std::fabs(w[i]));
+    }
+  double worst = 0;
+  for (int i = 0; i < k.n; ++i)
+    if (scale[i] * reach[i] > 0) worst = std::max(worst, std::fabs(force[i]) / (scale[i] * reach[i]));
+  return worst;
+}
+
+// The coefficients of w in the kept candidates' terms (least squares on them), as (tx, ty,
+// rotation).
+void candidate_motion(const std::vector<double> &r, const std::vector<int> &kept, int ndof, const double *w,
+                      double motion[3]) {
+  int n = int(kept.size()), info = 0, ipiv[3], one = 1, lwork = 32;
+  double a[9] = {0}, rhs[3] = {0}, work[32];
+  for (int x = 0; x < n; ++x) {
+    const double *rx = &r[size_t(kept[x]) * ndof];
+    for (int i = 0; i < ndof; ++i) rhs[x] += rx[i] * w[i];
+    for (int y = 0; y < n; ++y) {
+      const double *ry = &r[size_t(kept[y]) * ndof];
+      double sum = 0;
+      for (int i = 0; i < ndof; ++i) sum += rx[i] * ry[i];
+      a[n * x + y] = sum;
+    }
+  }
+  dsysv_("U", &n, &one, a, &n, ipiv, rhs, &n, work, &lwork, &info);
+  motion[0] = motion[1] = motion[2] = 0;
+  for (int x = 0; x < n; ++x) motion[kept[x]] = info == 0 ? rhs[x] : 0;
+}
+
+}  // namespace
+
+std::string describe_rigid_motion(const double motion[3]) { return describe(motion, 1); }
+
 // A host body's rigid modes: the rigid motions (in the coordinates of each unknown's point and
-// component) that its own stiffness does not resist. Solves (K R)^T (K R) v = mu R^T R v over
-// the candidate motions R (translations and rotation; axisymmetric: the axial translation); a
-// mode is free when |K R v| <= 1e-9 max|K_ij| |R v|: round-off for a rigid motion, while a body
-// held by one restrained freedom resists it with about max|K_ij| / sqrt(unknowns) (1e-3 of it at
-// 10^6 unknowns).
+// component) that its own stiffness does not resist. The candidates (translations and rotation;
+// axisymmetric: the axial translation) are split into directions by (K R)^T (K R) v = mu R^T R v,
+// the least resisted first, and each direction w = R v is judged by row_resistance against
+// kFreeResistance and kHeldResistance (rigid_modes.hpp). The eigenvalues mu themselves are only
+// accurate to eps times the largest (3.8e-16 measured for an exactly free translation of a Q9
+// body whose held modes had 0.39 and 1.39), too coarse to tell single-precision round-off (|K w|
+// about 3e-8 kmax, mu 1e-15 kmax^2) from a hold; their directions are accurate (errors of eps
+// times mu_max / gap), and the row measure on them is not squared.
 RigidModes kernel_rigid_modes(const std::vector<Point> &point, const std::vector<int> &component,
                               const SymmetricCsc &k, bool axisymmetric) {
   RigidModes result;
@@ -199,42 +251,47 @@ RigidModes kernel_rigid_modes(const std::vector<Point> &point, const std::vector
   double mu[3], work[32];
   dsyev_("V", "U", &nn, g, &nn, mu, work, &lwork, &info);
   if (info != 0) fail(MC_ERROR_INTERNAL, "dsyev failed (%d) in the rigid-mode analysis of a host body", info);
-  // mu = |K q v|^2 for q v of unit norm. A free mode's is round-off: the eigenvalues are
-  // accurate to eps times the largest (measured: 3.8e-16 for a free translation of a Q9 body
-  // whose held modes had 0.39 and 1.39), while a body held by one restrained freedom resists
-  // with about (kmax / sqrt(unknowns))^2 (1e-6 kmax^2 at 10^6 unknowns). Free: below 1e-10 of
-  // the largest, or below (1e-9 kmax)^2 when all are free.
-  const double threshold = 1e-18 * kmax * kmax + 1e-10 * mu[n - 1];
-  while (result.count < n && mu[result.count] <= threshold) ++result.count;
+  // Each direction w = Q v_c (unit norm), judged on its own; the free ones must come first (the
+  // least resisted), or the matrix contradicts itself and every direction after the first
+  // held one counts as ambiguous.
+  std::vector<double> direction(size_t(ndof) * n, 0.0), kw(ndof);
+  bool held_seen = false;
+  for (int c = 0; c < n; ++c) {
+    double *w = &direction[size_t(c) * ndof];
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < ndof; ++i) w[i] += g[n * c + a] * q[size_t(a) * ndof + i];
+    RigidCandidate cand;
+    cand.resistance = row_resistance(k, w);
+    k.multiply(w, kw.data());
+    double norm = 0;
+    for (double x : kw) norm += x * x;
+    cand.norm_ratio = kmax > 0 ? std::sqrt(norm) / kmax : 0;
+    if (cand.resistance <= kFreeResistance && !held_seen) cand.kind = RigidCandidate::free;
+    else if (cand.resistance < kHeldResistance || cand.resistance <= kFreeResistance) cand.kind = RigidCandidate::ambiguous;
+    else cand.kind = RigidCandidate::held, held_seen = true;
+    if (axisymmetric) {
+      cand.motion[1] = 1, cand.description = "translation along the axis (y)";
+    } else {
+      candidate_motion(r, kept, ndof, w, cand.motion);
+      cand.description = describe(cand.motion, 1);
+    }
+    if (cand.kind == RigidCandidate::free) ++result.count;
+    result.candidates.push_back(cand);
+  }
+  for (int c = result.count; c < n; ++c)
+    if (result.candidates[c].kind == RigidCandidate::held) {
+      result.held.insert(result.held.end(), direction.begin() + size_t(c) * ndof, direction.begin() + size_t(c + 1) * ndof);
+      ++result.held_count;
+    }
   if (result.count == 0) return result;
   const int count = result.count;
-  result.modes.assign(size_t(ndof) * count, 0.0);
-  for (int c = 0; c < count; ++c)
-    for (int a = 0; a < n; ++a)
-      for (int i = 0; i < ndof; ++i) result.modes[size_t(c) * ndof + i] += g[n * c + a] * q[size_t(a) * ndof + i];
+  result.modes.assign(direction.begin(), direction.begin() + size_t(count) * ndof);
   if (axisymmetric) {
     result.description = "translation along the axis (y)";
   } else {
-    // Each mode in the candidates' terms (tx, ty, rotation), for the message: least squares on
-    // the candidates that were kept.
     double basis[9] = {0};
-    for (int c = 0; c < count; ++c) {
-      double a[9] = {0}, rhs[3] = {0};
-      for (int x = 0; x < n; ++x) {
-        const double *rx = &r[size_t(kept[x]) * ndof];
-        for (int i = 0; i < ndof; ++i) rhs[x] += rx[i] * result.modes[size_t(c) * ndof + i];
-        for (int y = 0; y < n; ++y) {
-          const double *ry = &r[size_t(kept[y]) * ndof];
-          double sum = 0;
-          for (int i = 0; i < ndof; ++i) sum += rx[i] * ry[i];
-          a[n * x + y] = sum;
-        }
-      }
-      int ipiv[3], one = 1, lw = 32;
-      double w2[32];
-      dsysv_("U", &nn, &one, a, &nn, ipiv, rhs, &nn, w2, &lw, &info);
-      for (int x = 0; x < n; ++x) basis[3 * c + kept[x]] = info == 0 ? rhs[x] : 0;
-    }
+    for (int c = 0; c < count; ++c)
+      for (int x = 0; x < 3; ++x) basis[3 * c + x] = result.candidates[c].motion[x];
     result.description = describe(basis, count);
   }
   orthonormalize_and_pin(result, ndof, {});

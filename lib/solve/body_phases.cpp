@@ -3,10 +3,12 @@
 // matrices, their analyses and factorizations, and after the solve their stresses.
 #include "bodies/cell_shapes.hpp"
 #include "support/error.hpp"
+#include "support/lapack.hpp"
 #include "solve/model.hpp"
 #include "support/stopwatch.hpp"
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace mc {
 
@@ -100,6 +102,7 @@ std::unique_ptr<BodySystem> Model::assemble_body(int b, BodyWork &work) const {
     }
     work.log(MC_LOG_PHASE, "assembly: body %d, host body of %d equations, %zu stiffness entries, %.3g s", b + 1,
              body_.host_data.n_equations, body_.host_data.entry_value.size(), now() - t_assembly);
+    check_host_rigid_candidates(b, sys->rigid, work);
     if (sys->rigid.count > 0 && !contact_active())
       fail(MC_ERROR_SINGULAR,
            "body %d is not held: the host's stiffness leaves %s free; restrain freedoms (give them no equation), or "
@@ -207,6 +210,100 @@ void Model::factorize_body(int b, BodyWork &work) {
   work.infos.factorizations++;
   work.log(MC_LOG_PHASE, "factorization: body %d, %ld nonzeros in the Cholesky factor, %.3g s", b + 1,
            long(sys->cholesky.factor_nnz()), now() - t_factor);
+  if (body[b].host) check_held_motions_in_factor(b, work);
+}
+
+// A host body's rigid motions as judged by kernel_rigid_modes, in the log; a direction in the
+// ambiguous band (held far less firmly than a support holds, yet more than round-off) is
+// refused: treated as free it would drop the hold, treated as held it leaves the rigid motion
+// to a near-singular factorization.
+void Model::check_host_rigid_candidates(int b, const RigidModes &rigid, BodyWork &work) const {
+  for (const RigidCandidate &c : rigid.candidates)
+    work.log(MC_LOG_PHASE,
+             "rigid modes: body %d, %s: %s (unbalanced share of a row's forces %.3g; |K R v| / (kmax |R v|) = %.3g)",
+             b + 1, c.description.c_str(),
+             c.kind == RigidCandidate::free ? "free" : c.kind == RigidCandidate::held ? "held" : "ambiguous",
+             c.resistance, c.norm_ratio);
+  for (const RigidCandidate &c : rigid.candidates)
+    if (c.kind == RigidCandidate::ambiguous)
+      fail(MC_ERROR_SINGULAR,
+           "body %d: the host's stiffness holds a rigid motion (%s) only weakly: it leaves %.3g of a row's forces unbalanced "
+           "(|K R v| / (kmax |R v|) = %.3g), above round-off (free: <= %g) but far below a support (held: >= %g); the "
+           "rigid motion is not determined: restrain the body (give freedoms no equation), or check the element "
+           "matrices' precision",
+           b + 1, c.description.c_str(), c.resistance, c.norm_ratio, kFreeResistance, kHeldResistance);
+}
+
+// The safety net after a host body's factorization: the compliance of the factor along the held
+// rigid motions W (the largest eigenvalue of W^T K^-1 W, orthonormal W on the factor's
+// unknowns). Its inverse k_eff is the stiffness that holds the softest rigid motion; the
+// factor determines that motion to about eta kmax / k_eff, eta the matrix's own rigid-body
+// invariance (the largest resistance of a free mode, else double precision's). Refused when that
+// is worse than 1 %: a body held only by round-off, or by a hold the classification could not
+// see, never comes back as MC_OK with an arbitrary rigid motion. (The sparse interface path has
+// no factor of the body alone; the classification is its check.)
+void Model::check_held_motions_in_factor(int b, BodyWork &work) const {
+  const BodySystem &sys = *system_[b];
+  const RigidModes &rigid = sys.rigid;
+  const int h = rigid.held_count, ndof = sys.stiffness.n, nr = int(sys.solve_dofs.size());
+  if (h == 0 || nr == 0) return;
+  double kmax = 0, eta = std::numeric_limits<double>::epsilon();
+  for (double v : sys.stiffness.values) kmax = std::max(kmax, std::fabs(v));
+  for (const RigidCandidate &c : rigid.candidates)
+    if (c.kind == RigidCandidate::free) eta = std::max(eta, c.resistance);
+  // W on the factor's unknowns (pins and supports dropped), orthonormalized; motion keeps each
+  // column's (tx, ty, rotation) coefficients through the same operations.
+  std::vector<double> w(size_t(nr) * h), motion(3 * size_t(h));
+  int kept = 0;
+  for (int c = 0, held_index = 0; c < int(rigid.candidates.size()); ++c) {
+    const RigidCandidate &cand = rigid.candidates[c];
+    if (cand.kind != RigidCandidate::held) continue;
+    double *col = &w[size_t(kept) * nr], *m = &motion[3 * size_t(kept)];
+    for (int k = 0; k < nr; ++k) col[k] = rigid.held[size_t(held_index) * ndof + sys.solve_dofs[k]];
+    for (int x = 0; x < 3; ++x) m[x] = cand.motion[x];
+    ++held_index;
+    for (int o = 0; o < kept; ++o) {
+      const double *other = &w[size_t(o) * nr];
+      double dot = 0;
+      for (int k = 0; k < nr; ++k) dot += col[k] * other[k];
+      for (int k = 0; k < nr; ++k) col[k] -= dot * other[k];
+      for (int x = 0; x < 3; ++x) m[x] -= dot * motion[3 * size_t(o) + x];
+    }
+    double norm = 0;
+    for (int k = 0; k < nr; ++k) norm += col[k] * col[k];
+    norm = std::sqrt(norm);
+    if (!(norm > 1e-8)) continue;  // nothing of it left on the factor's unknowns
+    for (int k = 0; k < nr; ++k) col[k] /= norm;
+    for (int x = 0; x < 3; ++x) m[x] /= norm;
+    ++kept;
+  }
+  if (kept == 0) return;
+  std::vector<double> z(w.begin(), w.begin() + size_t(kept) * nr);
+  sys.cholesky.solve(z.data(), kept);
+  double compliance[9] = {0}, lambda[3], work_space[32];
+  for (int a = 0; a < kept; ++a)
+    for (int c = 0; c < kept; ++c) {
+      double sum = 0;
+      for (int k = 0; k < nr; ++k) sum += w[size_t(a) * nr + k] * z[size_t(c) * nr + k];
+      compliance[kept * a + c] = sum;
+    }
+  int n = kept, lwork = 32, info = 0;
+  dsyev_("V", "U", &n, compliance, &n, lambda, work_space, &lwork, &info);
+  if (info != 0 || !(lambda[kept - 1] > 0)) return;  // (a positive definite factor has a positive one)
+  const double k_eff = 1 / lambda[kept - 1];
+  double softest[3] = {0, 0, 0};
+  for (int a = 0; a < kept; ++a)
+    for (int x = 0; x < 3; ++x) softest[x] += compliance[kept * (kept - 1) + a] * motion[3 * size_t(a) + x];
+  const std::string name = axisymmetric ? std::string("translation along the axis (y)") : describe_rigid_motion(softest);
+  work.log(MC_LOG_PHASE, "factorization: body %d, its least held rigid motion (%s) held with %.3g kmax (matrix rigid-body invariant to %.3g)", b + 1,
+           name.c_str(), k_eff / kmax, eta);
+  if (eta * kmax / k_eff > 1e-2)
+    fail(MC_ERROR_SINGULAR,
+         "body %d: the factorization is nearly singular along a rigid motion (%s): the host's stiffness holds it with %.3g of "
+         "max|K_ij| per unit motion, while the matrix is rigid-body invariant only to %.3g of its rows' forces, so "
+         "the rigid motion is not determined: restrain the body (give freedoms no equation), or check the element "
+         "matrices' precision",
+         b + 1, name.c_str(), k_eff / kmax, eta);
 }
 
 

@@ -196,6 +196,8 @@ private:
   // needed: the condensed path will use it (refused if the interface is too long for it); else
   // for the automatic choice only (then skipped for such an interface, see body_phases.cpp).
   void analyze_body(int b, BodyWork &work, bool needed);
+  void check_host_rigid_candidates(int b, const RigidModes &rigid, BodyWork &work) const;
+  void check_held_motions_in_factor(int b, BodyWork &work) const;
   void factorize_body(int b, BodyWork &work);
   // The automatic choice of interface solver (MC_OPTION_INTERFACE_SOLVER), after the bodies'
   // analyses for the condensed path; also refuses a path too large for memory. True: sparse.
