@@ -342,6 +342,52 @@ MC_API mc_status mc_set_contact(mc_model *m, int body, mc_int n_edges, const mc_
    changing offsets keeps the factorizations and the interface operator for the next solve. */
 MC_API mc_status mc_set_gap_offset(mc_model *m, mc_int n, const mc_int *nodes, const double *offset);
 
+/* ---- assemblies: bodies 1..N and contact pairs (docs/api.md, "Assemblies") -------------
+   A model holds 2 bodies unless told otherwise; every call that takes a body accepts 1..N, and
+   mesh bodies and host bodies mix freely. Contact acts between the two bodies of a pair: the
+   non-mortar body carries the constraint and the multipliers on its side (as body 1 does in a
+   two-body model), the mortar body is the surface it is measured against. A body may be
+   non-mortar in one pair and mortar in another (the middle body of a stack). Pairs are numbered
+   1, 2, ... in the order they are made, whatever the index base (like bodies).
+   The two-body calls (mc_set_contact, mc_set_contact_curved, mc_set_gap_offset and the
+   mc_get_contact_* getters) act on pair 1: mc_set_contact on a model without pairs makes pair 1
+   as (non-mortar 1, mortar 2), so existing programs read the same results; on a model whose
+   pair 1 joins other bodies they are MC_ERROR_STATE.
+   A non-mortar position belongs to one pair: two pairs with the same non-mortar and mortar
+   bodies are one surface (their edges joined, one multiplier per position: splitting a surface
+   into pairs changes no answer); two pairs whose non-mortar surfaces on the same body share a
+   node with different mortar bodies are refused (MC_ERROR_CONTACT naming the node and both
+   pairs) unless the surface turns there by more than MC_OPTION_FEATURE_ANGLE (a corner: one
+   position per face, each with its own normal and constraint, as inside one surface). */
+
+/* The number of bodies, n >= 2 (default 2). Growing keeps the bodies there are; shrinking drops
+   the last ones, and is MC_ERROR_STATE while a contact pair uses a dropped body. */
+MC_API mc_status mc_set_body_count(mc_model *m, int n);
+/* Makes a contact pair between two different bodies and returns its number in *pair. */
+MC_API mc_status mc_add_contact_pair(mc_model *m, int nonmortar_body, int mortar_body, int *pair);
+/* One side of a pair: body is the pair's non-mortar or mortar body; boundary edges, 2 node ids
+   each (as mc_set_contact), or 3 with their middles (as mc_set_contact_curved). Replaces that
+   side's earlier edges. */
+MC_API mc_status mc_set_pair_surface(mc_model *m, int pair, int body, mc_int n_edges, const mc_int *edges);
+MC_API mc_status mc_set_pair_surface_curved(mc_model *m, int pair, int body, mc_int n_edges, const mc_int *edges);
+/* Initial-gap offsets of the pair's non-mortar nodes (as mc_set_gap_offset does for pair 1). */
+MC_API mc_status mc_set_pair_gap_offset(mc_model *m, int pair, mc_int n, const mc_int *nodes, const double *offset);
+/* After a solve: the number of the pair's contact positions (its non-mortar surface's nodes, a
+   corner once per face, quadratic middles included: as mc_get_contact_count for pair 1). */
+MC_API mc_status mc_get_pair_contact_count(const mc_model *m, int pair, mc_int *n);
+/* Their node ids on the non-mortar body (index base applies). */
+MC_API mc_status mc_get_pair_contact_nodes(const mc_model *m, int pair, mc_int *nodes);
+/* Fields of mc_get_pair_contact: one value per position (MC_CONTACT_NORMAL: two, x and y), as the
+   mc_get_contact_* getter of the same name. */
+typedef enum mc_contact_field {
+  MC_CONTACT_PRESSURE = 1,    /* contact pressure (>= 0), as mc_get_contact_pressure */
+  MC_CONTACT_FORCE = 2,       /* nodal contact force, as mc_get_contact_force */
+  MC_CONTACT_GAP = 3,         /* gap after the solve (+infinity where the mortar side is not seen) */
+  MC_CONTACT_INITIAL_GAP = 4, /* initial gap, offsets included */
+  MC_CONTACT_NORMAL = 5       /* unit outward normal of the non-mortar body, 2 per position */
+} mc_contact_field;
+MC_API mc_status mc_get_pair_contact(const mc_model *m, int pair, int field, double *out);
+
 /* ---- host bodies: a legacy program's own matrices (docs/tutorial_legacy.md) ---------------
 
    A host body has no cells: the host hands over what its own element library and assembly

@@ -29,3 +29,7 @@ mc_add_check_test(test_westergaard test_westergaard.c westergaard_scene.c)
 mc_add_check_test(test_interface_solvers test_interface_solvers.c westergaard_scene.c)
 target_link_libraries(test_interface_solvers PRIVATE mc_contact_checks)
 set_tests_properties(test_interface_solvers PROPERTIES TIMEOUT 600)
+
+# Assemblies: bodies 1..N and contact pairs (issue 32): patch tests of a stack and a corner,
+# invariance under renumbering and splitting, conservation, bad input (tests/test_contact_pairs.c).
+mc_add_check_test(test_contact_pairs test_contact_pairs.c)

@@ -67,7 +67,7 @@ void require_finite_results(mc::Model &model) {
          "loads, prescribed values) are beyond what double precision can solve: rescale the units",
          mc::array_position(what, i, model.index_base).c_str(), body, v);
   };
-  for (int b = 0; b < 2; ++b) {
+  for (int b = 0; b < model.n_bodies(); ++b) {
     const mc::Body &body = model.body[b];
     if (!body.has_mesh) continue;
     for (size_t i = 0; i < body.u.size(); ++i) if (!std::isfinite(body.u[i])) overflow("u", i, b + 1, body.u[i]);
@@ -77,10 +77,11 @@ void require_finite_results(mc::Model &model) {
       if (!std::isfinite(body.reaction[i])) overflow("r", i, b + 1, body.reaction[i]);
   }
   for (size_t j = 0; j < model.contact_force.size(); ++j) {
-    if (!std::isfinite(model.contact_force[j])) overflow("contact force", j, 1, model.contact_force[j]);
-    if (!std::isfinite(model.contact_pressure[j])) overflow("contact pressure", j, 1, model.contact_pressure[j]);
+    const int b = model.contact()->group_of_position(int(j)).nonmortar + 1;
+    if (!std::isfinite(model.contact_force[j])) overflow("contact force", j, b, model.contact_force[j]);
+    if (!std::isfinite(model.contact_pressure[j])) overflow("contact pressure", j, b, model.contact_pressure[j]);
     // +infinity is the gap of a node that sees no mortar surface
-    if (std::isnan(model.contact_gap[j]) || model.contact_gap[j] < -DBL_MAX) overflow("gap", j, 1, model.contact_gap[j]);
+    if (std::isnan(model.contact_gap[j]) || model.contact_gap[j] < -DBL_MAX) overflow("gap", j, b, model.contact_gap[j]);
   }
 }
 
@@ -146,7 +147,7 @@ mc_status mc_set_plane(mc_model *m, int plane, double thickness) {
     if (!axisymmetric && (!(thickness > 0) || !std::isfinite(thickness)))  // ignored when axisymmetric
       fail(MC_ERROR_ARGUMENT, "thickness = %g: must be positive and finite", thickness);
     if (axisymmetric)
-      for (int b = 0; b < 2; ++b)
+      for (int b = 0; b < model.n_bodies(); ++b)
         if (model.body[b].has_mesh) require_radii(model.body[b].mesh, b + 1, model.index_base, "MC_AXISYMMETRIC");
     model.plane_stress = plane == MC_PLANE_STRESS;
     model.axisymmetric = axisymmetric;
@@ -158,7 +159,7 @@ mc_status mc_set_plane(mc_model *m, int plane, double thickness) {
 mc_status mc_set_mesh(mc_model *m, int body, mc_int n_nodes, const double *xy, mc_int n_cells, int nodes_per_cell,
                       const mc_int *cells) {
   return guard(m, [&](mc::Model &model) {
-    int b = body_index(body);
+    int b = body_index(model, body);
     require_pointer(xy, "xy");
     require_pointer(cells, "cells");
     require_count(n_nodes, "n_nodes");
@@ -187,6 +188,7 @@ mc_status mc_set_mesh(mc_model *m, int body, mc_int n_nodes, const double *xy, m
     fresh.prescribed_value.assign(2 * size_t(n_nodes), 0.0);
     fresh.nodal_force.assign(2 * size_t(n_nodes), 0.0);
     model.body[b] = std::move(fresh);
+    forget_contact_surfaces(model, b);
     model.structure_changed();
   });
 }

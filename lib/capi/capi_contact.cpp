@@ -69,8 +69,10 @@ std::vector<mc::SurfaceSegment> host_surface(const mc::Model &model, int body, s
   return surface;
 }
 
-// mc_set_contact (2 ids per edge) and mc_set_contact_curved (3: end, end, middle).
-void set_contact_surface(mc::Model &model, int body, mc_int n_edges, const mc_int *edges, int per_edge) {
+// A body's contact edges as given (2 ids per edge, or 3: end, end, middle), checked and
+// oriented: mc_set_contact, mc_set_contact_curved and the pairs' mc_set_pair_surface*.
+std::vector<mc::SurfaceSegment> checked_surface(mc::Model &model, int body, mc_int n_edges, const mc_int *edges,
+                                                int per_edge) {
   mc::Body &b = meshed_body(model, body);
   if (n_edges < 1) fail(MC_ERROR_ARGUMENT, "n_edges = %d: a contact surface needs at least one edge", int(n_edges));
   require_pointer(edges, "edges");
@@ -126,9 +128,78 @@ void set_contact_surface(mc::Model &model, int body, mc_int n_edges, const mc_in
            "a contact surface must not fold back on itself", edge_text(edges, per_edge, in, model.index_base).c_str(),
            edge_text(edges, per_edge, out, model.index_base).c_str(), node + model.index_base, turn, kFoldAngleDegrees);
   }
-  b.contact = std::move(surface);
-  b.has_contact = true;
+  return surface;
+}
+
+// Sets one side of pair p (0-based) to the body's checked edges.
+void set_pair_side(mc::Model &model, int p, int body, mc_int n_edges, const mc_int *edges, int per_edge) {
+  mc::ContactPair &pair = model.pairs[p];
+  const int b = body - 1;
+  if (b != pair.nonmortar && b != pair.mortar)
+    fail(MC_ERROR_ARGUMENT, "body = %d: pair %d joins bodies %d (non-mortar) and %d (mortar)", body, p + 1,
+         pair.nonmortar + 1, pair.mortar + 1);
+  const int side = b == pair.nonmortar ? 0 : 1;
+  pair.side[side] = checked_surface(model, body, n_edges, edges, per_edge);
+  pair.has_side[side] = true;
   model.structure_changed();
+}
+
+// The two-body calls act on pair 1, made as (non-mortar 1, mortar 2) by the first of them.
+int legacy_pair(mc::Model &model, const char *call, bool make) {
+  if (model.pairs.empty()) {
+    if (!make) fail(MC_ERROR_STATE, "body 1 has no contact surface: call mc_set_contact first");
+    model.pairs.push_back(mc::ContactPair{});
+  }
+  const mc::ContactPair &pair = model.pairs[0];
+  if (pair.nonmortar != 0 || pair.mortar != 1)
+    fail(MC_ERROR_STATE, "%s acts on pair 1 as (non-mortar body 1, mortar body 2), and this model's pair 1 joins "
+         "bodies %d and %d: use the pair calls (mc_set_pair_surface, mc_set_pair_gap_offset, mc_get_pair_contact)",
+         call, pair.nonmortar + 1, pair.mortar + 1);
+  return 0;
+}
+
+void set_contact_surface(mc::Model &model, int body, mc_int n_edges, const mc_int *edges, int per_edge) {
+  const int b = body_index(model, body);
+  if (b > 1)
+    fail(MC_ERROR_ARGUMENT, "body = %d: mc_set_contact acts on pair 1, between bodies 1 and 2; make a pair with "
+         "mc_add_contact_pair and give its sides with mc_set_pair_surface", body);
+  meshed_body(model, body);  // (the mesh is checked before a pair is made)
+  set_pair_side(model, legacy_pair(model, per_edge == 2 ? "mc_set_contact" : "mc_set_contact_curved", true), body,
+                n_edges, edges, per_edge);
+}
+
+// The initial-gap offsets of pair p's non-mortar nodes.
+void set_pair_gap_offset(mc::Model &model, int p, mc_int n, const mc_int *nodes, const double *offset) {
+  mc::ContactPair &pair = model.pairs[p];
+  const int body = pair.nonmortar + 1;
+  mc::Body &b = meshed_body(model, body);
+  if (!pair.has_side[0]) {
+    if (model.pairs.size() == 1 && p == 0)
+      fail(MC_ERROR_STATE, "body 1 has no contact surface: call mc_set_contact first");
+    fail(MC_ERROR_STATE, "pair %d has no non-mortar surface (body %d): call mc_set_pair_surface first", p + 1, body);
+  }
+  require_count(n, "n");
+  if (n > 0) require_pointer(nodes, "nodes"), require_pointer(offset, "offset");
+  if (n > 0) require_finite(offset, size_t(n), "offset", model.index_base);
+  std::vector<char> on_surface(b.mesh.n_nodes(), 0);
+  for (const mc::SurfaceSegment &s : pair.side[0]) {
+    on_surface[s.a] = on_surface[s.b] = 1;
+    if (s.mid >= 0) on_surface[s.mid] = 1;
+  }
+  std::vector<int> local(n);
+  for (mc_int i = 0; i < n; ++i) {
+    local[i] = node_id(model, b.mesh, nodes[i], "nodes", size_t(i));
+    if (!on_surface[local[i]]) {
+      if (model.pairs.size() == 1 && p == 0)
+        fail(MC_ERROR_ARGUMENT, "%s = %d is not on body 1's contact surface",
+             mc::array_position("nodes", size_t(i), model.index_base).c_str(), int(nodes[i]));
+      fail(MC_ERROR_ARGUMENT, "%s = %d is not on pair %d's non-mortar surface (body %d)",
+           mc::array_position("nodes", size_t(i), model.index_base).c_str(), int(nodes[i]), p + 1, body);
+    }
+  }
+  if (pair.gap_offset.empty()) pair.gap_offset.assign(b.mesh.n_nodes(), 0.0);
+  for (mc_int i = 0; i < n; ++i) pair.gap_offset[local[i]] = offset[i];
+  model.values_changed();
 }
 
 }  // namespace
@@ -145,46 +216,116 @@ mc_status mc_set_contact_curved(mc_model *m, int body, mc_int n_edges, const mc_
 
 mc_status mc_set_gap_offset(mc_model *m, mc_int n, const mc_int *nodes, const double *offset) {
   return guard(m, [&](mc::Model &model) {
-    mc::Body &b = meshed_body(model, 1);
-    if (!b.has_contact) fail(MC_ERROR_STATE, "body 1 has no contact surface: call mc_set_contact first");
-    require_count(n, "n");
-    if (n > 0) require_pointer(nodes, "nodes"), require_pointer(offset, "offset");
-    if (n > 0) require_finite(offset, size_t(n), "offset", model.index_base);
-    std::vector<char> on_surface(b.mesh.n_nodes(), 0);
-    for (const mc::SurfaceSegment &s : b.contact) {
-      on_surface[s.a] = on_surface[s.b] = 1;
-      if (s.mid >= 0) on_surface[s.mid] = 1;
-    }
-    std::vector<int> local(n);
-    for (mc_int i = 0; i < n; ++i) {
-      local[i] = node_id(model, b.mesh, nodes[i], "nodes", size_t(i));
-      if (!on_surface[local[i]])
-        fail(MC_ERROR_ARGUMENT, "%s = %d is not on body 1's contact surface",
-             mc::array_position("nodes", size_t(i), model.index_base).c_str(), int(nodes[i]));
-    }
-    if (b.gap_offset.empty()) b.gap_offset.assign(b.mesh.n_nodes(), 0.0);
-    for (mc_int i = 0; i < n; ++i) b.gap_offset[local[i]] = offset[i];
-    model.values_changed();
+    meshed_body(model, 1);
+    set_pair_gap_offset(model, legacy_pair(model, "mc_set_gap_offset", false), n, nodes, offset);
   });
+}
+
+mc_status mc_set_body_count(mc_model *m, int n) {
+  return guard(m, [&](mc::Model &model) {
+    if (n < 2) fail(MC_ERROR_ARGUMENT, "n = %d: a model has at least 2 bodies", n);
+    for (size_t p = 0; p < model.pairs.size(); ++p)
+      for (int side = 0; side < 2; ++side)
+        if (model.pairs[p].body_of_side(side) >= n)
+          fail(MC_ERROR_STATE, "n = %d: pair %zu uses body %d", n, p + 1, model.pairs[p].body_of_side(side) + 1);
+    if (n != model.n_bodies()) {
+      model.body.resize(size_t(n));
+      model.structure_changed();
+    }
+  });
+}
+
+mc_status mc_add_contact_pair(mc_model *m, int nonmortar_body, int mortar_body, int *pair) {
+  return guard(m, [&](mc::Model &model) {
+    require_pointer(pair, "pair");
+    auto check = [&](int body, const char *name) {
+      if (body < 1 || body > model.n_bodies())
+        fail(MC_ERROR_ARGUMENT, "%s = %d: must be 1 to %d (mc_set_body_count)", name, body, model.n_bodies());
+    };
+    check(nonmortar_body, "nonmortar_body");
+    check(mortar_body, "mortar_body");
+    if (nonmortar_body == mortar_body)
+      fail(MC_ERROR_ARGUMENT, "nonmortar_body = mortar_body = %d: a pair joins two different bodies (no self-contact)",
+           nonmortar_body);
+    mc::ContactPair made;
+    made.nonmortar = nonmortar_body - 1, made.mortar = mortar_body - 1;
+    model.pairs.push_back(made);
+    *pair = int(model.pairs.size());
+    model.structure_changed();
+  });
+}
+
+mc_status mc_set_pair_surface(mc_model *m, int pair, int body, mc_int n_edges, const mc_int *edges) {
+  return guard(m, [&](mc::Model &model) { set_pair_side(model, pair_index(model, pair), body, n_edges, edges, 2); });
+}
+
+mc_status mc_set_pair_surface_curved(mc_model *m, int pair, int body, mc_int n_edges, const mc_int *edges) {
+  return guard(m, [&](mc::Model &model) { set_pair_side(model, pair_index(model, pair), body, n_edges, edges, 3); });
+}
+
+mc_status mc_set_pair_gap_offset(mc_model *m, int pair, mc_int n, const mc_int *nodes, const double *offset) {
+  return guard(m, [&](mc::Model &model) { set_pair_gap_offset(model, pair_index(model, pair), n, nodes, offset); });
 }
 
 }  // extern "C"
 
 namespace {
 
-const mc::ContactGeometry &solved_contact(const mc::Model &model) {
-  if (!model.contact_active()) fail(MC_ERROR_STATE, "no contact surfaces: call mc_set_contact on both bodies");
+// The positions of pair p (0-based) after a solve, checked.
+const std::vector<int> &solved_pair_positions(const mc::Model &model, int p) {
   if (!model.solved || !model.contact())
     fail(MC_ERROR_STATE, "no solution: call mc_solve first (or again, after changing the scene)");
-  return model.contact()->geometry;
+  if (!model.pairs[p].complete())
+    fail(MC_ERROR_STATE, "pair %d has no surface on %s: give both its sides (mc_set_pair_surface), then mc_solve", p + 1,
+         model.pairs[p].has_side[0] ? "its mortar side" : "its non-mortar side");
+  return model.contact()->pair_positions[p];
+}
+
+// Pair 1 for the two-body getters, with their messages.
+const std::vector<int> &legacy_positions(const mc::Model &model) {
+  if (!model.contact_active() || model.pairs.empty())
+    fail(MC_ERROR_STATE, "no contact surfaces: call mc_set_contact on both bodies");
+  if (model.pairs[0].nonmortar != 0 || model.pairs[0].mortar != 1)
+    fail(MC_ERROR_STATE, "the mc_get_contact_* getters read pair 1 as (non-mortar body 1, mortar body 2), and this "
+         "model's pair 1 joins bodies %d and %d: use mc_get_pair_contact", model.pairs[0].nonmortar + 1,
+         model.pairs[0].mortar + 1);
+  return solved_pair_positions(model, 0);
+}
+
+// One field at the given positions (MC_CONTACT_NORMAL: 2 per position).
+void copy_field(const mc::Model &model, const std::vector<int> &positions, int field, double *out) {
+  for (size_t j = 0; j < positions.size(); ++j) {
+    const int pos = positions[j];
+    switch (field) {
+      case MC_CONTACT_PRESSURE: out[j] = model.contact_pressure[pos]; break;
+      case MC_CONTACT_FORCE: out[j] = model.contact_force[pos]; break;
+      case MC_CONTACT_GAP: out[j] = model.contact_gap[pos]; break;
+      case MC_CONTACT_INITIAL_GAP: out[j] = model.initial_gap(size_t(pos)); break;
+      case MC_CONTACT_NORMAL: {
+        const mc::ContactGroup &group = model.contact()->group_of_position(pos);
+        const mc::Point n = group.geometry.normals[pos - group.first_position];
+        out[2 * j] = n.x, out[2 * j + 1] = n.y;
+        break;
+      }
+      default:
+        fail(MC_ERROR_ARGUMENT, "field = %d: must be MC_CONTACT_PRESSURE (1), _FORCE (2), _GAP (3), _INITIAL_GAP (4) or "
+             "_NORMAL (5)", field);
+    }
+  }
+}
+
+void check_field(int field) {
+  if (field < MC_CONTACT_PRESSURE || field > MC_CONTACT_NORMAL)
+    fail(MC_ERROR_ARGUMENT, "field = %d: must be MC_CONTACT_PRESSURE (1), _FORCE (2), _GAP (3), _INITIAL_GAP (4) or "
+         "_NORMAL (5)", field);
 }
 
 template <class F>
-mc_status contact_array(const mc_model *m, void *out, const char *name, F &&copy) {
+mc_status legacy_array(const mc_model *m, void *out, const char *name, F &&copy) {
   return guard_const(m, [&](const mc::Model &model) {
-    const mc::ContactGeometry &g = solved_contact(model);
+    const std::vector<int> &positions = legacy_positions(model);
     require_pointer(out, name);
-    copy(model, g);
+    copy(model, positions);
   });
 }
 
@@ -193,42 +334,69 @@ mc_status contact_array(const mc_model *m, void *out, const char *name, F &&copy
 extern "C" {
 
 mc_status mc_get_contact_count(const mc_model *m, mc_int *n) {
-  return contact_array(m, n, "n", [&](const mc::Model &, const mc::ContactGeometry &g) { *n = mc_int(g.nodes.size()); });
+  return legacy_array(m, n, "n", [&](const mc::Model &, const std::vector<int> &pos) { *n = mc_int(pos.size()); });
 }
 
 mc_status mc_get_contact_nodes(const mc_model *m, mc_int *nodes) {
-  return contact_array(m, nodes, "nodes", [&](const mc::Model &model, const mc::ContactGeometry &g) {
-    for (size_t j = 0; j < g.nodes.size(); ++j) nodes[j] = mc_int(g.nodes[j] + model.index_base);
+  return legacy_array(m, nodes, "nodes", [&](const mc::Model &model, const std::vector<int> &pos) {
+    for (size_t j = 0; j < pos.size(); ++j) nodes[j] = mc_int(model.position_node(size_t(pos[j])) + model.index_base);
   });
 }
 
 mc_status mc_get_contact_pressure(const mc_model *m, double *p) {
-  return contact_array(m, p, "p", [&](const mc::Model &model, const mc::ContactGeometry &) {
-    std::memcpy(p, model.contact_pressure.data(), model.contact_pressure.size() * sizeof(double));
+  return legacy_array(m, p, "p", [&](const mc::Model &model, const std::vector<int> &pos) {
+    copy_field(model, pos, MC_CONTACT_PRESSURE, p);
   });
 }
 
 mc_status mc_get_contact_force(const mc_model *m, double *f) {
-  return contact_array(m, f, "f", [&](const mc::Model &model, const mc::ContactGeometry &) {
-    std::memcpy(f, model.contact_force.data(), model.contact_force.size() * sizeof(double));
+  return legacy_array(m, f, "f", [&](const mc::Model &model, const std::vector<int> &pos) {
+    copy_field(model, pos, MC_CONTACT_FORCE, f);
   });
 }
 
 mc_status mc_get_contact_gap(const mc_model *m, double *g) {
-  return contact_array(m, g, "g", [&](const mc::Model &model, const mc::ContactGeometry &) {
-    std::memcpy(g, model.contact_gap.data(), model.contact_gap.size() * sizeof(double));
+  return legacy_array(m, g, "g", [&](const mc::Model &model, const std::vector<int> &pos) {
+    copy_field(model, pos, MC_CONTACT_GAP, g);
   });
 }
 
 mc_status mc_get_contact_initial_gap(const mc_model *m, double *g0) {
-  return contact_array(m, g0, "g0", [&](const mc::Model &model, const mc::ContactGeometry &g) {
-    for (size_t j = 0; j < g.gap0.size(); ++j) g0[j] = model.initial_gap(j);
+  return legacy_array(m, g0, "g0", [&](const mc::Model &model, const std::vector<int> &pos) {
+    copy_field(model, pos, MC_CONTACT_INITIAL_GAP, g0);
   });
 }
 
 mc_status mc_get_contact_normal(const mc_model *m, double *n) {
-  return contact_array(m, n, "n", [&](const mc::Model &, const mc::ContactGeometry &g) {
-    for (size_t j = 0; j < g.normals.size(); ++j) n[2 * j] = g.normals[j].x, n[2 * j + 1] = g.normals[j].y;
+  return legacy_array(m, n, "n", [&](const mc::Model &model, const std::vector<int> &pos) {
+    copy_field(model, pos, MC_CONTACT_NORMAL, n);
+  });
+}
+
+mc_status mc_get_pair_contact_count(const mc_model *m, int pair, mc_int *n) {
+  return guard_const(m, [&](const mc::Model &model) {
+    const std::vector<int> &positions = solved_pair_positions(model, pair_index(model, pair));
+    require_pointer(n, "n");
+    *n = mc_int(positions.size());
+  });
+}
+
+mc_status mc_get_pair_contact_nodes(const mc_model *m, int pair, mc_int *nodes) {
+  return guard_const(m, [&](const mc::Model &model) {
+    const std::vector<int> &positions = solved_pair_positions(model, pair_index(model, pair));
+    require_pointer(nodes, "nodes");
+    for (size_t j = 0; j < positions.size(); ++j)
+      nodes[j] = mc_int(model.position_node(size_t(positions[j])) + model.index_base);
+  });
+}
+
+mc_status mc_get_pair_contact(const mc_model *m, int pair, int field, double *out) {
+  return guard_const(m, [&](const mc::Model &model) {
+    const int p = pair_index(model, pair);
+    check_field(field);
+    const std::vector<int> &positions = solved_pair_positions(model, p);
+    require_pointer(out, "out");
+    copy_field(model, positions, field, out);
   });
 }
 

@@ -23,7 +23,7 @@ extern "C" {
 mc_status mc_set_host_body(mc_model *m, int body, mc_int n_nodes, const double *xy, const mc_int *equations,
                            mc_int n_equations) {
   return guard(m, [&](mc::Model &model) {
-    const int b = body_index(body);
+    const int b = body_index(model, body);
     require_count(n_nodes, "n_nodes");
     mc::Body fresh;
     fresh.mesh = mc::Mesh::points(n_nodes, xy, model.index_base);
@@ -40,6 +40,7 @@ mc_status mc_set_host_body(mc_model *m, int body, mc_int n_nodes, const double *
     fresh.prescribed_value.assign(size_t(n_equations), 0.0);
     fresh.nodal_force.assign(size_t(n_equations), 0.0);
     model.body[b] = std::move(fresh);
+    forget_contact_surfaces(model, b);
     model.structure_changed();
   });
 }

@@ -46,13 +46,36 @@ mc_status guard_const(const mc_model *m, F &&body) {
   return guard(const_cast<mc_model *>(m), [&](mc::Model &model) { body(static_cast<const mc::Model &>(model)); });
 }
 
-inline int body_index(int body) {
-  if (body != 1 && body != 2) fail(MC_ERROR_ARGUMENT, "body = %d: must be 1 or 2", body);
+// A body number given by the caller (1..N whatever the index base, like pairs), 0-based.
+inline int body_index(const mc::Model &model, int body) {
+  if (body < 1 || body > model.n_bodies()) {
+    if (model.n_bodies() == 2) fail(MC_ERROR_ARGUMENT, "body = %d: must be 1 or 2", body);
+    fail(MC_ERROR_ARGUMENT, "body = %d: must be 1 to %d (mc_set_body_count)", body, model.n_bodies());
+  }
   return body - 1;
 }
 
+// A pair number given by the caller (1..pairs made), 0-based.
+inline int pair_index(const mc::Model &model, int pair) {
+  if (model.pairs.empty())
+    fail(MC_ERROR_ARGUMENT, "pair = %d: the model has no contact pairs (mc_add_contact_pair, mc_set_contact)", pair);
+  if (pair < 1 || pair > int(model.pairs.size()))
+    fail(MC_ERROR_ARGUMENT, "pair = %d: must be 1 to %zu (the pairs made)", pair, model.pairs.size());
+  return pair - 1;
+}
+
+// A body's contact surfaces refer to its node ids: a new mesh or host body drops them (and the
+// non-mortar offsets), as it drops loads and supports.
+inline void forget_contact_surfaces(mc::Model &model, int b) {
+  for (mc::ContactPair &pair : model.pairs) {
+    for (int side = 0; side < 2; ++side)
+      if (pair.body_of_side(side) == b) pair.side[side].clear(), pair.has_side[side] = false;
+    if (pair.nonmortar == b) pair.gap_offset.clear();
+  }
+}
+
 inline mc::Body &meshed_body(mc::Model &model, int body) {
-  mc::Body &b = model.body[body_index(body)];
+  mc::Body &b = model.body[body_index(model, body)];
   if (!b.has_mesh) fail(MC_ERROR_STATE, "body %d has no mesh: call mc_set_mesh first", body);
   return b;
 }
@@ -66,13 +89,13 @@ inline mc::Body &cell_body(mc::Model &model, int body, const char *call, const c
 }
 
 inline mc::Body &host_body(mc::Model &model, int body, const char *call) {
-  mc::Body &b = model.body[body_index(body)];
+  mc::Body &b = model.body[body_index(model, body)];
   if (!b.host) fail(MC_ERROR_STATE, "body %d is not a host body: %s needs mc_set_host_body first", body, call);
   return b;
 }
 
 inline const mc::Body &solved_body(const mc::Model &model, int body) {
-  const mc::Body &b = model.body[body_index(body)];
+  const mc::Body &b = model.body[body_index(model, body)];
   if (!b.has_mesh) fail(MC_ERROR_STATE, "body %d has no mesh: call mc_set_mesh first", body);
   if (!model.solved) fail(MC_ERROR_STATE, "no solution: call mc_solve first (or again, after changing the scene)");
   return b;

@@ -28,10 +28,12 @@ namespace {
 
 // The contact terms of body 1's contact edge `seg` (a curve segment of the non-mortar surface),
 // added to the indicator of the cell that owns the edge.
-double contact_edge_terms(const Model &model, const ContactGeometry &g, int seg, const PlaneLaw &law,
+double contact_edge_terms(const Model &model, const ContactGeometry &g, int first_position, int seg, const PlaneLaw &law,
                           const std::vector<double> &stress, const std::vector<char> &owns_row) {
   const CurveSegment &c = g.nonmortar.segments()[seg];
-  const std::array<int, 3> &pos = g.segment_positions[seg];
+  std::array<int, 3> pos = g.segment_positions[seg];  // the stacked positions (Model::contact_pressure's)
+  for (int &p : pos)
+    if (p >= 0) p += first_position;
   const int nodes = c.quadratic() ? 3 : 2;
   const int node[3] = {c.a, c.b, c.mid};
   double pressure[3] = {0, 0, 0}, gap[3] = {0, 0, 0};
@@ -82,7 +84,7 @@ void Model::estimate_error() {
   for (Body &b : body) b.error_indicator.clear();
   if (!options.error_estimate) return;
   double eta2 = 0;
-  std::vector<double> cell_eta2[2], recovered[2];
+  std::vector<std::vector<double>> cell_eta2(body.size()), recovered(body.size());
   // Each body on its own thread when the solve runs two (the recovery's phase does the same).
   for_each_body([&](int b, BodyWork &work) {
     const Body &body_ = body[b];
@@ -142,44 +144,48 @@ void Model::estimate_error() {
       cell_eta2[b][c] = cell_recovery_error(p, npc, laws[l], &compliance[16 * l], measure(), bbar, ue, nodal);
     }
   });
-  if (contact_ && !body[0].host && !cell_eta2[0].empty()) {
-    const ContactGeometry &g = contact_->geometry;
-    std::vector<char> owns_row(g.nodes.size(), 0);  // the positions whose gap is their row's
-    for (int position : contact_->rows.own_position)
+  // The contact terms, on each group's non-mortar edges.
+  std::vector<char> owns_row(contact_force.size(), 0);
+  if (contact_)
+    for (int position : contact_->rows.own_position)  // the positions whose gap is their row's
       if (position >= 0) owns_row[position] = 1;
-    std::vector<double> own_stress(4 * size_t(body[0].mesh.n_nodes()), 0.0);  // per edge, its cell's
-    const std::vector<PlaneLaw> &laws = system_[0]->laws;
+  for (const ContactGroup &group : contact_ ? contact_->groups : std::vector<ContactGroup>{}) {
+    const int nm = group.nonmortar;
+    if (body[nm].host || cell_eta2[nm].empty()) continue;
+    const ContactGeometry &g = group.geometry;
+    std::vector<double> own_stress(4 * size_t(body[nm].mesh.n_nodes()), 0.0);  // per edge, its cell's
+    const std::vector<PlaneLaw> &laws = system_[nm]->laws;
     for (size_t seg = 0; seg < g.nonmortar.segments().size(); ++seg) {
       const CurveSegment &c = g.nonmortar.segments()[seg];
-      const BoundaryEdge *edge = body[0].mesh.boundary_edge(c.a, c.b);
+      const BoundaryEdge *edge = body[nm].mesh.boundary_edge(c.a, c.b);
       if (!edge) continue;
       const PlaneLaw &law = laws.size() == 1 ? laws[0] : laws[edge->cell];
       // The cell's own stress at its nodes: the misfit is measured with the discrete stress, as
       // residual estimators do (with the recovered one, whose one-sided patches at a curved
       // coarse boundary extrapolate, the quarter-ring shrink fit's estimate came out 4 to 5.5
       // times the true error, and growing with refinement)
-      const Mesh &mesh = body[0].mesh;
+      const Mesh &mesh = body[nm].mesh;
       const int npc = mesh.nodes_per_cell(), *v = mesh.cell(edge->cell);
       Point p[kMaxCellNodes];
       double ue[2 * kMaxCellNodes], at_nodes[4 * kMaxCellNodes];
       for (int a = 0; a < npc; ++a)
-        p[a] = mesh.node(v[a]), ue[2 * a] = body[0].u[2 * size_t(v[a])], ue[2 * a + 1] = body[0].u[2 * size_t(v[a]) + 1];
+        p[a] = mesh.node(v[a]), ue[2 * a] = body[nm].u[2 * size_t(v[a])], ue[2 * a + 1] = body[nm].u[2 * size_t(v[a]) + 1];
       cell_nodal_stresses(p, npc, law, measure(), options.q1_integration == MC_Q1_BBAR && npc == 4, ue, at_nodes);
       std::vector<double> &own = own_stress;
       for (int a = 0; a < npc; ++a)
         for (int k = 0; k < 4; ++k) own[4 * size_t(v[a]) + k] = at_nodes[4 * a + k];
-      cell_eta2[0][edge->cell] += contact_edge_terms(*this, g, int(seg), law, own, owns_row);
+      cell_eta2[nm][edge->cell] += contact_edge_terms(*this, g, group.first_position, int(seg), law, own, owns_row);
     }
   }
-  for (int b = 0; b < 2; ++b)
+  for (int b = 0; b < n_bodies(); ++b)
     for (double e : cell_eta2[b]) eta2 += e;
   const double denominator = 2 * infos.energy + eta2;
   if (!(denominator > 0)) {  // no deformation, no error: every indicator 0
-    for (int b = 0; b < 2; ++b) body[b].error_indicator.assign(cell_eta2[b].size(), 0.0);
+    for (int b = 0; b < n_bodies(); ++b) body[b].error_indicator.assign(cell_eta2[b].size(), 0.0);
     return;
   }
   infos.error_estimate = std::sqrt(eta2 / denominator);
-  for (int b = 0; b < 2; ++b) {
+  for (int b = 0; b < n_bodies(); ++b) {
     body[b].error_indicator.resize(cell_eta2[b].size());
     for (size_t c = 0; c < cell_eta2[b].size(); ++c) body[b].error_indicator[c] = std::sqrt(cell_eta2[b][c] / denominator);
   }

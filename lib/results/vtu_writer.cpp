@@ -117,41 +117,48 @@ std::string xml_escaped(const std::string &text) {
   return out;
 }
 
-// The contact results of body 1 spread onto all its nodes (zero off the contact surface).
+// The contact results of a body spread onto all its nodes: those of every group in which it is
+// the non-mortar side (zero off its contact surfaces, and on a body that is only ever mortar).
 struct NodalContact {
   std::vector<double> pressure, gap, initial_gap;
   std::vector<int> active, constrained;
 };
 
-NodalContact nodal_contact(const Model &model) {
-  const int n = model.body[0].has_mesh ? model.body[0].mesh.n_nodes() : 0;
+NodalContact nodal_contact(const Model &model, int b) {
+  const int n = model.body[b].has_mesh ? model.body[b].mesh.n_nodes() : 0;
   NodalContact c;
   c.pressure.assign(n, 0.0), c.gap.assign(n, 0.0), c.initial_gap.assign(n, 0.0);
   c.active.assign(n, 0), c.constrained.assign(n, 0);
   if (!model.contact()) return c;
-  const ContactGeometry &g = model.contact()->geometry;
-  // A corner node is a contact position in each of its two faces: its pressure is its total
-  // normal force over its total tributary measure, its gaps the smaller one.
-  // (With the weak rows of a quadratic body 1 the pressure is the multiplier field, not the
-  // lumped force: there a corner in two faces gets the mean of its two pressures, weighted by
+  // A corner node is a contact position in each of its two faces (or of two pairs): its pressure
+  // is its total normal force over its total tributary measure, its gaps the smaller one.
+  // (With the weak rows of a quadratic non-mortar side the pressure is the multiplier field, not
+  // the lumped force: there a corner in two faces gets the mean of its two pressures, weighted by
   // their tributary measures.)
-  const bool field = !model.contact()->rows.pressure_of_position.empty();
   std::vector<double> force(n, 0.0), tributary(n, 0.0);
-  for (size_t pos = 0; pos < g.nodes.size(); ++pos) {
-    const int node = g.nodes[pos];
-    const bool sees_body2 = std::isfinite(model.contact_gap[pos]);
-    force[node] += field ? model.contact_pressure[pos] * g.tributary[pos] : model.contact_force[pos];
-    tributary[node] += g.tributary[pos];
-    if (sees_body2) {
-      const double gap = model.contact_gap[pos], initial = model.initial_gap(pos);
-      c.gap[node] = c.constrained[node] ? std::min(c.gap[node], gap) : gap;
-      c.initial_gap[node] = c.constrained[node] ? std::min(c.initial_gap[node], initial) : initial;
-      c.constrained[node] = 1;
+  std::vector<char> on_surface(n, 0);
+  for (const ContactGroup &group : model.contact()->groups) {
+    if (group.nonmortar != b) continue;
+    const ContactGeometry &g = group.geometry;
+    const bool field = !group.rows.pressure_of_position.empty();
+    for (size_t local = 0; local < g.nodes.size(); ++local) {
+      const size_t pos = group.first_position + local;
+      const int node = g.nodes[local];
+      on_surface[node] = 1;
+      const bool sees_mortar = std::isfinite(model.contact_gap[pos]);
+      force[node] += field ? model.contact_pressure[pos] * g.tributary[local] : model.contact_force[pos];
+      tributary[node] += g.tributary[local];
+      if (sees_mortar) {
+        const double gap = model.contact_gap[pos], initial = model.initial_gap(pos);
+        c.gap[node] = c.constrained[node] ? std::min(c.gap[node], gap) : gap;
+        c.initial_gap[node] = c.constrained[node] ? std::min(c.initial_gap[node], initial) : initial;
+        c.constrained[node] = 1;
+      }
+      c.active[node] = c.active[node] || model.contact_force[pos] > 0;
     }
-    c.active[node] = c.active[node] || model.contact_force[pos] > 0;
   }
-  for (size_t pos = 0; pos < g.nodes.size(); ++pos) {
-    const int node = g.nodes[pos];
+  for (int node = 0; node < n; ++node) {
+    if (!on_surface[node]) continue;
     if (!c.constrained[node]) c.gap[node] = c.initial_gap[node] = kUnseenGap;
     c.pressure[node] = tributary[node] > 0 ? force[node] / tributary[node] : 0.0;
   }
@@ -186,7 +193,8 @@ const char *stress_component_names(const Model &model) {
 void write_piece(TextFile &out, const Model &model, const std::vector<int> &bodies) {
   long n_points = 0, n_cells = 0;
   for (int b : bodies) n_points += model.body[b].mesh.n_nodes(), n_cells += model.body[b].mesh.n_cells();
-  const NodalContact contact = nodal_contact(model);
+  std::vector<NodalContact> contact;
+  for (int b : bodies) contact.push_back(nodal_contact(model, b));
   out << "    <Piece NumberOfPoints=\"" << n_points << "\" NumberOfCells=\"" << n_cells << "\">\n";
 
   out << "      <PointData Vectors=\"displacement\" Scalars=\"pressure\">\n";
@@ -196,21 +204,18 @@ void write_piece(TextFile &out, const Model &model, const std::vector<int> &bodi
     for (int i = 0; i < model.body[b].mesh.n_nodes(); ++i) out << u[2 * i] << " " << u[2 * i + 1] << " 0\n";
   }
   close_array(out);
-  // Body 1's nodal values, zero on body 2.
-  auto contact_field = [&](const char *type, const char *name, auto value_of_body1_node) {
+  // Each body's values as a non-mortar side (zero where it is none).
+  auto contact_field = [&](const char *type, const char *name, auto value) {
     open_array(out, type, name, 1);
-    for (int b : bodies)
-      for (int i = 0; i < model.body[b].mesh.n_nodes(); ++i) {
-        if (b == 0) out << value_of_body1_node(i) << "\n";
-        else out << "0\n";
-      }
+    for (size_t k = 0; k < bodies.size(); ++k)
+      for (int i = 0; i < model.body[bodies[k]].mesh.n_nodes(); ++i) out << value(contact[k], i) << "\n";
     close_array(out);
   };
-  contact_field("Float64", "pressure", [&](int i) { return contact.pressure[i]; });
-  contact_field("Float64", "gap", [&](int i) { return contact.gap[i]; });
-  contact_field("Float64", "initial_gap", [&](int i) { return contact.initial_gap[i]; });
-  contact_field("Int32", "active", [&](int i) { return contact.active[i]; });
-  contact_field("Int32", "contact", [&](int i) { return contact.constrained[i]; });
+  contact_field("Float64", "pressure", [&](const NodalContact &c, int i) { return c.pressure[i]; });
+  contact_field("Float64", "gap", [&](const NodalContact &c, int i) { return c.gap[i]; });
+  contact_field("Float64", "initial_gap", [&](const NodalContact &c, int i) { return c.initial_gap[i]; });
+  contact_field("Int32", "active", [&](const NodalContact &c, int i) { return c.active[i]; });
+  contact_field("Int32", "contact", [&](const NodalContact &c, int i) { return c.constrained[i]; });
   // Each cell's stress at its nodes, averaged over the cells sharing a node (mc_get_nodal_stress).
   out << "        <DataArray type=\"Float64\" Name=\"nodal_stress\" NumberOfComponents=\"4\" "
       << stress_component_names(model) << " format=\"ascii\">\n";
@@ -300,7 +305,7 @@ bool ends_with(const std::string &text, const std::string &suffix) {
 void write_vtu(const Model &model, const std::string &path) {
   if (!model.solved) fail(MC_ERROR_STATE, "no solution: call mc_solve first (or again, after changing the scene)");
   std::vector<int> bodies;
-  for (int b = 0; b < 2; ++b)
+  for (int b = 0; b < model.n_bodies(); ++b)
     if (model.body[b].has_mesh && !model.body[b].host) bodies.push_back(b);  // a host body has no cells to draw
   if (bodies.empty()) fail(MC_ERROR_STATE, "no mesh body to write: host bodies (mc_set_host_body) have no cells");
   if (!ends_with(path, ".pvd")) {

@@ -103,7 +103,7 @@ std::unique_ptr<BodySystem> Model::assemble_body(int b, BodyWork &work) const {
     work.log(MC_LOG_PHASE, "assembly: body %d, host body of %d equations, %zu stiffness entries, %.3g s", b + 1,
              body_.host_data.n_equations, body_.host_data.entry_value.size(), now() - t_assembly);
     check_host_rigid_candidates(b, sys->rigid, work);
-    if (sys->rigid.count > 0 && !contact_active())
+    if (sys->rigid.count > 0 && !in_contact(b))
       fail(MC_ERROR_SINGULAR,
            "body %d is not held: the host's stiffness leaves %s free; restrain freedoms (give them no equation), or "
            "give both bodies contact surfaces so that contact can hold it",
@@ -124,7 +124,7 @@ std::unique_ptr<BodySystem> Model::assemble_body(int b, BodyWork &work) const {
   work.log(MC_LOG_PHASE, "assembly: body %d, %d nodes, %d cells, stiffness in %.3g s", b + 1,
            body_.mesh.n_nodes(), body_.mesh.n_cells(), now() - t_assembly);
   sys->rigid = axisymmetric ? free_axial_translation(body_.mesh, fixed_[b]) : free_rigid_modes(body_.mesh, fixed_[b]);
-  if (sys->rigid.count > 0 && !contact_active())
+  if (sys->rigid.count > 0 && !in_contact(b))
     fail(MC_ERROR_SINGULAR,
          "body %d is not held: its supports leave %s free; add supports with mc_fix, or contact "
          "surfaces on both bodies with mc_set_contact so that contact can hold it",

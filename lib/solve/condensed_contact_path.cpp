@@ -16,29 +16,50 @@
 namespace mc {
 
 // One body's share of the interface operator, s_b = B_G L_GG^-T L_GG^-1 B_G^T (upper triangle,
-// q x q): a triangular solve with the trailing block of the factor and a rank-k update, all
-// dense BLAS 3. W_b is kept for the loads and the recovery.
+// q_b x q_b over the q_b rows that touch the body, ContactSystem::body_rows): a triangular solve
+// with the trailing block of the factor and a rank-k update, all dense BLAS 3. W_b is kept for
+// the loads and the recovery. (With two bodies every row touches both: q_b = q.)
 void Model::interface_block(int b, std::vector<double> &s_b, BodyWork &work) {
   Stopwatch watch(work.infos.t_contact);
   ContactSystem &cs = *contact_;
   BodySystem &sys = *system_[b];
-  const int q = cs.rows.size(), ng = int(sys.interface.size());
-  if (ng == 0 || q == 0) return;
+  const std::vector<int> &columns = cs.body_rows[b];
+  const int qb = int(columns.size()), ng = int(sys.interface.size());
+  if (ng == 0 || qb == 0) return;
   std::vector<int> order;
   std::vector<double> l = sys.cholesky.interface_factor(order);
   std::vector<int> factor_position(sys.stiffness.n, -1);
   for (int k = 0; k < ng; ++k) factor_position[sys.interface[order[k]]] = k;
-  std::vector<double> w(size_t(ng) * q, 0.0);
-  for (int r = 0; r < q; ++r)
+  std::vector<double> w(size_t(ng) * qb, 0.0);
+  for (int c = 0; c < qb; ++c) {
+    const int r = columns[c];
     for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) {
       int k = factor_position[cs.b_dof[b][p]];
-      if (k >= 0) w[size_t(r) * ng + k] += cs.b_value[b][p];
+      if (k >= 0) w[size_t(c) * ng + k] += cs.b_value[b][p];
     }
+  }
   double one = 1.0, zero = 0.0;
-  dtrsm_("L", "L", "N", "N", &ng, &q, &one, l.data(), &ng, w.data(), &ng);
-  s_b.assign(size_t(q) * q, 0.0);
-  dsyrk_("U", "T", &q, &ng, &one, w.data(), &ng, &zero, s_b.data(), &q);
+  dtrsm_("L", "L", "N", "N", &ng, &qb, &one, l.data(), &ng, w.data(), &ng);
+  s_b.assign(size_t(qb) * qb, 0.0);
+  dsyrk_("U", "T", &qb, &ng, &one, w.data(), &ng, &zero, s_b.data(), &qb);
   cs.w[b] = std::move(w), cs.w_rows[b] = ng;
+}
+
+// y += W_b^T x_G for body b (x_G: the trailing interface part of a forward solve), on the rows
+// touching b: B_b K_b^+ f in the condensed problem's terms.
+static void add_interface_product(const ContactSystem &cs, int b, const double *x_interface, std::vector<double> &y) {
+  const std::vector<int> &columns = cs.body_rows[b];
+  const int ng = cs.w_rows[b], qb = int(columns.size());
+  if (ng == 0 || qb == 0) return;
+  int one = 1;
+  double plus = 1.0, zero = 0.0;
+  if (qb == int(y.size())) {  // every row touches b (two bodies): straight into y, as it always was
+    dgemv_("T", &ng, &qb, &plus, cs.w[b].data(), &ng, x_interface, &one, &plus, y.data(), &one);
+    return;
+  }
+  std::vector<double> yb(qb, 0.0);
+  dgemv_("T", &ng, &qb, &plus, cs.w[b].data(), &ng, x_interface, &one, &zero, yb.data(), &one);
+  for (int c = 0; c < qb; ++c) y[columns[c]] += yb[c];
 }
 
 // Each body's factorization, its share of S = sum_b s_b and, through `then`, its load solve,
@@ -46,9 +67,13 @@ void Model::interface_block(int b, std::vector<double> &s_b, BodyWork &work) {
 // that the results do not depend on it. Bodies not yet analysed for this path (the sparse path
 // was forced, or chosen and then fell back) are analysed first.
 void Model::build_condensed(const std::function<void(int, BodyWork &)> &then) {
-  if (contact_) contact_->sparse = false;
-  std::vector<double> s_b[2];
-  double t_operator[2] = {0, 0};
+  if (contact_) {
+    contact_->sparse = false;
+    contact_->w.assign(body.size(), {});
+    contact_->w_rows.assign(body.size(), 0);
+  }
+  std::vector<std::vector<double>> s_b(body.size());
+  std::vector<double> t_operator(body.size(), 0.0);
   for_each_body([&](int b, BodyWork &work) {
     if (system_[b] && !system_[b]->cholesky.analyzed()) analyze_body(b, work, true);
     factorize_body(b, work);
@@ -65,14 +90,19 @@ void Model::build_condensed(const std::function<void(int, BodyWork &)> &then) {
     ContactSystem &cs = *contact_;
     const size_t q = size_t(cs.rows.size());
     cs.s.assign(q * q, 0.0);
-    for (int b = 0; b < 2; ++b)
-      if (!s_b[b].empty())
-        for (size_t k = 0; k < q * q; ++k) cs.s[k] += s_b[b][k];
+    double t_blocks = 0;
+    for (int b = 0; b < n_bodies(); ++b) {
+      t_blocks += t_operator[b];
+      if (s_b[b].empty()) continue;
+      const std::vector<int> &columns = cs.body_rows[b];
+      const size_t qb = columns.size();
+      for (size_t j = 0; j < qb; ++j)
+        for (size_t i = 0; i < qb; ++i) cs.s[size_t(columns[j]) * q + size_t(columns[i])] += s_b[b][j * qb + i];
+    }
     for (size_t j = 0; j < q; ++j)
       for (size_t i = j + 1; i < q; ++i) cs.s[j * q + i] = cs.s[i * q + j];
     cs.last_active.clear();
-    progress(MC_LOG_PHASE, "interface operator: S = B K^+ B^T of order %zu, %.3g s", q,
-             t_operator[0] + t_operator[1] + now() - start);
+    progress(MC_LOG_PHASE, "interface operator: S = B K^+ B^T of order %zu, %.3g s", q, t_blocks + now() - start);
   }
 }
 
@@ -80,7 +110,7 @@ void Model::build_condensed(const std::function<void(int, BodyWork &)> &then) {
 // path, whose QP solver then falls back to a primal active-set method that cannot cycle
 // (dual_qp.cpp), if it fits in memory (choose_interface_solver refuses it otherwise, with
 // MC_ERROR_MEMORY). The structure stays condensed until it is rebuilt.
-void Model::fall_back_to_condensed(LoadSolve loads[2]) {
+void Model::fall_back_to_condensed(std::vector<LoadSolve> &loads) {
   const double start = now();
   check_condensed_fits();
   contact_->last_active.clear();
@@ -96,7 +126,7 @@ void Model::fall_back_to_condensed(LoadSolve loads[2]) {
 // The condensed problem of the current loads (d, G, e; S from the structure), its QP, and the
 // errors it can report. lambda and alpha: the contact forces and the floating bodies' rigid
 // motion; qp keeps S and G for the refinement.
-void Model::solve_condensed(LoadSolve loads[2], DualQp &qp, std::vector<double> &lambda, std::vector<double> &alpha) {
+void Model::solve_condensed(std::vector<LoadSolve> &loads, DualQp &qp, std::vector<double> &lambda, std::vector<double> &alpha) {
   ContactSystem &cs = *contact_;
   const int q = cs.rows.size();
   qp.q = q;
@@ -106,18 +136,13 @@ void Model::solve_condensed(LoadSolve loads[2], DualQp &qp, std::vector<double> 
     // d = B K^+ f_eff - g0 (with the prescribed values' share of the gap): B K^+ f_eff is
     // sum W_b^T y_G.
     std::vector<double> bv(q, 0.0);
-    for (int b = 0; b < 2; ++b) {
-      const int ng = cs.w_rows[b];
-      if (ng == 0 || q == 0) continue;
-      int one = 1;
-      double plus = 1.0;
-      const double *y_interface = loads[b].y.data() + system_[b]->cholesky.interface_start();
-      dgemv_("T", &ng, &q, &plus, cs.w[b].data(), &ng, y_interface, &one, &plus, bv.data(), &one);
-    }
+    for (int b = 0; b < n_bodies(); ++b)
+      if (system_[b] && cs.w_rows[b] > 0)
+        add_interface_product(cs, b, loads[b].y.data() + system_[b]->cholesky.interface_start(), bv);
     qp.d.assign(q, 0.0);
     for (int r = 0; r < q; ++r) {
       double g = row_initial_gap(r);
-      for (int b = 0; b < 2; ++b)
+      for (int b = 0; b < n_bodies(); ++b)
         for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) {
           int dof = cs.b_dof[b][p];
           if (fixed_[b][dof]) g -= cs.b_value[b][p] * fixed_value_[b][dof];
@@ -147,7 +172,7 @@ void Model::solve_condensed(LoadSolve loads[2], DualQp &qp, std::vector<double> 
          modes.c_str(), result.imbalance);
   }
   if (result.outcome == DualQpOutcome::modes_not_held) {
-    const std::string modes = free_modes_description();
+    const std::string unheld = unheld_modes_description(), modes = unheld.empty() ? free_modes_description() : unheld;
     fail(MC_ERROR_SINGULAR,
          "contact cannot hold the free rigid motion (%s): the contact normals do not restrain it; add supports",
          modes.c_str());
@@ -179,17 +204,16 @@ void Model::solve_condensed(LoadSolve loads[2], DualQp &qp, std::vector<double> 
 // kMaxRefinementSteps. Returns whether any step was kept (loads[b].v, lambda, alpha, body[b].u
 // and infos.gap_residual then hold the refined solution). `qp` keeps S and G; its d and e are
 // overwritten with the residuals.
-bool Model::refine_solution(DualQp &qp, LoadSolve loads[2], std::vector<double> &lambda, std::vector<double> &alpha) {
+bool Model::refine_solution(DualQp &qp, std::vector<LoadSolve> &loads, std::vector<double> &lambda, std::vector<double> &alpha) {
   const double start = now(), first = infos.gap_residual;
   const ContactSystem &cs = *contact_;
   const int q = cs.rows.size();
-  const int mode_offset[2] = {0, system_[0] ? system_[0]->rigid.count : 0};
   std::vector<char> active(q);
   for (int r = 0; r < q; ++r) active[r] = lambda[r] > 0;
   int steps = 0;
   for (int step = 0; step < kMaxRefinementSteps; ++step) {
     // 1. The equilibrium residual of each body and its forward solve y_r = L^-1 P r_f.
-    std::vector<double> residual[2], residual_y[2];
+    std::vector<std::vector<double>> residual(body.size()), residual_y(body.size());
     for_each_body([&](int b, BodyWork &work) {
       if (!system_[b]) return;
       const BodySystem &sys = *system_[b];
@@ -214,22 +238,17 @@ bool Model::refine_solution(DualQp &qp, LoadSolve loads[2], std::vector<double> 
     // 2. The correction on the active set: d = B K^+ r_f - gap (B K^+ r_f = sum W_b^T y_r,G),
     //    e = R^T r_f, in body order.
     qp.d.assign(q, 0.0);
-    for (int b = 0; b < 2; ++b) {
-      const int ng = cs.w_rows[b];
-      if (!system_[b] || ng == 0 || q == 0) continue;
-      int one = 1, rows = q;
-      double plus = 1.0;
-      const double *y_interface = residual_y[b].data() + system_[b]->cholesky.interface_start();
-      dgemv_("T", &ng, &rows, &plus, cs.w[b].data(), &ng, y_interface, &one, &plus, qp.d.data(), &one);
-    }
+    for (int b = 0; b < n_bodies(); ++b)
+      if (system_[b] && cs.w_rows[b] > 0)
+        add_interface_product(cs, b, residual_y[b].data() + system_[b]->cholesky.interface_start(), qp.d);
     for (int r = 0; r < q; ++r) qp.d[r] -= row_gap(r);
     qp.e.assign(qp.k, 0.0);
-    for (int b = 0; b < 2; ++b) {
+    for (int b = 0; b < n_bodies(); ++b) {
       if (!system_[b]) continue;
       const RigidModes &rm = system_[b]->rigid;
-      const int ndof = system_[b]->stiffness.n;
+      const int ndof = system_[b]->stiffness.n, offset = mode_offset(b);
       for (int c = 0; c < rm.count; ++c)
-        for (int i = 0; i < ndof; ++i) qp.e[mode_offset[b] + c] += rm.modes[size_t(c) * ndof + i] * residual[b][i];
+        for (int i = 0; i < ndof; ++i) qp.e[offset + c] += rm.modes[size_t(c) * ndof + i] * residual[b][i];
     }
     std::vector<double> dl, da;
     if (!solve_correction(qp, active, dl, da)) break;
@@ -239,16 +258,21 @@ bool Model::refine_solution(DualQp &qp, LoadSolve loads[2], std::vector<double> 
     for (int c = 0; c < qp.k; ++c) new_alpha[c] += da[c];
     if (!feasible) break;
     // 3. du = K^+ (r_f - B^T dl) + R da = P^T L^-T (y_r - [0; W dl]) + R da, per body.
-    std::vector<double> kept_v[2] = {loads[0].v, loads[1].v}, kept_u[2] = {body[0].u, body[1].u};
+    std::vector<std::vector<double>> kept_v, kept_u;
+    for (int b = 0; b < n_bodies(); ++b) kept_v.push_back(loads[b].v), kept_u.push_back(body[b].u);
     for_each_body([&](int b, BodyWork &work) {
       if (!system_[b]) return;
       const BodySystem &sys = *system_[b];
       const int ndof = sys.stiffness.n, ng = cs.w_rows[b];
+      const std::vector<int> &columns = cs.body_rows[b];
+      const int qb = int(columns.size());
       std::vector<double> &z = residual_y[b], dx(sys.solve_dofs.size());
-      if (ng > 0 && q > 0) {
-        int one = 1, rows = q;
+      if (ng > 0 && qb > 0) {
+        int one = 1;
         double minus = -1.0, plus = 1.0;
-        dgemv_("N", &ng, &rows, &minus, cs.w[b].data(), &ng, dl.data(), &one, &plus, z.data() + sys.cholesky.interface_start(),
+        std::vector<double> dl_b(qb);
+        for (int c = 0; c < qb; ++c) dl_b[c] = dl[columns[c]];
+        dgemv_("N", &ng, &qb, &minus, cs.w[b].data(), &ng, dl_b.data(), &one, &plus, z.data() + sys.cholesky.interface_start(),
                &one);
       }
       {
@@ -262,7 +286,7 @@ bool Model::refine_solution(DualQp &qp, LoadSolve loads[2], std::vector<double> 
     });
     const double refined = recovered_gap_residual(new_lambda);
     if (!(refined <= 0.5 * infos.gap_residual)) {  // no real gain: the step is undone
-      for (int b = 0; b < 2; ++b) loads[b].v = kept_v[b], body[b].u = kept_u[b];
+      for (int b = 0; b < n_bodies(); ++b) loads[b].v = kept_v[b], body[b].u = kept_u[b];
       break;
     }
     lambda = new_lambda, alpha = new_alpha, infos.gap_residual = refined, ++steps;

@@ -81,7 +81,8 @@ std::vector<double> Model::nodal_displacement(int b) const {
 // meridian would tear open along the axis. The host's value of a prescribed u_r there is
 // overridden by 0.
 void Model::effective_supports() {
-  for (int b = 0; b < 2; ++b) {
+  fixed_.resize(body.size()), fixed_value_.resize(body.size());
+  for (int b = 0; b < n_bodies(); ++b) {
     fixed_[b] = body[b].prescribed;
     fixed_value_[b] = body[b].prescribed_value;
     if (!axisymmetric || !body[b].has_mesh || body[b].host) continue;  // a host restrains its own axis
@@ -91,16 +92,34 @@ void Model::effective_supports() {
   }
 }
 
+// With more than two bodies the odd ones go to the second thread (for_each_body); the smallest
+// body decides, as between two.
 int Model::body_threads() const {
-  if (!body[0].has_mesh || !body[1].has_mesh || options.threads == 1) return 1;
+  long smaller = -1;
+  int meshed = 0;
+  for (int b = 0; b < n_bodies(); ++b)
+    if (body[b].has_mesh) ++meshed, smaller = smaller < 0 ? dof_count(b) : std::min<long>(smaller, dof_count(b));
+  if (meshed < 2 || options.threads == 1) return 1;
   if (options.threads >= 2) return 2;  // asked for: at most that many, and two bodies use two
-  const long smaller = std::min(dof_count(0), dof_count(1));
   return available_cores() >= 2 && smaller >= kParallelMinBodyDofs ? 2 : 1;
 }
 
+bool Model::contact_active() const {
+  for (const ContactPair &p : pairs)
+    if (p.complete()) return true;
+  return false;
+}
+
+bool Model::in_contact(int b) const {
+  for (const ContactPair &p : pairs)
+    if (p.complete() && (p.nonmortar == b || p.mortar == b)) return true;
+  return false;
+}
+
 void Model::for_each_body(const std::function<void(int, BodyWork &)> &task) {
-  BodyWork work[2];
-  std::exception_ptr error[2];
+  const int n = n_bodies();
+  std::vector<BodyWork> work(n);
+  std::vector<std::exception_ptr> error(n);
   // With two body threads, each one's BLAS calls get its share of the cores (blas_threads.hpp):
   // one thread with OpenBLAS's pthread build (the count solve() lowered for the whole solve),
   // half the cores with the OpenMP build (each body thread's own setting, here).
@@ -115,25 +134,34 @@ void Model::for_each_body(const std::function<void(int, BodyWork &)> &task) {
     }
   };
   if (threads_ > 1) {
-    // Body 2 on a thread of its own, body 1 on the calling thread. The host's log callback is
-    // only ever called from the calling thread: each body keeps its messages, sent on below.
+    // The odd bodies (body 2, 4, ...) on a thread of their own, the even ones on the calling
+    // thread. The host's log callback is only ever called from the calling thread: each body
+    // keeps its messages, sent on below.
     for (BodyWork &w : work)
       if (progress.enabled()) w.log = ProgressLog{&keep_line, &w};
+    auto run_every_other = [&](int first) {
+      for (int b = first; b < n; b += 2) run(b);
+    };
     std::thread other;
     try {
-      other = std::thread(run, 1);
+      other = std::thread(run_every_other, 1);
       // A name a host (and test_model_threads) can see in /proc/self/task/*/comm.
       pthread_setname_np(other.native_handle(), "mc-body2");
-    } catch (const std::system_error &) {  // no thread to be had: body 2 after body 1
+    } catch (const std::system_error &) {  // no thread to be had: the odd bodies after the even
     }
-    run(0);
+    run_every_other(0);
     if (other.joinable()) other.join();
-    else run(1);
+    else run_every_other(1);
   } else {
-    for (int b = 0; b < 2 && !error[0]; ++b) work[b].log = progress, run(b);
+    for (int b = 0; b < n; ++b) {
+      bool failed = false;
+      for (int a = 0; a < b; ++a) failed = failed || error[a];
+      if (failed) break;
+      work[b].log = progress, run(b);
+    }
   }
-  // What a serial solve would have shown: body 1's messages, its error if any, then body 2's.
-  for (int b = 0; b < 2; ++b) {
+  // What a serial solve would have shown: body 1's messages, its error if any, then body 2's...
+  for (int b = 0; b < n; ++b) {
     for (const auto &line : work[b].lines) progress(line.first, "%s", line.second.c_str());
     add_body_infos(infos, work[b].infos);
     if (error[b]) std::rethrow_exception(error[b]);
@@ -146,43 +174,11 @@ void Model::for_each_body(const std::function<void(int, BodyWork &)> &task) {
 // its next one instead of waiting for the other body (docs/benchmarks.md, "Threads").
 void Model::build_structure(const std::function<void(int, BodyWork &)> &then) {
   contact_.reset();
-  for (auto &sys : system_) sys.reset();
+  system_.clear();
+  system_.resize(body.size());
   if (contact_active()) {
     Stopwatch watch(infos.t_contact);
-    const double t_geometry = now();
-    auto cs = std::make_unique<ContactSystem>();
-    SurfaceOptions surface_options;
-    surface_options.smooth = options.contact_surface == MC_SURFACE_SMOOTH;
-    surface_options.feature_angle_degrees = options.feature_angle;
-    cs->geometry = build_contact_geometry(body[0].mesh, body[0].contact, body[1].mesh, body[1].contact,
-                                          options.contact_normal, surface_options, measure());
-    cs->rows = build_constraint_rows(cs->geometry, options.method, options.multiplier, measure());
-    const ConstraintRows &rows = cs->rows;
-    for (int b = 0; b < 2; ++b) cs->b_start[b].push_back(0);
-    for (int r = 0; r < rows.size(); ++r) {
-      const Point n = rows.normal[r];
-      const bool vectors = !rows.vector1.empty();  // each entry with its own direction
-      // (A host body's freedom without an equation is restrained: it adds nothing to B.)
-      auto add = [&](int b, int node, Point v) {
-        for (int c = 0; c < 2; ++c) {
-          const int dof = dof_of(b, node, c);
-          if (dof >= 0) cs->b_dof[b].push_back(dof), cs->b_value[b].push_back(c == 0 ? v.x : v.y);
-        }
-      };
-      for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p)
-        add(0, cs->geometry.nodes[rows.position1[p]], vectors ? rows.vector1[p] : scaled(n, rows.weight1[p]));
-      for (int p = rows.start2[r]; p < rows.start2[r + 1]; ++p)
-        add(1, rows.body2_node[p], scaled(vectors ? rows.vector2[p] : scaled(n, rows.weight2[p]), -1));
-      for (int b = 0; b < 2; ++b) cs->b_start[b].push_back(int(cs->b_dof[b].size()));
-    }
-    // B holds the body-2 weights from here on: the rows' own copy goes (on a long interface each
-    // mortar row has some 60 of them).
-    std::vector<int>().swap(cs->rows.body2_node);
-    std::vector<double>().swap(cs->rows.weight2);
-    std::vector<Point>().swap(cs->rows.vector2);
-    progress(MC_LOG_PHASE, "contact geometry and mortar operators: %zu body-1 contact nodes, %d constraint rows, %.3g s",
-             cs->geometry.nodes.size(), cs->rows.size(), now() - t_geometry);
-    contact_ = std::move(cs);
+    contact_ = build_contact_system();
   }
 
   // Each body's factorization and, with contact, its share of S = sum_b s_b. The sum is formed
@@ -211,52 +207,67 @@ void Model::build_structure(const std::function<void(int, BodyWork &)> &then) {
   built_version_ = structure_version_;
 }
 
+int Model::position_node(size_t pos) const {
+  const ContactGroup &group = contact_->group_of_position(int(pos));
+  return group.geometry.nodes[pos - group.first_position];
+}
+
 double Model::initial_gap(size_t pos) const {
-  const ContactGeometry &g = contact_->geometry;
-  const std::vector<double> &offset = body[0].gap_offset;
-  return offset.empty() ? g.gap0[pos] : g.gap0[pos] + offset[g.nodes[pos]];
+  const ContactGroup &group = contact_->group_of_position(int(pos));
+  const size_t local = pos - group.first_position;
+  const double g0 = group.geometry.gap0[local];
+  return group.gap_offset.empty() ? g0 : g0 + group.gap_offset[group.geometry.nodes[local]];
 }
 
 double Model::row_initial_gap(int r) const {
   const ConstraintRows &rows = contact_->rows;
-  const std::vector<double> &offset = body[0].gap_offset;
+  const ContactGroup &group = contact_->groups[contact_->row_group[r]];
   double g = rows.gap0[r];
-  if (!offset.empty())  // the host's offsets, interpolated like u1 at a trace point inside a segment
-    for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p)
-      g += rows.weight1[p] * offset[contact_->geometry.nodes[rows.position1[p]]];
+  if (!group.gap_offset.empty())  // the host's offsets, interpolated like u1 at a trace point inside a segment
+    for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p) g += rows.weight1[p] * group.gap_offset[position_node(rows.position1[p])];
   return g;
 }
 
 // Row r's gap g_r - B_r u with the bodies' current displacements (body[b].u).
 double Model::row_gap(int r) const {
   double gap = row_initial_gap(r);
-  for (int b = 0; b < 2; ++b)
+  for (int b = 0; b < n_bodies(); ++b)
     for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
       gap -= contact_->b_value[b][p] * body[b].u[contact_->b_dof[b][p]];
   return gap;
 }
 
-// The gap at contact position pos itself, g0 - (u1 - u2(y)) . n with y its projection on body 2.
+// The gap at contact position pos itself, g0 - (u1 - u2(y)) . n with y its projection on the
+// group's mortar body.
 double Model::pointwise_gap(size_t pos) const {
-  const ContactGeometry &g = contact_->geometry;
-  const CurveSegment &c = g.mortar.segments()[g.projection[pos].segment];
+  const ContactGroup &group = contact_->group_of_position(int(pos));
+  const ContactGeometry &g = group.geometry;
+  const size_t local = pos - group.first_position;
+  const CurveSegment &c = g.mortar.segments()[g.projection[local].segment];
   double shape[3], ds[3];
-  line_shapes(c.quadratic() ? 3 : 2, g.projection[pos].eta, shape, ds);
-  const int node2[3] = {c.a, c.b, c.mid}, node1 = g.nodes[pos];
+  line_shapes(c.quadratic() ? 3 : 2, g.projection[local].eta, shape, ds);
+  const int node2[3] = {c.a, c.b, c.mid}, node1 = g.nodes[local];
   auto u = [&](int b, int node, int component) {
     const int dof = dof_of(b, node, component);
     return dof >= 0 ? body[b].u[dof] : 0.0;
   };
-  double ux = u(0, node1, 0), uy = u(0, node1, 1);
+  double ux = u(group.nonmortar, node1, 0), uy = u(group.nonmortar, node1, 1);
   for (int a = 0; a < (c.quadratic() ? 3 : 2); ++a)
-    ux -= shape[a] * u(1, node2[a], 0), uy -= shape[a] * u(1, node2[a], 1);
-  return initial_gap(pos) - (ux * g.normals[pos].x + uy * g.normals[pos].y);
+    ux -= shape[a] * u(group.mortar, node2[a], 0), uy -= shape[a] * u(group.mortar, node2[a], 1);
+  return initial_gap(pos) - (ux * g.normals[local].x + uy * g.normals[local].y);
+}
+
+int Model::mode_offset(int b) const {
+  int offset = 0;
+  for (int a = 0; a < b; ++a)
+    if (system_[a]) offset += system_[a]->rigid.count;
+  return offset;
 }
 
 // u += R alpha for body b (its rigid modes' share of alpha; nothing for a held body).
 void Model::add_rigid_motion(int b, const std::vector<double> &alpha, std::vector<double> &u) const {
   const RigidModes &rm = system_[b]->rigid;
-  const int ndof = system_[b]->stiffness.n, offset = b == 0 || !system_[0] ? 0 : system_[0]->rigid.count;
+  const int ndof = system_[b]->stiffness.n, offset = mode_offset(b);
   for (int c = 0; c < rm.count; ++c)
     for (int i = 0; i < ndof; ++i) u[i] += alpha[offset + c] * rm.modes[size_t(c) * ndof + i];
 }
@@ -271,7 +282,7 @@ void Model::add_rigid_motion(int b, const std::vector<double> &alpha, std::vecto
 double Model::recovered_gap_residual(const std::vector<double> &lambda) const {
   const ConstraintRows &rows = contact_->rows;
   double worst = 0, scale = 0;
-  for (int b = 0; b < 2; ++b)
+  for (int b = 0; b < n_bodies(); ++b)
     for (double u : body[b].u) scale = std::max(scale, std::fabs(u));
   for (int r = 0; r < rows.size(); ++r) {
     double weight = 0;
@@ -329,8 +340,15 @@ void Model::solve() {
   const double start = now();
   infos = Infos{};
   solved = false;
-  if (!body[0].has_mesh && !body[1].has_mesh) fail(MC_ERROR_STATE, "no mesh: call mc_set_mesh first");
-  for (int b = 0; b < 2; ++b) {
+  bool any_mesh = false;
+  for (const Body &b : body) any_mesh = any_mesh || b.has_mesh;
+  if (!any_mesh) fail(MC_ERROR_STATE, "no mesh: call mc_set_mesh first");
+  for (int b = 0; b < n_bodies(); ++b) {
+    // Two bodies: one may be left out (a single body's elasticity). An assembly's every body
+    // is part of the scene.
+    if (!body[b].has_mesh && n_bodies() > 2)
+      fail(MC_ERROR_STATE, "body %d has no mesh: call mc_set_mesh or mc_set_host_body (the model has %d bodies, "
+           "mc_set_body_count)", b + 1, n_bodies());
     if (body[b].host && body[b].host_data.entry_value.empty())
       fail(MC_ERROR_STATE, "body %d is a host body without stiffness: call mc_add_stiffness or mc_add_element_matrices",
            b + 1);
@@ -344,9 +362,7 @@ void Model::solve() {
            "its hoop terms: use mc_set_material, or a plane model",
            b + 1);
   }
-  if (body[0].has_contact != body[1].has_contact)
-    fail(MC_ERROR_STATE, "body %d has a contact surface but body %d has none: contact needs both (mc_set_contact)",
-         body[0].has_contact ? 1 : 2, body[0].has_contact ? 2 : 1);
+  check_contact_pairs();
   const bool rebuild = built_version_ != structure_version_;
   threads_ = body_threads();
   infos.threads = threads_;
@@ -364,7 +380,7 @@ void Model::solve() {
   effective_supports();
   // Each body's loads and their first solve: in the phase that factorizes it when the structure
   // is rebuilt, on their own otherwise.
-  LoadSolve loads[2];
+  std::vector<LoadSolve> loads(body.size());
   auto load_step = [&](int b, BodyWork &work) { solve_loads(b, work, loads[b]); };
   if (rebuild) {
     built_version_ = 0;
@@ -372,8 +388,10 @@ void Model::solve() {
   } else {
     for_each_body(load_step);
   }
+  double t_loads = 0;
+  for (const LoadSolve &l : loads) t_loads += l.seconds;
   progress(MC_LOG_PHASE, "loads: load vectors and %s, %.3g s", contact_ ? "forward solves y = L^-1 P f" : "solves v = K^-1 f",
-           loads[0].seconds + loads[1].seconds);
+           t_loads);
   std::vector<double> lambda;
   std::vector<double> alpha;
   DualQp qp;  // kept for the refinement (its S and G)
@@ -391,7 +409,7 @@ void Model::solve() {
 
   // u = K^+ (f_eff - B^T lambda) + R alpha, then the prescribed values.
   const double t_recovery = now();
-  double f_norm2[2] = {0, 0}, residual_norm2[2] = {0, 0}, energy[2] = {0, 0};
+  std::vector<double> f_norm2(body.size(), 0.0), residual_norm2(body.size(), 0.0), energy(body.size(), 0.0);
   auto recover = [&](int b, BodyWork &work) {
     if (!system_[b]) return;
     BodySystem &sys = *system_[b];
@@ -406,12 +424,15 @@ void Model::solve() {
     if (contact_ && !displacements_known) {
       // u = K^+ (f_eff - B^T lambda) = P^T L^-T (y - [0; W lambda]): the backward half only.
       std::vector<double> x(sys.solve_dofs.size()), z(loads[b].y);
-      const int ng = contact_->w_rows[b], q = contact_->rows.size();
-      if (ng > 0 && q > 0) {
+      const std::vector<int> &columns = contact_->body_rows[b];
+      const int ng = contact_->w_rows[b], qb = int(columns.size());
+      if (ng > 0 && qb > 0) {
         int one = 1;
         double minus = -1.0, plus = 1.0;
         double *z_interface = z.data() + sys.cholesky.interface_start();
-        dgemv_("N", &ng, &q, &minus, contact_->w[b].data(), &ng, lambda.data(), &one, &plus, z_interface, &one);
+        std::vector<double> lambda_b(qb);  // lambda on the rows touching b (W_b's columns)
+        for (int k = 0; k < qb; ++k) lambda_b[k] = lambda[columns[k]];
+        dgemv_("N", &ng, &qb, &minus, contact_->w[b].data(), &ng, lambda_b.data(), &one, &plus, z_interface, &one);
       }
       {
         Stopwatch watch(work.infos.t_solve);
@@ -449,50 +470,18 @@ void Model::solve() {
     infos.gap_residual = recovered_gap_residual(lambda);
     if (!contact_->sparse && infos.gap_residual > kRefineAboveGapResidual && refine_solution(qp, loads, lambda, alpha)) {
       displacements_known = true;
-      f_norm2[0] = f_norm2[1] = residual_norm2[0] = residual_norm2[1] = 0;
+      std::fill(f_norm2.begin(), f_norm2.end(), 0.0), std::fill(residual_norm2.begin(), residual_norm2.end(), 0.0);
       for_each_body(recover);  // reactions, energy and stresses of the refined displacements
     }
   }
   // Per-body sums added in body order, whatever the thread count.
-  const double residual_norm = residual_norm2[0] + residual_norm2[1], f_norm = f_norm2[0] + f_norm2[1];
-  infos.energy = energy[0] + energy[1];
+  double residual_norm = 0, f_norm = 0;
+  infos.energy = 0;
+  for (int b = 0; b < n_bodies(); ++b) residual_norm += residual_norm2[b], f_norm += f_norm2[b], infos.energy += energy[b];
   infos.equilibrium = std::sqrt(residual_norm) / std::max(std::sqrt(f_norm), 1e-300);
   if (f_norm == 0) infos.equilibrium = std::sqrt(residual_norm);
 
-  // Contact results per body-1 contact node.
-  contact_force.clear(), contact_gap.clear(), contact_pressure.clear();
-  if (contact_) {
-    const ContactGeometry &g = contact_->geometry;
-    const size_t n = g.nodes.size();
-    contact_force.assign(n, 0.0);
-    contact_gap.assign(n, kNoGap);
-    contact_pressure.assign(n, 0.0);
-    // A row's force lambda_r acts on its body-1 positions with the row's weights; the pressure
-    // of a position is its force over its tributary length on Gamma_c (lumped recovery).
-    const ConstraintRows &rows = contact_->rows;
-    for (int r = 0; r < rows.size(); ++r) {
-      const double gap = row_gap(r);
-      if (rows.own_position[r] >= 0) contact_gap[rows.own_position[r]] = gap;
-      for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p) contact_force[rows.position1[p]] += rows.weight1[p] * lambda[r];
-    }
-    if (g.quadratic_nonmortar)  // the middles and the ends own no row: their gaps pointwise
-      for (size_t pos = 0; pos < n; ++pos)
-        if (contact_gap[pos] == kNoGap && g.projection[pos].segment >= 0) contact_gap[pos] = pointwise_gap(pos);
-    if (!rows.pressure_of_position.empty()) {
-      // The weak rows' own pressure field (a quadratic body 1: mortar_operators.hpp). The lumped
-      // force over tributary measure would be it on straight evenly spaced edges, but a P2
-      // corner's tributary measure is h/6, and on graded or curved edges the forces that the
-      // neighbouring multipliers put on it make the lumped pressures alternate from corner to
-      // middle (measured: 3 to 5 % of p0 on two cylinders, docs/robustness.md).
-      for (size_t pos = 0; pos < n; ++pos)
-        for (auto &[r, c] : rows.pressure_of_position[pos]) contact_pressure[pos] += c * lambda[r];
-    } else {
-      for (size_t pos = 0; pos < n; ++pos)
-        // The tributary measure includes the thickness (or 2 pi r): a position whose contact edges
-        // all lie on the axis stands for no area; its force is reported, its pressure as 0.
-        if (g.tributary[pos] > 0) contact_pressure[pos] = contact_force[pos] / g.tributary[pos];
-    }
-  }
+  contact_results(lambda);
   progress(MC_LOG_PHASE, "recovery: displacements, reactions, stresses and contact results, %.3g s", now() - t_recovery);
   if (options.error_estimate) {
     const double t_estimate = now();

@@ -1,4 +1,4 @@
-// The scene a host registers (two bodies, materials, supports, loads, contact surfaces), the
+// The scene a host registers (bodies 0..N-1, materials, supports, loads, contact pairs), the
 // solve, and its results. ids are 0-based here; the C API layer handles the index base.
 #pragma once
 #include "mortarcontact.h"
@@ -46,13 +46,22 @@ struct Body {
   std::vector<double> nodal_force;      // per DOF
   std::vector<EdgeLoad> edge_loads;
   double body_force[2] = {0, 0};
-  bool has_contact = false;
-  std::vector<SurfaceSegment> contact;
-  std::vector<double> gap_offset;       // per node (body 1 only), added to g0; empty: none
   // results
   std::vector<double> u, reaction, stress, nodal_stress;  // u, reaction: per DOF
   std::vector<double> contact_load;     // per DOF: the contact forces on the body (K u = f + contact_load)
   std::vector<double> error_indicator;  // per cell, relative (mc_get_error_indicator); empty: not estimated
+};
+
+// A contact pair (mc_add_contact_pair; a two-body model's pair 1 is (0, 1)): the non-mortar
+// body carries the constraint and its multipliers (the paper's Omega^1), the mortar body is the
+// surface the gaps are measured against.
+struct ContactPair {
+  int nonmortar = 0, mortar = 1;
+  bool has_side[2] = {false, false};   // [0] the non-mortar side, [1] the mortar side
+  std::vector<SurfaceSegment> side[2];
+  std::vector<double> gap_offset;      // per non-mortar node, added to g0; empty: none
+  bool complete() const { return has_side[0] && has_side[1]; }
+  int body_of_side(int s) const { return s == 0 ? nonmortar : mortar; }
 };
 
 // What a solve keeps for the next one when only loads or prescribed values change.
@@ -67,28 +76,54 @@ struct BodySystem {
   std::vector<int> interface;      // DOFs (full numbering) in B, ordered last in the factor
 };
 
-struct ContactSystem {
+// The pairs of one non-mortar and one mortar body, as one surface on each side (contact_pairs.cpp:
+// a surface split into several pairs gives the unsplit answer, one multiplier per position):
+// its geometry and rows, whose positions and rows are numbered from first_position and
+// first_row in the stacked ContactSystem.
+struct ContactGroup {
+  int nonmortar = 0, mortar = 1;
+  std::vector<int> pairs;          // the model's pairs joined here, in order
   ContactGeometry geometry;
+  ConstraintRows rows;             // the group's own rows (its positions 0-based): its results
+  int first_position = 0, first_row = 0;
+  std::vector<double> gap_offset;  // per non-mortar node, its pairs' offsets; empty: none
+  int positions() const { return int(geometry.nodes.size()); }
+};
+
+struct ContactSystem {
+  std::vector<ContactGroup> groups;
+  // Every group's rows stacked (positions and auxiliary points renumbered across the groups):
+  // what the interface solvers read. A row's non-mortar weights (start1, position1, weight1) are
+  // kept; its mortar weights live in B.
   ConstraintRows rows;
-  // B per body as CSR over rows: (DOF, coefficient)
-  std::vector<int> b_start[2], b_dof[2];
-  std::vector<double> b_value[2];
+  std::vector<int> row_group, aux_group, position_group;
+  // Per model pair: its positions (a position of a joined group belongs to every pair whose
+  // non-mortar edges hold its node).
+  std::vector<std::vector<int>> pair_positions;
+  // B per body as CSR over rows: (DOF, coefficient); a body no row touches has empty rows.
+  std::vector<std::vector<int>> b_start, b_dof;
+  std::vector<std::vector<double>> b_value;
+  // The rows that touch each body (B_b's nonzero columns), increasing.
+  std::vector<std::vector<int>> body_rows;
   std::vector<double> s;           // q x q interface operator B K^+ B^T
-  // W_b = L_GG^-1 (P B_b^T)_G per body (rows: the factor's trailing interface unknowns, q
-  // columns): S = sum W_b^T W_b, B K^-1 f = sum W_b^T (L^-1 P f)_G, and the recovery needs
-  // only L^-1 P B^T lambda = [0; W_b lambda]: one forward and one backward solve per body.
-  std::vector<double> w[2];
-  int w_rows[2] = {0, 0};
+  // W_b = L_GG^-1 (P B_b^T)_G per body (rows: the factor's trailing interface unknowns; columns:
+  // the rows touching b, body_rows[b]): S = sum W_b^T W_b, B K^-1 f = sum W_b^T (L^-1 P f)_G, and
+  // the recovery needs only L^-1 P B^T lambda = [0; W_b lambda]: one forward and one backward
+  // solve per body. With many bodies W_b never holds a column of a pair b is not in.
+  std::vector<std::vector<double>> w;
+  std::vector<int> w_rows;
   std::vector<char> last_active;
-  // The sparse path (MC_INTERFACE_SPARSE; sparse_contact_path.cpp): its unknowns are body 1's
-  // free unknowns from column_offset[0], body 2's from column_offset[1], the mortar values w
-  // (2 per ConstraintRows::aux point) from aux_offset, the rigid-mode amplitudes from
-  // mode_offset; its rows the q contact rows, then two mortar equations per aux point.
+  // The sparse path (MC_INTERFACE_SPARSE; sparse_contact_path.cpp): its unknowns are each body's
+  // free unknowns from column_offset[b], the mortar values w (2 per ConstraintRows::aux point)
+  // from aux_offset, the rigid-mode amplitudes from mode_offset; its rows the q contact rows,
+  // then two mortar equations per aux point.
   bool sparse = false;
   SparseContactStructure structure;
   SparseContactSolver solver;
-  int column_offset[2] = {0, 0}, aux_offset = 0, mode_offset = 0, modes = 0;
+  std::vector<int> column_offset;
+  int aux_offset = 0, mode_offset = 0, modes = 0;
   std::vector<double> g;           // G = B R, q x modes, column-major (both paths' floating bodies)
+  const ContactGroup &group_of_position(int pos) const { return groups[position_group[pos]]; }
 };
 
 struct Options {
@@ -149,7 +184,8 @@ struct LoadSolve {
 
 class Model {
 public:
-  Body body[2];
+  std::vector<Body> body = std::vector<Body>(2);  // mc_set_body_count: 2 unless told
+  std::vector<ContactPair> pairs;                 // mc_add_contact_pair, or pair 1 by mc_set_contact
   Options options;
   Infos infos;
   bool plane_stress = false;
@@ -164,7 +200,10 @@ public:
   void values_changed() { solved = false; }
   void solve();
 
-  bool contact_active() const { return body[0].has_contact && body[1].has_contact; }
+  int n_bodies() const { return int(body.size()); }
+  // Whether any pair has both its sides (a contact solve), and whether body b is in one.
+  bool contact_active() const;
+  bool in_contact(int b) const;
   // The body's unknowns before supports: 2 per node (mesh body) or the host's equations.
   int dof_count(int b) const;
   // The unknown of a node's component (0: x, 1: y), or -1 if a host body has none for it.
@@ -174,22 +213,25 @@ public:
   // The weight of every integral: the thickness, or 2 pi r (line_measure.hpp).
   LineMeasure measure() const { return LineMeasure{axisymmetric, thickness}; }
   const ContactSystem *contact() const { return contact_.get(); }
-  // g0 of contact node pos (ContactGeometry order) with the host's offset (mc_set_gap_offset).
+  // g0 of contact position pos (the stacked positions of ContactSystem's groups) with the host's
+  // offset (mc_set_gap_offset, mc_set_pair_gap_offset).
   double initial_gap(size_t pos) const;
+  // The non-mortar node of position pos, and its group.
+  int position_node(size_t pos) const;
   // g0 of constraint row r with the host's offsets.
   double row_initial_gap(int r) const;
   double row_gap(int r) const;
   double pointwise_gap(size_t pos) const;
   void add_rigid_motion(int b, const std::vector<double> &alpha, std::vector<double> &u) const;
   double recovered_gap_residual(const std::vector<double> &lambda) const;
-  bool refine_solution(DualQp &qp, LoadSolve loads[2], std::vector<double> &lambda, std::vector<double> &alpha);
-  // Contact results per body-1 contact node (after a contact solve).
+  bool refine_solution(DualQp &qp, std::vector<LoadSolve> &loads, std::vector<double> &lambda, std::vector<double> &alpha);
+  // Contact results per contact position, the groups' stacked (after a contact solve).
   std::vector<double> contact_force, contact_gap, contact_pressure;
 
 private:
   int body_threads() const;
-  // Runs task(b, work) for both bodies: one after the other, or with two threads body 2's on a
-  // std::thread joined before returning. Exceptions are rethrown here, body 1's first.
+  // Runs task(b, work) for every body: one after the other, or with two threads the odd ones on
+  // a std::thread joined before returning. Exceptions are rethrown here, the first body's first.
   void for_each_body(const std::function<void(int, BodyWork &)> &task);
   std::unique_ptr<BodySystem> assemble_body(int b, BodyWork &work) const;
   void reduce_body(int b, BodyWork &work);
@@ -207,17 +249,26 @@ private:
   // The sparse path (sparse_contact_path.cpp). solve_sparse returns false if its active-set
   // iteration cycled (then fall_back_to_condensed).
   void build_sparse_structure();
-  bool solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::vector<double> &alpha);
+  bool solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lambda, std::vector<double> &alpha);
   // The condensed path (condensed_contact_path.cpp).
   void build_condensed(const std::function<void(int, BodyWork &)> &then);
-  void fall_back_to_condensed(LoadSolve loads[2]);
-  void solve_condensed(LoadSolve loads[2], DualQp &qp, std::vector<double> &lambda, std::vector<double> &alpha);
-  // Row r's share of the rigid modes, G = B R (q x modes, column-major), and e = R^T f_eff (body
-  // 1's modes, then body 2's).
+  void fall_back_to_condensed(std::vector<LoadSolve> &loads);
+  void solve_condensed(std::vector<LoadSolve> &loads, DualQp &qp, std::vector<double> &lambda, std::vector<double> &alpha);
+  // Row r's share of the rigid modes, G = B R (q x modes, column-major), and e = R^T f_eff (the
+  // bodies' modes in body order; mode_offset(b): where body b's start).
   std::vector<double> rigid_mode_rows() const;
-  std::vector<double> rigid_mode_loads(const LoadSolve loads[2]) const;
+  std::vector<double> rigid_mode_loads(const std::vector<LoadSolve> &loads) const;
+  int mode_offset(int b) const;
+  // The contact pairs joined into groups, their geometry and rows stacked, B per body
+  // (contact_pairs.cpp).
+  std::unique_ptr<ContactSystem> build_contact_system();
+  void check_contact_pairs() const;
+  void contact_results(const std::vector<double> &lambda);
   // "body 1: translation in y; ..." for the floating bodies, for both paths' messages.
   std::string free_modes_description() const;
+  // The rigid motions that no support and no pair can hold, "body 2: translation in x" ("" if
+  // the rows together hold every free mode).
+  std::string unheld_modes_description() const;
   // The active-set iterations' log messages (MC_LOG_ITERATION), for both paths; empty without a
   // log callback.
   DualQpObserver iteration_log(int q);
@@ -231,11 +282,11 @@ private:
   void effective_supports();
   // The supports a solve uses: the host's (mc_fix) and, in an axisymmetric model, u_r = 0 at
   // the nodes on the axis. Per DOF, like Body::prescribed and prescribed_value.
-  std::vector<char> fixed_[2];
-  std::vector<double> fixed_value_[2];
+  std::vector<std::vector<char>> fixed_;
+  std::vector<std::vector<double>> fixed_value_;
   int threads_ = 1;  // body threads of the solve under way
   long structure_version_ = 1, built_version_ = 0;
-  std::unique_ptr<BodySystem> system_[2];
+  std::vector<std::unique_ptr<BodySystem>> system_;
   std::unique_ptr<ContactSystem> contact_;
 };
 

@@ -68,10 +68,10 @@ void Model::check_condensed_fits() const {
   const ContactSystem &cs = *contact_;
   const double q = cs.rows.size();
   double bytes = 8 * q * q;
-  for (int b = 0; b < 2; ++b)
+  for (int b = 0; b < n_bodies(); ++b)
     if (system_[b]) {
-      const double ng = double(system_[b]->interface.size());
-      bytes += 8 * (ng * q + ng * ng);
+      const double ng = double(system_[b]->interface.size()), qb = double(cs.body_rows[b].size());
+      bytes += 8 * (ng * qb + ng * ng);
     }
   const double memory = memory_for(bytes);
   if (memory > 0 && bytes > memory)
@@ -90,14 +90,14 @@ bool Model::choose_interface_solver() {
   // factorizations, the triangular solve and rank-k update that form S, and the dense
   // active-set solves (about q^3).
   double flops = 0, nnz = 0, dense_block_flops = 0, dense_block_nnz = 0, extra_flops = 0, extra_bytes = 0;
-  for (int b = 0; b < 2; ++b) {
+  for (int b = 0; b < n_bodies(); ++b) {
     if (!system_[b]) continue;
-    const double ng = double(system_[b]->interface.size());
+    const double ng = double(system_[b]->interface.size()), qb = double(cs.body_rows[b].size());
     flops += system_[b]->cholesky.analysis_flops();
     nnz += double(system_[b]->cholesky.factor_nnz());
     dense_block_flops += ng * ng * ng / 3, dense_block_nnz += ng * ng / 2;
-    extra_flops += ng * ng * q + ng * q * q;
-    extra_bytes += 8 * (ng * q + ng * ng);
+    extra_flops += ng * ng * qb + ng * qb * qb;
+    extra_bytes += 8 * (ng * qb + ng * ng);
   }
   const double condensed_bytes = 8 * nnz + extra_bytes + 8 * q * q;
   const double condensed_flops = flops + extra_flops + q * q * q;
@@ -108,7 +108,7 @@ bool Model::choose_interface_solver() {
   const double sparse_bytes = 8 * std::max(nnz - dense_block_nnz, 0.05 * nnz);
   const double memory = memory_for(condensed_bytes);
   bool analysed = true;  // analyze_body skips an interface too long for the condensed path
-  for (int b = 0; b < 2; ++b)
+  for (int b = 0; b < n_bodies(); ++b)
     if (system_[b] && !system_[b]->cholesky.analyzed()) analysed = false;
   const bool condensed_fits = analysed && (memory <= 0 || condensed_bytes <= kCondensedMemoryShare * memory);
   if (options.interface_solver == MC_INTERFACE_CONDENSED) {
@@ -135,7 +135,7 @@ bool Model::choose_interface_solver() {
 
 std::string Model::free_modes_description() const {
   std::string text;
-  for (int b = 0; b < 2; ++b)
+  for (int b = 0; b < n_bodies(); ++b)
     if (system_[b] && system_[b]->rigid.count > 0)
       text += (text.empty() ? "" : "; ") + std::string("body ") + std::to_string(b + 1) + ": " + system_[b]->rigid.description;
   return text;
@@ -153,9 +153,9 @@ DualQpObserver Model::iteration_log(int q) {
   };
 }
 
-std::vector<double> Model::rigid_mode_loads(const LoadSolve loads[2]) const {
+std::vector<double> Model::rigid_mode_loads(const std::vector<LoadSolve> &loads) const {
   std::vector<double> e;
-  for (int b = 0; b < 2; ++b) {
+  for (int b = 0; b < n_bodies(); ++b) {
     if (!system_[b]) continue;
     const RigidModes &rm = system_[b]->rigid;
     const int ndof = system_[b]->stiffness.n;
@@ -172,7 +172,7 @@ std::vector<double> Model::rigid_mode_rows() const {
   const ContactSystem &cs = *contact_;
   const int q = cs.rows.size();
   std::vector<double> g;
-  for (int b = 0; b < 2; ++b) {
+  for (int b = 0; b < n_bodies(); ++b) {
     if (!system_[b]) continue;
     const RigidModes &rm = system_[b]->rigid;
     const int ndof = system_[b]->stiffness.n;
@@ -199,7 +199,8 @@ void Model::build_sparse_structure() {
   st = SparseContactStructure{};
   int offset = 0;
   cs.modes = 0;
-  for (int b = 0; b < 2; ++b) {
+  cs.column_offset.assign(body.size(), 0);
+  for (int b = 0; b < n_bodies(); ++b) {
     cs.column_offset[b] = offset;
     if (!system_[b]) continue;
     if (system_[b]->reduced.n > 0) st.blocks.push_back(&system_[b]->reduced), st.block_offset.push_back(offset);
@@ -234,11 +235,13 @@ void Model::build_sparse_structure() {
       if (k >= 0) entries.emplace_back(cs.column_offset[b] + k, cs.b_value[b][p]);
     }
   };
-  // The contact rows: body 1's part, body 2's (its weights, or -n . w_a), the rigid modes'.
+  // The contact rows: the non-mortar body's part, the mortar body's (its weights, or -n . w_a),
+  // the rigid modes'.
   for (int r = 0; r < q; ++r) {
-    add_body_entries(0, r);
+    const ContactGroup &group = cs.groups[cs.row_group[r]];
+    add_body_entries(group.nonmortar, r);
     if (rows.aux[r] < 0) {
-      add_body_entries(1, r);
+      add_body_entries(group.mortar, r);
     } else {
       const int a = rows.aux[r];
       entries.emplace_back(cs.aux_offset + 2 * a, -rows.normal[r].x);
@@ -248,19 +251,22 @@ void Model::build_sparse_structure() {
       if (cs.g[size_t(c) * q + r] != 0) entries.emplace_back(cs.mode_offset + c, cs.g[size_t(c) * q + r]);
     add_row(true);
   }
-  // The mortar equations D w - R u2 = 0, per component (ConstraintRows::aux).
-  const BodySystem &body2 = *system_[1];
-  for (int a = 0; a < rows.aux_count; ++a)
+  // The mortar equations D w - R u2 = 0, per component (ConstraintRows::aux), u2 the mortar
+  // body's of the point's group.
+  for (int a = 0; a < rows.aux_count; ++a) {
+    const int mortar = cs.groups[cs.aux_group[a]].mortar;
+    const BodySystem &body2 = *system_[mortar];
     for (int c = 0; c < 2; ++c) {
       for (int p = rows.aux_d_start[a]; p < rows.aux_d_start[a + 1]; ++p)
         entries.emplace_back(cs.aux_offset + 2 * rows.aux_d_point[p] + c, rows.aux_d[p]);
       for (int p = rows.aux_r_start[a]; p < rows.aux_r_start[a + 1]; ++p) {
-        const int dof = dof_of(1, rows.aux_r_node[p], c);  // (a host body's restrained freedom: none)
+        const int dof = dof_of(mortar, rows.aux_r_node[p], c);  // (a host body's restrained freedom: none)
         const int k = dof >= 0 ? body2.solve_index[dof] : -1;
-        if (k >= 0) entries.emplace_back(cs.column_offset[1] + k, -rows.aux_r[p]);
+        if (k >= 0) entries.emplace_back(cs.column_offset[mortar] + k, -rows.aux_r[p]);
       }
       add_row(false);
     }
+  }
   {
     Stopwatch watch(infos.t_analysis);
     cs.solver.analyze(st, options.ordering);
@@ -277,7 +283,7 @@ void Model::build_sparse_structure() {
            st.n_unknowns, 2 * rows.aux_count, cs.modes, st.rows(), cs.solver.factor_nnz(), now() - start);
 }
 
-bool Model::solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::vector<double> &alpha) {
+bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lambda, std::vector<double> &alpha) {
   ContactSystem &cs = *contact_;
   const ConstraintRows &rows = cs.rows;
   const SparseContactStructure &st = cs.structure;
@@ -287,7 +293,7 @@ bool Model::solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::v
   // 1. Loads F = (f_1, f_2, 0, R^T f) and the rows' right-hand sides: the initial gaps less
   //    what the prescribed values already close; the mortar equations' share of them.
   std::vector<double> load(st.n_unknowns, 0.0), target(nrows, 0.0), e(k, 0.0);
-  for (int b = 0; b < 2; ++b) {
+  for (int b = 0; b < n_bodies(); ++b) {
     if (!system_[b]) continue;
     const BodySystem &sys = *system_[b];
     for (size_t i = 0; i < sys.solve_dofs.size(); ++i) load[cs.column_offset[b] + i] = loads[b].lifted[sys.solve_dofs[i]];
@@ -296,8 +302,9 @@ bool Model::solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::v
   for (int c = 0; c < k; ++c) load[cs.mode_offset + c] = e[c];
   for (int r = 0; r < q; ++r) {
     double g = row_initial_gap(r);
-    for (int b = 0; b < 2; ++b) {
-      if (b == 1 && rows.aux[r] >= 0) continue;  // w carries body 2's prescribed values
+    const int mortar = cs.groups[cs.row_group[r]].mortar;
+    for (int b = 0; b < n_bodies(); ++b) {
+      if (b == mortar && rows.aux[r] >= 0) continue;  // w carries the mortar body's prescribed values
       for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) {
         const int dof = cs.b_dof[b][p];
         if (fixed_[b][dof]) g -= cs.b_value[b][p] * fixed_value_[b][dof];
@@ -305,15 +312,17 @@ bool Model::solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::v
     }
     target[r] = g;
   }
-  for (int a = 0; a < rows.aux_count; ++a)
+  for (int a = 0; a < rows.aux_count; ++a) {
+    const int mortar = cs.groups[cs.aux_group[a]].mortar;
     for (int c = 0; c < 2; ++c) {
       double t = 0;
       for (int p = rows.aux_r_start[a]; p < rows.aux_r_start[a + 1]; ++p) {
-        const int dof = dof_of(1, rows.aux_r_node[p], c);
-        if (dof >= 0 && fixed_[1][dof]) t += rows.aux_r[p] * fixed_value_[1][dof];
+        const int dof = dof_of(mortar, rows.aux_r_node[p], c);
+        if (dof >= 0 && fixed_[mortar][dof]) t += rows.aux_r[p] * fixed_value_[mortar][dof];
       }
       target[q + 2 * a + c] = t;
     }
+  }
   // 2. Floating bodies: loads that no pushing contact forces can balance have no solution.
   if (k > 0) {
     DualQp balance;
@@ -353,7 +362,7 @@ bool Model::solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::v
     if (error.status() != MC_ERROR_SINGULAR) throw;
     // The unknown that failed, named in the body's terms: a host body's equation.
     const int failed = cs.solver.failed_unknown();
-    for (int b = 0; b < 2 && failed >= 0; ++b) {
+    for (int b = 0; b < n_bodies() && failed >= 0; ++b) {
       if (!system_[b] || !body[b].host) continue;
       const int local = failed - cs.column_offset[b];
       if (local >= 0 && local < int(system_[b]->solve_dofs.size()))
@@ -375,10 +384,12 @@ bool Model::solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::v
            "active-set solve (sparse): %s, %d iterations, %d factorizations, %d conjugate-gradient steps, residual %.3g, %.3g s",
            result.outcome == SparseContactOutcome::solved ? "solved" : "not converged", result.iterations,
            result.factorizations, result.cg_steps, result.violation, now() - start);
-  if (result.outcome == SparseContactOutcome::modes_not_held)
+  if (result.outcome == SparseContactOutcome::modes_not_held) {
+    const std::string unheld = unheld_modes_description();
     fail(MC_ERROR_SINGULAR,
          "contact cannot hold the free rigid motion (%s): the contact normals do not restrain it; add supports",
-         free_modes_description().c_str());
+         (unheld.empty() ? free_modes_description() : unheld).c_str());
+  }
   if (result.outcome == SparseContactOutcome::not_converged && result.cycled) return false;
   if (result.outcome == SparseContactOutcome::not_converged)
     fail(MC_ERROR_NOT_CONVERGED,
@@ -388,7 +399,7 @@ bool Model::solve_sparse(LoadSolve loads[2], std::vector<double> &lambda, std::v
   // 4. The answer in the model's terms.
   lambda.assign(result.lambda.begin(), result.lambda.begin() + q);
   alpha.assign(result.x.begin() + cs.mode_offset, result.x.begin() + cs.mode_offset + k);
-  for (int b = 0; b < 2; ++b) {
+  for (int b = 0; b < n_bodies(); ++b) {
     if (!system_[b]) continue;
     const BodySystem &sys = *system_[b];
     loads[b].v.assign(sys.stiffness.n, 0.0);
