@@ -125,11 +125,6 @@ std::unique_ptr<ContactSystem> Model::build_contact_system() {
     for (int p : group.pairs) {
       const ContactPair &pair = pairs[p];
       for (int s = 0; s < 2; ++s) side[s].insert(side[s].end(), pair.side[s].begin(), pair.side[s].end());
-      if (!pair.gap_offset.empty()) {
-        if (group.gap_offset.empty()) group.gap_offset.assign(body[group.nonmortar].mesh.n_nodes(), 0.0);
-        for (size_t i = 0; i < pair.gap_offset.size(); ++i)
-          if (pair.gap_offset[i] != 0) group.gap_offset[i] = pair.gap_offset[i];
-      }
     }
     if (group.pairs.size() > 1) {  // a mortar edge given by two pairs is the same edge: kept once
       std::sort(side[1].begin(), side[1].end(), [](const SurfaceSegment &x, const SurfaceSegment &y) {
@@ -324,6 +319,21 @@ std::string Model::unheld_modes_description() const {
     }
   }
   return text;
+}
+
+// The host's gap offsets (mc_set_gap_offset, mc_set_pair_gap_offset) per group, at every solve:
+// they change without a rebuild. A node of two joined pairs takes the offset one of them gives.
+void Model::merge_gap_offsets() {
+  for (ContactGroup &group : contact_->groups) {
+    group.gap_offset.clear();
+    for (int p : group.pairs) {
+      const ContactPair &pair = pairs[p];
+      if (pair.gap_offset.empty()) continue;
+      if (group.gap_offset.empty()) group.gap_offset.assign(body[group.nonmortar].mesh.n_nodes(), 0.0);
+      for (size_t i = 0; i < pair.gap_offset.size(); ++i)
+        if (pair.gap_offset[i] != 0) group.gap_offset[i] = pair.gap_offset[i];
+    }
+  }
 }
 
 // Contact results per position, group by group: a row's force lambda_r acts on its non-mortar

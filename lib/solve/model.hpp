@@ -264,6 +264,7 @@ private:
   std::unique_ptr<ContactSystem> build_contact_system();
   void check_contact_pairs() const;
   void contact_results(const std::vector<double> &lambda);
+  void merge_gap_offsets();
   // "body 1: translation in y; ..." for the floating bodies, for both paths' messages.
   std::string free_modes_description() const;
   // The rigid motions that no support and no pair can hold, "body 2: translation in x" ("" if
