@@ -52,7 +52,7 @@ struct SolveError : std::runtime_error {
 void usage(FILE *to) {
   std::fprintf(to,
                "usage: mortarcontact-run [--quiet | --verbose] [--gmsh PATH] scene.json\n"
-               "  Solves the frictionless contact of two elastic bodies described by scene.json\n"
+               "  Solves the frictionless contact of elastic bodies described by scene.json\n"
                "  (format: docs/scene_format.md) with mortarcontact %s.\n"
                "  --quiet      no progress messages on stderr\n"
                "  --verbose    also each active-set iteration\n"
@@ -198,6 +198,8 @@ void apply_loads(mc_model *m, int body, const BodyMesh &mesh, const Scene &scene
           "mc_set_body_force");
 }
 
+// The contact surfaces of a scene without "pairs": bodies[0].contact and bodies[1].contact, set
+// with the two-body calls (pair 1, body 1 on body 2), as before pairs existed.
 void set_contact(mc_model *m, int body, const BodyMesh &mesh, const Scene &scene) {
   const Body &spec = scene.bodies[body - 1];
   const std::string key = spec.key + ".contact";
@@ -212,6 +214,45 @@ void set_contact(mc_model *m, int body, const BodyMesh &mesh, const Scene &scene
   const std::vector<double> offsets(nodes.size(), spec.gap_offset);
   setup(m, mc_set_gap_offset(m, int(nodes.size()), nodes.data(), offsets.data()), scene, spec.key + ".gap_offset",
         "mc_set_gap_offset");
+}
+
+// Every node of edges (and their middles), once.
+std::vector<int> surface_nodes(const std::vector<int> &edges, const std::vector<int> &mids) {
+  std::vector<int> nodes(edges);
+  nodes.insert(nodes.end(), mids.begin(), mids.end());
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+// The scene's "pairs": each made in order (the library numbers them 1, 2, ... as the scene
+// does), its two surfaces, its gap offset on every node of the non-mortar surface.
+void set_pairs(mc_model *m, const std::vector<BodyMesh> &bodies, const Scene &scene) {
+  for (const Pair &p : scene.pairs) {
+    int number = 0;
+    setup(m, mc_add_contact_pair(m, p.nonmortar, p.mortar, &number), scene, p.key, "mc_add_contact_pair");
+    if (number != p.number)
+      throw SceneError(scene.path + ": " + p.key + ": the library numbered this pair " + std::to_string(number) +
+                       ", expected " + std::to_string(p.number));
+    std::vector<int> nonmortar_mids;
+    for (int side = 0; side < 2; ++side) {
+      const int body = side == 0 ? p.nonmortar : p.mortar;
+      const std::string &key = side == 0 ? p.nonmortar_key : p.mortar_key;
+      const std::string &group = side == 0 ? p.nonmortar_surface : p.mortar_surface;
+      std::vector<int> mids;
+      const std::vector<int> edges = at_key(scene, key + " (pair " + std::to_string(p.number) + ", body " +
+                                                       std::to_string(body) + ")",
+                                            [&] { return group_edges(bodies[size_t(body - 1)], group, &mids); });
+      setup(m, mc_set_pair_surface(m, number, body, int(edges.size() / 2), edges.data()), scene, key,
+            "mc_set_pair_surface");
+      if (side == 0 && p.has_gap_offset) {
+        const std::vector<int> nodes = surface_nodes(edges, mids);
+        const std::vector<double> offsets(nodes.size(), p.gap_offset);
+        setup(m, mc_set_pair_gap_offset(m, number, int(nodes.size()), nodes.data(), offsets.data()), scene,
+              p.gap_offset_key, "mc_set_pair_gap_offset");
+      }
+    }
+  }
 }
 
 void set_options(mc_model *m, const Scene &scene) {
@@ -244,12 +285,34 @@ void check(const mc_model *m, mc_status status, const char *call) {
   if (status != MC_OK) throw SolveError(std::string(call) + " failed: " + mc_status_string(status) + ": " + mc_errmsg(m));
 }
 
-// Body 1's contact nodes and what the solve found there.
+// A pair's contact positions (nodes of its non-mortar body) and what the solve found there.
 struct ContactResults {
+  int pair = 1, nonmortar = 1, mortar = 2;
   std::vector<int> nodes;
   std::vector<double> pressure, force, gap, normal;  // normal: 2 per node
 };
 
+// A pair of the scene's "pairs" list, through the pair getters.
+ContactResults pair_results(const mc_model *m, const Pair &p) {
+  ContactResults r;
+  r.pair = p.number, r.nonmortar = p.nonmortar, r.mortar = p.mortar;
+  mc_int n = 0;
+  check(m, mc_get_pair_contact_count(m, p.number, &n), "mc_get_pair_contact_count");
+  r.nodes.resize(size_t(n));
+  r.pressure.resize(size_t(n));
+  r.force.resize(size_t(n));
+  r.gap.resize(size_t(n));
+  r.normal.resize(2 * size_t(n));
+  if (n == 0) return r;
+  check(m, mc_get_pair_contact_nodes(m, p.number, r.nodes.data()), "mc_get_pair_contact_nodes");
+  check(m, mc_get_pair_contact(m, p.number, MC_CONTACT_PRESSURE, r.pressure.data()), "mc_get_pair_contact");
+  check(m, mc_get_pair_contact(m, p.number, MC_CONTACT_FORCE, r.force.data()), "mc_get_pair_contact");
+  check(m, mc_get_pair_contact(m, p.number, MC_CONTACT_GAP, r.gap.data()), "mc_get_pair_contact");
+  check(m, mc_get_pair_contact(m, p.number, MC_CONTACT_NORMAL, r.normal.data()), "mc_get_pair_contact");
+  return r;
+}
+
+// Pair 1 of a scene without "pairs": body 1's contact nodes, through the two-body getters.
 ContactResults contact_results(const mc_model *m) {
   ContactResults r;
   mc_int n = 0;
@@ -268,6 +331,21 @@ ContactResults contact_results(const mc_model *m) {
   return r;
 }
 
+// Every pair's results, in the pairs' order.
+std::vector<ContactResults> all_contact_results(const mc_model *m, const Scene &scene) {
+  if (!scene.has_pairs) return {contact_results(m)};
+  std::vector<ContactResults> all;
+  for (const Pair &p : scene.pairs) all.push_back(pair_results(m, p));
+  return all;
+}
+
+// The contact force on the pair's non-mortar body: lambda_j along -n_j.
+void contact_resultant(const ContactResults &r, double resultant[2]) {
+  resultant[0] = resultant[1] = 0;
+  for (size_t j = 0; j < r.nodes.size(); ++j)
+    for (int c = 0; c < 2; ++c) resultant[c] -= r.force[j] * r.normal[2 * j + size_t(c)];
+}
+
 // The path of the contact solve that ran (MC_INFO_INTERFACE_SOLVER; 0 without contact).
 const char *interface_solver_name(int64_t value) {
   switch (value) {
@@ -277,7 +355,7 @@ const char *interface_solver_name(int64_t value) {
   }
 }
 
-void print_solve_summary(const mc_model *m, const Scene &scene, const ContactResults &r) {
+void print_solve_summary(const mc_model *m, const Scene &scene, const std::vector<ContactResults> &all) {
   int64_t dofs = 0, iterations = 0, active = 0, interface_solver = 0;
   double total = 0, equilibrium = 0, complementarity = 0;
   check(m, mc_get_info_int(m, MC_INFO_DOFS, &dofs), "mc_get_info_int");
@@ -287,11 +365,10 @@ void print_solve_summary(const mc_model *m, const Scene &scene, const ContactRes
   check(m, mc_get_info_real(m, MC_INFO_TIME_TOTAL, &total), "mc_get_info_real");
   check(m, mc_get_info_real(m, MC_INFO_EQUILIBRIUM, &equilibrium), "mc_get_info_real");
   check(m, mc_get_info_real(m, MC_INFO_COMPLEMENTARITY, &complementarity), "mc_get_info_real");
-  double resultant[2] = {0, 0};  // the contact force on body 1: lambda_j along -n_j
-  for (size_t j = 0; j < r.nodes.size(); ++j)
-    for (int c = 0; c < 2; ++c) resultant[c] -= r.force[j] * r.normal[2 * j + size_t(c)];
+  size_t positions = 0;
+  for (const ContactResults &r : all) positions += r.nodes.size();
   std::printf("solved: %lld DOFs, %lld active-set iterations, %lld of %zu contact nodes active, %.3f s\n",
-              (long long)dofs, (long long)iterations, (long long)active, r.nodes.size(), total);
+              (long long)dofs, (long long)iterations, (long long)active, positions, total);
   if (interface_solver != 0)  // which path ran, and whether the scene forced it
     std::printf("  interface solver: %s (%s)\n", interface_solver_name(interface_solver),
                 scene.solver.interface_solver == MC_INTERFACE_AUTO ? "chosen automatically" : "set by the scene");
@@ -299,18 +376,39 @@ void print_solve_summary(const mc_model *m, const Scene &scene, const ContactRes
   if (scene.solver.error_estimate) {
     double estimate = 0;
     check(m, mc_get_info_real(m, MC_INFO_ERROR_ESTIMATE, &estimate), "mc_get_info_real");
-    std::printf("  error estimate: %.3g %% (relative, energy norm of both bodies)\n", 100 * estimate);
+    std::printf("  error estimate: %.3g %% (relative, energy norm of %s)\n", 100 * estimate,
+                scene.bodies.size() == 2 ? "both bodies" : "all bodies");
   }
-  std::printf("  contact force on body 1: (%.10g, %.10g)\n", resultant[0], resultant[1]);
+  double resultant[2];
+  if (!scene.has_pairs) {
+    contact_resultant(all[0], resultant);
+    std::printf("  contact force on body 1: (%.10g, %.10g)\n", resultant[0], resultant[1]);
+    return;
+  }
+  for (const ContactResults &r : all) {
+    size_t loaded = 0;
+    for (double p : r.pressure) loaded += p > 0;
+    contact_resultant(r, resultant);
+    std::printf("  pair %d (body %d on body %d): %zu contact positions, %zu with pressure > 0, contact force on "
+                "body %d: (%.10g, %.10g)\n",
+                r.pair, r.nonmortar, r.mortar, r.nodes.size(), loaded, r.nonmortar, resultant[0], resultant[1]);
+  }
 }
 
-void write_pressure_csv(const std::string &path, const BodyMesh &body1, const ContactResults &r) {
+// x,y,pressure,gap per contact node of body 1; with "pairs", a first column pair and the rows
+// of every pair, pair by pair (x, y on the pair's non-mortar body).
+void write_pressure_csv(const std::string &path, const std::vector<BodyMesh> &bodies,
+                        const std::vector<ContactResults> &all, bool pair_column) {
   FILE *f = std::fopen(path.c_str(), "w");
   if (!f) throw SolveError("cannot write the pressure CSV " + path + ": " + std::strerror(errno));
-  std::fprintf(f, "x,y,pressure,gap\n");
-  for (size_t j = 0; j < r.nodes.size(); ++j) {
-    const size_t i = size_t(r.nodes[j]);
-    std::fprintf(f, "%.17g,%.17g,%.17g,%.17g\n", body1.xy[2 * i], body1.xy[2 * i + 1], r.pressure[j], r.gap[j]);
+  std::fprintf(f, pair_column ? "pair,x,y,pressure,gap\n" : "x,y,pressure,gap\n");
+  for (const ContactResults &r : all) {
+    const BodyMesh &body = bodies[size_t(r.nonmortar - 1)];
+    for (size_t j = 0; j < r.nodes.size(); ++j) {
+      const size_t i = size_t(r.nodes[j]);
+      if (pair_column) std::fprintf(f, "%d,", r.pair);
+      std::fprintf(f, "%.17g,%.17g,%.17g,%.17g\n", body.xy[2 * i], body.xy[2 * i + 1], r.pressure[j], r.gap[j]);
+    }
   }
   if (std::fclose(f) != 0) throw SolveError("cannot write the pressure CSV " + path);
 }
@@ -440,8 +538,9 @@ ModelPtr create_model() {
 
 // Reads the meshes (each file once) and takes each body out of its file.
 void load_meshes(const Scene &scene, const Options &options, std::map<std::string, GmshMesh> &files,
-                 BodyMesh bodies[2]) {
-  for (int b = 0; b < 2; ++b) {
+                 std::vector<BodyMesh> &bodies) {
+  bodies.resize(scene.bodies.size());
+  for (int b = 0; b < int(scene.bodies.size()); ++b) {
     const Body &spec = scene.bodies[b];
     auto it = files.find(spec.mesh_path);
     if (it == files.end()) {
@@ -457,23 +556,26 @@ void load_meshes(const Scene &scene, const Options &options, std::map<std::strin
   }
 }
 
-void set_up(mc_model *m, const Scene &scene, const BodyMesh bodies[2]) {
+void set_up(mc_model *m, const Scene &scene, const std::vector<BodyMesh> &bodies) {
   set_options(m, scene);
-  for (int b = 1; b <= 2; ++b) {
-    set_mesh(m, b, bodies[b - 1], scene);
-    apply_supports(m, b, bodies[b - 1], scene);
-    apply_loads(m, b, bodies[b - 1], scene);
-    set_contact(m, b, bodies[b - 1], scene);
+  const int n = int(scene.bodies.size());
+  if (n != 2) setup(m, mc_set_body_count(m, n), scene, "bodies", "mc_set_body_count");
+  for (int b = 1; b <= n; ++b) {
+    set_mesh(m, b, bodies[size_t(b - 1)], scene);
+    apply_supports(m, b, bodies[size_t(b - 1)], scene);
+    apply_loads(m, b, bodies[size_t(b - 1)], scene);
+    if (!scene.has_pairs) set_contact(m, b, bodies[size_t(b - 1)], scene);
   }
+  if (scene.has_pairs) set_pairs(m, bodies, scene);
 }
 
 // One solve of the scene on its meshes: the whole of a plain run, one step of an adaptive one.
 struct Solution {
   std::map<std::string, GmshMesh> files;  // the bodies point into these
-  BodyMesh bodies[2];
+  std::vector<BodyMesh> bodies;
   ModelPtr model = create_model();
-  ContactResults results;
-  std::vector<double> eta[2];  // the cells' error indicators (empty without the estimate)
+  std::vector<ContactResults> results;  // per pair
+  std::vector<std::vector<double>> eta;  // per body, the cells' error indicators (empty without the estimate)
   double estimate = 0;         // MC_INFO_ERROR_ESTIMATE
 };
 
@@ -487,10 +589,11 @@ std::unique_ptr<Solution> solve(const Scene &scene, const Options &options) {
         "mc_set_log_callback");
   progress(options, "solving");
   check(m, mc_solve(m), "mc_solve");
-  s->results = contact_results(m);
+  s->results = all_contact_results(m, scene);
+  s->eta.resize(s->bodies.size());
   if (scene.solver.error_estimate) {
     check(m, mc_get_info_real(m, MC_INFO_ERROR_ESTIMATE, &s->estimate), "mc_get_info_real");
-    for (int b = 0; b < 2; ++b) {
+    for (int b = 0; b < int(s->bodies.size()); ++b) {
       s->eta[b].resize(size_t(s->bodies[b].n_cells()));
       check(m, mc_get_error_indicator(m, b + 1, s->eta[b].data()), "mc_get_error_indicator");
     }
@@ -499,18 +602,22 @@ std::unique_ptr<Solution> solve(const Scene &scene, const Options &options) {
 }
 
 // The VTU files mc_write_vtu writes for `path`, and the bodies (0-based) each holds.
-std::vector<std::pair<std::string, std::vector<int>>> vtu_files(const std::string &path) {
-  if (!ends_with(path, ".pvd")) return {{path, {0, 1}}};
+std::vector<std::pair<std::string, std::vector<int>>> vtu_files(const std::string &path, int n_bodies) {
+  std::vector<int> all;
+  for (int b = 0; b < n_bodies; ++b) all.push_back(b);
+  if (!ends_with(path, ".pvd")) return {{path, all}};
   const std::string stem = stem_of(path, ".pvd");
-  return {{stem + "_body1.vtu", {0}}, {stem + "_body2.vtu", {1}}};
+  std::vector<std::pair<std::string, std::vector<int>>> files;
+  for (int b = 0; b < n_bodies; ++b) files.push_back({stem + "_body" + std::to_string(b + 1) + ".vtu", {b}});
+  return files;
 }
 
 // ParaView output with the error indicators as cell data "error_indicator".
 void write_vtu(const Solution &s, const std::string &path) {
   make_parent_directory(path);
   check(s.model.get(), mc_write_vtu(s.model.get(), path.c_str()), "mc_write_vtu");
-  if (s.eta[0].empty()) return;
-  for (const auto &file : vtu_files(path)) {
+  if (s.eta.empty() || s.eta[0].empty()) return;
+  for (const auto &file : vtu_files(path, int(s.bodies.size()))) {
     std::vector<double> values;
     for (int b : file.second) values.insert(values.end(), s.eta[b].begin(), s.eta[b].end());
     try {
@@ -523,13 +630,13 @@ void write_vtu(const Solution &s, const std::string &path) {
 
 // A ParaView collection of the VTU files of mc_write_vtu's outputs `step_vtus`, the index in the
 // list as time: for every step of an adaptive run, ParaView's time controls step through the meshes.
-void write_collection(const std::string &path, const std::vector<std::string> &step_vtus) {
+void write_collection(const std::string &path, const std::vector<std::string> &step_vtus, int n_bodies) {
   FILE *f = std::fopen(path.c_str(), "w");
   if (!f) throw SolveError("cannot write " + path + ": " + std::strerror(errno));
   std::fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
                   "  <Collection>\n");
   for (size_t k = 0; k < step_vtus.size(); ++k)
-    for (const auto &file : vtu_files(step_vtus[k]))
+    for (const auto &file : vtu_files(step_vtus[k], n_bodies))
       std::fprintf(f, "    <DataSet timestep=\"%zu\" group=\"\" part=\"%d\" file=\"%s\"/>\n", k,
                    file.second.size() == 1 ? file.second[0] : 0, file_name(file.first).c_str());
   std::fprintf(f, "  </Collection>\n</VTKFile>\n");
@@ -542,7 +649,7 @@ void write_outputs(const Solution &s, const Scene &scene, const std::string &las
   if (!scene.output.vtu.empty() && !last_step_vtu.empty()) {
     make_parent_directory(scene.output.vtu);
     if (ends_with(scene.output.vtu, ".pvd")) {
-      write_collection(scene.output.vtu, {last_step_vtu});
+      write_collection(scene.output.vtu, {last_step_vtu}, int(scene.bodies.size()));
     } else {
       std::error_code error;
       std::filesystem::copy_file(last_step_vtu, scene.output.vtu, std::filesystem::copy_options::overwrite_existing,
@@ -556,7 +663,7 @@ void write_outputs(const Solution &s, const Scene &scene, const std::string &las
   }
   if (!scene.output.pressure_csv.empty()) {
     make_parent_directory(scene.output.pressure_csv);
-    write_pressure_csv(scene.output.pressure_csv, s.bodies[0], s.results);
+    write_pressure_csv(scene.output.pressure_csv, s.bodies, s.results, scene.has_pairs);
     std::printf("wrote %s\n", scene.output.pressure_csv.c_str());
   }
 }
@@ -564,7 +671,7 @@ void write_outputs(const Solution &s, const Scene &scene, const std::string &las
 void print_results(const Solution &s, const Scene &scene) {
   print_solve_summary(s.model.get(), scene, s.results);
   if (scene.hertz.enabled)
-    print_hertz(scene, measure_hertz(s.bodies[0], s.results, scene.thickness, scene.plane == MC_AXISYMMETRIC));
+    print_hertz(scene, measure_hertz(s.bodies[0], s.results[0], scene.thickness, scene.plane == MC_AXISYMMETRIC));
 }
 
 // ---- adaptive refinement ------------------------------------------------------------------
@@ -671,7 +778,7 @@ int run_adaptive(const Scene &scene, const Options &options) {
     row.dofs = dofs;
     check(m, mc_get_info_real(m, MC_INFO_TIME_TOTAL, &row.solve_seconds), "mc_get_info_real");
     if (scene.hertz.enabled)
-      row.p0_error = measure_hertz(s->bodies[0], s->results, scene.thickness, scene.plane == MC_AXISYMMETRIC).p0 /
+      row.p0_error = measure_hertz(s->bodies[0], s->results[0], scene.thickness, scene.plane == MC_AXISYMMETRIC).p0 /
                          hertz_reference(scene).p0 - 1;
     if (step > 0 && predicted_cells > 0) {  // how Gmsh took the sizes: correct the next request
       const double ratio = std::sqrt(double(row.cells) / predicted_cells);
@@ -680,7 +787,7 @@ int run_adaptive(const Scene &scene, const Options &options) {
     if (!vtu.empty()) {
       step_vtus.push_back(vtu_stem + "_step" + std::to_string(step) + vtu_ext);
       write_vtu(*s, step_vtus.back());
-      write_collection(vtu_stem + "_steps.pvd", step_vtus);
+      write_collection(vtu_stem + "_steps.pvd", step_vtus, int(scene.bodies.size()));
     }
     row.total_seconds = seconds_since(start);
     rows.push_back(row);
@@ -693,9 +800,9 @@ int run_adaptive(const Scene &scene, const Options &options) {
       stop = "the target was not reached in adaptive.max_steps = " + std::to_string(adaptive.max_steps) +
              (adaptive.max_steps == 1 ? " refinement step" : " refinement steps");
     } else {
-      if (step == 0) calibration = calibrate(s->bodies, step_scene, adaptive, gmsh, mesh_stem, options, &probe_seconds);
+      if (step == 0) calibration = calibrate(s->bodies.data(), step_scene, adaptive, gmsh, mesh_stem, options, &probe_seconds);
       // The next mesh's sizes, from this step's indicators.
-      const SizeField field = make_size_field(s->bodies, s->eta, adaptive, calibration);
+      const SizeField field = make_size_field(s->bodies.data(), s->eta.data(), adaptive, calibration);
       predicted_cells = field.predicted_cells;
       predicted_dofs = double(row.dofs) * field.predicted_cells / double(field.cells);
       progress(options, "step %d: size field: %d of %d cells refined (%d by the limit %g), %d coarsened; "
@@ -710,7 +817,7 @@ int run_adaptive(const Scene &scene, const Options &options) {
       } else {
         const std::string next = mesh_stem + "_step" + std::to_string(step + 1);
         try {
-          write_size_view(next + "_size.pos", s->bodies, field);
+          write_size_view(next + "_size.pos", s->bodies.data(), field);
           write_step_geo(next + ".geo", adaptive.geo_path, next + "_size.pos",
                          "step " + std::to_string(step + 1) + ", sized by step " + std::to_string(step) +
                              "'s error indicators.");

@@ -70,6 +70,7 @@ class Value {
   }
 
   bool has(const char *name) const { return j_.contains(name); }
+  bool is_integer() const { return j_.is_number_integer(); }
 
   Value at(const char *name) const {
     if (!has(name)) child(name).fail("missing (required)");
@@ -254,7 +255,7 @@ Load parse_load(const Value &v) {
   return load;
 }
 
-Body parse_body(const Value &v, int index, const std::string &base_dir) {
+Body parse_body(const Value &v, int index, const std::string &base_dir, bool with_pairs) {
   v.expect_object({"mesh", "domain", "material", "supports", "loads", "contact", "gap_offset"});
   Body b;
   b.key = v.key();
@@ -271,6 +272,13 @@ Body parse_body(const Value &v, int index, const std::string &base_dir) {
     for (const Value &s : v.child("supports").items()) b.supports.push_back(parse_support(s));
   if (v.has("loads"))
     for (const Value &l : v.child("loads").items()) b.loads.push_back(parse_load(l));
+  if (with_pairs) {  // the surfaces are the pairs'
+    for (const char *key : {"contact", "gap_offset"})
+      if (v.has(key))
+        v.child(key).fail(std::string("the scene lists \"pairs\": name the contact surfaces and gap offsets there (") +
+                          "pairs[].nonmortar_surface, mortar_surface, gap_offset), not in the bodies");
+    return b;
+  }
   b.contact = v.at("contact").string();
   if (v.has("gap_offset")) {
     if (index != 0) v.child("gap_offset").fail("only body 1 (the non-mortar side, bodies[0]) takes a gap offset");
@@ -278,6 +286,38 @@ Body parse_body(const Value &v, int index, const std::string &base_dir) {
     b.gap_offset = v.child("gap_offset").number();
   }
   return b;
+}
+
+// pairs[k]: its bodies must exist and differ; both surfaces are required.
+Pair parse_pair(const Value &v, int number, int n_bodies) {
+  v.expect_object({"nonmortar", "mortar", "nonmortar_surface", "mortar_surface", "gap_offset"});
+  Pair p;
+  p.key = v.key();
+  p.number = number;
+  const std::string pair_name = "pair " + std::to_string(number);
+  for (const char *side : {"nonmortar", "mortar"}) {
+    const Value b = v.at(side);
+    int body = 0;
+    if (b.is_integer()) body = b.integer_in(-1000000000, 1000000000);
+    if (!b.is_integer() || body < 1 || body > n_bodies)
+      b.fail(pair_name + " names body " + (b.is_integer() ? std::to_string(body) : b.describe()) +
+             ", which does not exist: the scene has bodies 1 to " + std::to_string(n_bodies) +
+             " (body k is bodies[k-1])");
+    (side[0] == 'n' ? p.nonmortar : p.mortar) = body;
+  }
+  if (p.nonmortar == p.mortar)
+    v.fail(pair_name + " joins body " + std::to_string(p.nonmortar) +
+           " with itself: nonmortar and mortar must be two different bodies");
+  p.nonmortar_surface = v.at("nonmortar_surface").string();
+  p.mortar_surface = v.at("mortar_surface").string();
+  p.nonmortar_key = v.key() + ".nonmortar_surface";
+  p.mortar_key = v.key() + ".mortar_surface";
+  if (v.has("gap_offset")) {
+    p.has_gap_offset = true;
+    p.gap_offset = v.child("gap_offset").number();
+    p.gap_offset_key = v.key() + ".gap_offset";
+  }
+  return p;
 }
 
 Solver parse_solver(const Value &v) {
@@ -389,7 +429,7 @@ Adaptive parse_adaptive(const Value &v, const std::string &base_dir) {
 Scene parse_scene(const std::string &text, const std::string &path) {
   const json root = parse_json(text, path);
   const Value v(root, "", path);
-  v.expect_object({"description", "plane", "thickness", "bodies", "solver", "output", "analytic", "adaptive"});
+  v.expect_object({"description", "plane", "thickness", "bodies", "pairs", "solver", "output", "analytic", "adaptive"});
   const std::string base_dir = std::filesystem::path(path).parent_path().string();
   Scene s;
   s.path = path;
@@ -402,21 +442,50 @@ Scene parse_scene(const std::string &text, const std::string &path) {
     v.child("thickness").fail("an axisymmetric scene has no thickness (x is the radius, forces are totals over the turn)");
   s.thickness = v.has("thickness") ? v.child("thickness").positive() : 1.0;
   std::vector<Value> bodies = v.at("bodies").items();
-  if (bodies.size() != 2)
+  s.has_pairs = v.has("pairs");
+  if (!s.has_pairs && bodies.size() != 2)
     v.child("bodies").fail("must list exactly two bodies (body 1, the non-mortar side, first), got " +
-                           std::to_string(bodies.size()));
-  for (int b = 0; b < 2; ++b) s.bodies[b] = parse_body(bodies[size_t(b)], b, base_dir);
-  // Two bodies from one file need their surface groups, or each would take every cell.
-  if (std::filesystem::path(s.bodies[0].mesh_path).lexically_normal() ==
-          std::filesystem::path(s.bodies[1].mesh_path).lexically_normal() &&
-      (s.bodies[0].domain.empty() || s.bodies[1].domain.empty()))
-    v.child(s.bodies[0].domain.empty() ? "bodies[0].domain" : "bodies[1].domain")
-        .fail("missing: both bodies use the mesh " + s.bodies[0].mesh +
-              ", so each must name its physical surface group");
+                           std::to_string(bodies.size()) + "; a scene of other than two bodies names its contact "
+                           "surfaces in a \"pairs\" list");
+  if (bodies.size() < 2 || bodies.size() > 10000)
+    v.child("bodies").fail("must list 2 to 10000 bodies, got " + std::to_string(bodies.size()));
+  for (size_t b = 0; b < bodies.size(); ++b) s.bodies.push_back(parse_body(bodies[b], int(b), base_dir, s.has_pairs));
+  // Bodies from one file need their surface groups, or each would take every cell.
+  for (size_t b = 1; b < s.bodies.size(); ++b)
+    for (size_t a = 0; a < b; ++a)
+      if (std::filesystem::path(s.bodies[a].mesh_path).lexically_normal() ==
+              std::filesystem::path(s.bodies[b].mesh_path).lexically_normal() &&
+          (s.bodies[a].domain.empty() || s.bodies[b].domain.empty()))
+        v.child(s.bodies[a].domain.empty() ? s.bodies[a].key + ".domain" : s.bodies[b].key + ".domain")
+            .fail("missing: both bodies use the mesh " + s.bodies[a].mesh + " (" + s.bodies[a].key + " and " +
+                  s.bodies[b].key + "), so each must name its physical surface group");
+  if (s.has_pairs) {
+    std::vector<Value> pairs = v.child("pairs").items();
+    if (pairs.empty()) v.child("pairs").fail("must list at least one contact pair");
+    for (size_t k = 0; k < pairs.size(); ++k) s.pairs.push_back(parse_pair(pairs[k], int(k + 1), int(s.bodies.size())));
+  } else {  // today's two-body scene: pair 1, body 1 on body 2, from the bodies' "contact"
+    Pair p;
+    p.key = "bodies";
+    p.nonmortar_surface = s.bodies[0].contact;
+    p.mortar_surface = s.bodies[1].contact;
+    p.nonmortar_key = "bodies[0].contact";
+    p.mortar_key = "bodies[1].contact";
+    p.has_gap_offset = s.bodies[0].has_gap_offset;
+    p.gap_offset = s.bodies[0].gap_offset;
+    p.gap_offset_key = "bodies[0].gap_offset";
+    p.implied = true;
+    s.pairs.push_back(p);
+  }
   s.solver = parse_solver(v);
   s.output = parse_output(v, base_dir);
   s.hertz = parse_analytic(v);
+  if (s.hertz.enabled && s.bodies.size() != 2)
+    v.child("analytic").fail("the Hertz check compares two bodies in contact, the scene has " +
+                             std::to_string(s.bodies.size()));
   s.adaptive = parse_adaptive(v, base_dir);
+  if (s.adaptive.enabled && s.bodies.size() != 2)
+    v.child("adaptive").fail("adaptive refinement handles scenes of two bodies for now, the scene has " +
+                             std::to_string(s.bodies.size()));
   if (s.adaptive.enabled) {
     // One .geo gives one mesh: both bodies are taken out of it, each by its surface group.
     if (std::filesystem::path(s.bodies[0].mesh_path).lexically_normal() !=

@@ -39,9 +39,24 @@ struct Body {
   double young, poisson;
   std::vector<Support> supports;
   std::vector<Load> loads;
-  std::string contact;       // line group of the candidate contact surface
+  std::string contact;       // line group of the candidate contact surface ("" in a scene with "pairs")
   bool has_gap_offset = false;
   double gap_offset = 0;     // body 1 only: clearance (> 0) or interference (< 0) on every contact node
+};
+
+// A contact pair (docs/scene_format.md, "pairs"): the non-mortar body's surface against the
+// mortar body's. A scene without "pairs" has one, made of bodies[0].contact and
+// bodies[1].contact (implied = true): the two-body calls set it up as before.
+struct Pair {
+  std::string key;             // "pairs[0]", or "bodies" for the implied pair
+  int number = 1;              // 1, 2, ...: the library's pair number
+  int nonmortar = 1, mortar = 2;  // bodies, 1-based
+  std::string nonmortar_surface, mortar_surface;            // line groups
+  std::string nonmortar_key, mortar_key;                    // for messages
+  bool has_gap_offset = false;
+  double gap_offset = 0;       // on every node of the non-mortar surface
+  std::string gap_offset_key;
+  bool implied = false;
 };
 
 struct Solver {
@@ -94,7 +109,9 @@ struct Scene {
   std::string description;
   int plane;         // MC_PLANE_STRAIN, MC_PLANE_STRESS or MC_AXISYMMETRIC
   double thickness;
-  Body bodies[2];    // bodies[0] = body 1, the non-mortar side
+  std::vector<Body> bodies;  // bodies[0] = body 1 (the non-mortar side of a two-body scene)
+  std::vector<Pair> pairs;   // at least one; without "pairs" in the file, the implied pair 1
+  bool has_pairs = false;    // the file lists "pairs"
   Solver solver;
   Output output;
   HertzCheck hertz;

@@ -21,7 +21,17 @@
  *   id   : byte b < 240: b - 4 (so -4 .. 235); b >= 240: a special (INT_MIN, INT_MAX, ...) or
  *          the next 4 bytes as a little-endian int32.
  *   count: byte b: b % (max + 1), except 255, which gives -1.
- *   body : byte b: 1 + (b & 1), except b >= 250: 0, 3 or -1 (bad bodies).
+ *   body : byte b: 1 + (b & 1), except b >= 250: 250 -> 0, 251 -> 3, 252 -> -1, 253 -> 4,
+ *          254 -> 5, 255 -> 6. Bytes below 250 and 250..252 mean what they meant before
+ *          assemblies (issue 32); 253..255 gave -1, and give 4, 5, 6 now: bodies that do not
+ *          exist on a model of two bodies (every older input runs as before), bodies 4 and 5
+ *          once OP_BODY_COUNT has made them (a model holds up to 5 here, 6 is always bad).
+ *   body': (the assembly opcodes OP_ADD_PAIR, OP_PAIR_SURFACE) byte b < 240: 1 + b % 5 (any
+ *          body a model may have here); b >= 240: a bad body (0, -1, 6, INT_MAX, INT_MIN, 1000).
+ *   pair : byte b < 240: 1 + b % 3; b >= 240: 0, -1, 4, INT_MAX, INT_MIN or 1000 (pairs are
+ *          numbered 1, 2, ... whatever the index base).
+ * Every read of the stream is its own statement or declarator (never two reads in one
+ * expression: gcc and clang evaluate function arguments in different orders).
  * The seed corpus (tests/fuzz/corpus/) is written by tests/fuzz/make_corpus.py, which
  * documents the operations' operand order once more; keep the two in step.
  *
@@ -42,6 +52,7 @@
 
 /* Counters for the replay driver (how far the corpus reaches); not used by the library. */
 long fuzz_api_solves_ok = 0, fuzz_api_contact_solves_ok = 0, fuzz_api_host_solves_ok = 0;
+long fuzz_api_pair_solves_ok = 0; /* solves with contact positions on two pairs or more */
 
 enum {
   MAX_OPS = 128,
@@ -51,7 +62,9 @@ enum {
   MAX_NY = 6,
   MAX_SIDE = MAX_NX > MAX_NY ? MAX_NX : MAX_NY,
   MAX_LATTICE = (2 * MAX_NX + 1) * (2 * MAX_NY + 1), /* nodes of a host body's lattice */
-  MAX_ELEMENTS = 4                                   /* elements of OP_ELEMENTS_RAW */
+  MAX_ELEMENTS = 4,                                  /* elements of OP_ELEMENTS_RAW */
+  MAX_BODIES = 5,                                    /* bodies the harness tracks (OP_BODY_COUNT) */
+  MAX_PAIR = 3                                       /* pairs queried: 0 (bad) .. MAX_PAIR */
 };
 
 typedef struct {
@@ -118,9 +131,26 @@ static mc_int read_count(stream *s, int max) {
 }
 
 static int read_body(stream *s) {
+  static const int high[6] = {0, 3, -1, 4, 5, 6}; /* bytes 250 .. 255 */
   uint8_t b = read_u8(s);
-  if (b >= 250) return b == 250 ? 0 : b == 251 ? 3 : -1;
+  if (b >= 250) return high[b - 250];
   return 1 + (b & 1);
+}
+
+static const int bad_numbers[6] = {0, -1, 6, INT32_MAX, INT32_MIN, 1000};
+
+/* A body of the assembly opcodes: 1 .. 5 or a bad one. */
+static int read_any_body(stream *s) {
+  uint8_t b = read_u8(s);
+  if (b >= 240) return bad_numbers[(b - 240) % 6];
+  return 1 + b % 5;
+}
+
+/* A pair number: 1 .. 3 or a bad one (4 is bad until a fourth pair is made). */
+static int read_pair(stream *s) {
+  uint8_t b = read_u8(s);
+  if (b >= 240) return b % 6 == 2 ? 4 : bad_numbers[(b - 240) % 6];
+  return 1 + b % 3;
 }
 
 /* ---- the contract checks ------------------------------------------------------------- */
@@ -182,7 +212,7 @@ typedef struct {
 typedef struct {
   mc_model *m;
   int base;
-  body_state body[2];
+  body_state body[MAX_BODIES]; /* bodies 1 .. MAX_BODIES (OP_BODY_COUNT) */
   int solves;
   long log_lines;
 } harness;
@@ -202,7 +232,9 @@ static void reset_model(harness *h) {
   if (mc_create(&h->m) != MC_OK || !h->m) fuzz_fail("mc_create failed", "mc_create");
 }
 
-static body_state *tracked(harness *h, int body) { return body == 1 || body == 2 ? &h->body[body - 1] : NULL; }
+static body_state *tracked(harness *h, int body) {
+  return body >= 1 && body <= MAX_BODIES ? &h->body[body - 1] : NULL;
+}
 
 /* ---- queries with exactly sized buffers ---------------------------------------------- */
 
@@ -221,7 +253,7 @@ static void query_all(harness *h) {
     CALL(mc_get_info_int(m, info, &iv));
     CALL(mc_get_info_real(m, info, &rv));
   }
-  for (body = 0; body <= 3; ++body) {
+  for (body = 0; body <= MAX_BODIES + 1; ++body) { /* 0 and MAX_BODIES + 1: bad bodies */
     const body_state *b = tracked(h, body);
     size_t nodes = b && b->meshed ? (size_t)b->n_nodes : 0, cells = b && b->meshed ? (size_t)b->n_cells : 0;
     double *u = exact(2 * nodes, sizeof(double)), *sigma = exact(4 * cells, sizeof(double));
@@ -263,6 +295,28 @@ static void query_all(harness *h) {
       CALL(mc_get_contact_initial_gap(m, g0));
       CALL(mc_get_contact_normal(m, nrm));
       free(nodes), free(p), free(f), free(g), free(g0), free(nrm);
+    }
+  }
+  {
+    /* every pair 0 (bad) .. MAX_PAIR and every field 0 .. 6 (0 and 6 bad), buffers of exactly
+       the count the library gave (none where it refused the count) */
+    int pair, field;
+    for (pair = 0; pair <= MAX_PAIR; ++pair) {
+      mc_int n = -1;
+      size_t c = 0;
+      mc_int *nodes;
+      if (CALL(mc_get_pair_contact_count(m, pair, &n)) == MC_OK) {
+        if (n < 0) fuzz_fail("negative pair contact count", "mc_get_pair_contact_count");
+        c = (size_t)n;
+      }
+      nodes = exact(c, sizeof(mc_int));
+      CALL(mc_get_pair_contact_nodes(m, pair, nodes));
+      free(nodes);
+      for (field = 0; field <= 6; ++field) {
+        double *out = exact(field == MC_CONTACT_NORMAL ? 2 * c : c, sizeof(double));
+        CALL(mc_get_pair_contact(m, pair, field, out));
+        free(out);
+      }
     }
   }
 }
@@ -309,6 +363,17 @@ static void null_calls(harness *h) {
   CALL(mc_get_contact_initial_gap(m, v));
   CALL(mc_get_contact_normal(m, v));
   CALL(mc_set_gap_offset(m, 1, &id, v));
+  {
+    int pair = 0;
+    CALL(mc_set_body_count(m, 3));
+    CALL(mc_add_contact_pair(m, 1, 2, &pair));
+    CALL(mc_set_pair_surface(m, 1, 1, 1, edge));
+    CALL(mc_set_pair_surface_curved(m, 1, 1, 1, edge));
+    CALL(mc_set_pair_gap_offset(m, 1, 1, &id, v));
+    CALL(mc_get_pair_contact_count(m, 1, &id));
+    CALL(mc_get_pair_contact_nodes(m, 1, &id));
+    CALL(mc_get_pair_contact(m, 1, MC_CONTACT_PRESSURE, v));
+  }
   CALL(mc_set_log_callback(m, NULL, NULL));
   CALL(mc_write_vtu(m, "/dev/null"));
   {
@@ -344,6 +409,11 @@ static void null_calls(harness *h) {
   CALL(mc_write_vtu(m, NULL));
   CALL(mc_get_equation_solution(m, 1, NULL));
   CALL(mc_get_contact_load(m, 2, NULL));
+  CALL(mc_get_pair_contact_count(m, 1, NULL));
+  CALL(mc_get_pair_contact_nodes(m, 1, NULL));
+  CALL(mc_get_pair_contact(m, 1, MC_CONTACT_NORMAL, NULL));
+  CALL(mc_set_pair_surface(m, 1, 1, 1, NULL));
+  CALL(mc_set_pair_gap_offset(m, 1, 1, NULL, NULL));
 }
 
 /* ---- operations ---------------------------------------------------------------------- */
@@ -386,6 +456,13 @@ enum {
   OP_LOAD_VECTOR,    /* body, byte kind (b % 4), real fx, real fy [, kind 1: count n, n reals] */
   OP_CONTACT_CURVED, /* body, byte side, byte first, byte count (0: all), byte mode (b % 3)
                         [, mode 2: count n, 3n ids] */
+  /* assemblies (issue 32), appended likewise: */
+  OP_BODY_COUNT,      /* byte: n = b % 6 (0 and 1 bad; a model here holds at most 5 bodies) */
+  OP_ADD_PAIR,        /* body' nonmortar, body' mortar                              */
+  OP_PAIR_SURFACE,    /* pair, body', byte side, byte first, byte count (0: all), byte mode (b % 4:
+                         0 straight, 1 curved with the side's middles, 2 curved with an end and the
+                         middle swapped, 3 straight from the stream: count n, 2n ids) */
+  OP_PAIR_GAP_OFFSET, /* pair, count n, n ids, n reals                             */
   OP_COUNT
 };
 
@@ -916,6 +993,72 @@ static void op_contact_curved(harness *h, stream *s) {
   CALL(mc_set_contact_curved(m, body, n, n > 0 ? edges : NULL));
 }
 
+/* ---- assemblies ---------------------------------------------------------------------- */
+
+static void op_body_count(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int n = read_u8(s) % 6, b;
+  if (CALL(mc_set_body_count(m, n)) == MC_OK)
+    for (b = n; b < MAX_BODIES; ++b) memset(&h->body[b], 0, sizeof h->body[b]); /* dropped bodies */
+}
+
+static void op_add_pair(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int nonmortar = read_any_body(s);
+  int mortar = read_any_body(s);
+  int pair = -12345;
+  if (CALL(mc_add_contact_pair(m, nonmortar, mortar, &pair)) == MC_OK && pair < 1)
+    fuzz_fail("a pair numbered below 1", "mc_add_contact_pair");
+}
+
+/* One side of a pair along a side of the body's last grid or lattice (as OP_CONTACT_SIDE and
+   OP_CONTACT_CURVED do), or read from the stream. */
+static void op_pair_surface(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int pair = read_pair(s);
+  int body = read_any_body(s);
+  int side = read_u8(s) % 4;
+  int first = read_u8(s);
+  int count = read_u8(s);
+  int mode = read_u8(s) % 4;
+  mc_int edges[3 * MAX_RAW > 3 * MAX_SIDE ? 3 * MAX_RAW : 3 * MAX_SIDE], n, k;
+  if (mode == 3) {
+    n = read_count(s, MAX_RAW);
+    for (k = 0; k < 2 * n; ++k) edges[k] = plus_base(read_id(s), h->base);
+    CALL(mc_set_pair_surface(m, pair, body, n, n > 0 ? edges : NULL));
+    return;
+  }
+  {
+    const body_state *b = tracked(h, body);
+    mc_int ne;
+    const mc_int *e = side_edges(h, body, side, &ne);
+    first %= ne;
+    n = count == 0 ? ne - first : 1 + count % (ne - first);
+    if (mode == 0) {
+      with_base(h, e + 2 * first, 2 * n, edges);
+      CALL(mc_set_pair_surface(m, pair, body, n, edges));
+      return;
+    }
+    for (k = 0; k < n; ++k) {
+      const mc_int a = e[2 * (first + k)], c = e[2 * (first + k) + 1];
+      const mc_int mid = b && b->grid && b->has_mid ? b->side_mid[side][first + k] : e[2 * ((first + k + 1) % ne) + 1];
+      edges[3 * k] = (mode == 2 ? mid : a) + h->base, edges[3 * k + 1] = c + h->base;
+      edges[3 * k + 2] = (mode == 2 ? a : mid) + h->base;
+    }
+    CALL(mc_set_pair_surface_curved(m, pair, body, n, edges));
+  }
+}
+
+static void op_pair_gap_offset(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int pair = read_pair(s);
+  mc_int n = read_count(s, MAX_RAW), k, nodes[MAX_RAW];
+  double offset[MAX_RAW];
+  for (k = 0; k < n; ++k) nodes[k] = plus_base(read_id(s), h->base);
+  for (k = 0; k < n; ++k) offset[k] = read_real(s);
+  CALL(mc_set_pair_gap_offset(m, pair, n, n > 0 ? nodes : NULL, n > 0 ? offset : NULL));
+}
+
 static void run(harness *h, stream *s, size_t size) {
   int ops = 0;
   while (s->n > 0 && ops++ < MAX_OPS) {
@@ -968,9 +1111,13 @@ static void run(harness *h, stream *s, size_t size) {
         if (h->solves++ < MAX_SOLVES) {
           if (CALL(mc_solve(m)) == MC_OK) {
             mc_int n;
+            int b, host = 0, pairs = 0;
             fuzz_api_solves_ok++;
             if (mc_get_contact_count(m, &n) == MC_OK) fuzz_api_contact_solves_ok++;
-            if (h->body[0].host || h->body[1].host) fuzz_api_host_solves_ok++;
+            for (b = 0; b < MAX_BODIES; ++b) host |= h->body[b].host;
+            if (host) fuzz_api_host_solves_ok++;
+            for (b = 1; b <= MAX_PAIR; ++b) pairs += mc_get_pair_contact_count(m, b, &n) == MC_OK && n > 0;
+            if (pairs >= 2) fuzz_api_pair_solves_ok++;
           }
           query_all(h);
         }
@@ -991,6 +1138,10 @@ static void run(harness *h, stream *s, size_t size) {
       case OP_ELEMENTS_RAW: op_elements_raw(h, s); break;
       case OP_LOAD_VECTOR: op_load_vector(h, s); break;
       case OP_CONTACT_CURVED: op_contact_curved(h, s); break;
+      case OP_BODY_COUNT: op_body_count(h, s); break;
+      case OP_ADD_PAIR: op_add_pair(h, s); break;
+      case OP_PAIR_SURFACE: op_pair_surface(h, s); break;
+      case OP_PAIR_GAP_OFFSET: op_pair_gap_offset(h, s); break;
     }
   }
 }

@@ -15,7 +15,8 @@ OPS = ["NEW_MODEL", "INDEX_BASE", "PLANE", "GRID_MESH", "RAW_MESH", "MATERIAL", 
        "FIX_SIDE", "FIX_RAW", "TRACTION_SIDE", "PRESSURE_SIDE", "EDGE_LOAD_RAW", "NODAL_FORCE",
        "BODY_FORCE", "CLEAR_LOADS", "CONTACT_SIDE", "CONTACT_RAW", "OPTION_INT", "OPTION_REAL",
        "SOLVE", "QUERY", "GAP_OFFSET", "LOG", "WRITE_VTU", "NULLS",
-       "HOST_BODY", "HOST_STIFFNESS", "STIFFNESS_RAW", "ELEMENTS_RAW", "LOAD_VECTOR", "CONTACT_CURVED"]
+       "HOST_BODY", "HOST_STIFFNESS", "STIFFNESS_RAW", "ELEMENTS_RAW", "LOAD_VECTOR", "CONTACT_CURVED",
+       "BODY_COUNT", "ADD_PAIR", "PAIR_SURFACE", "PAIR_GAP_OFFSET"]
 OP = {name: k for k, name in enumerate(OPS)}
 BOTTOM, RIGHT, TOP, LEFT = 0, 1, 2, 3
 SPECIAL = {"nan": 10, "inf": 11, "-inf": 12}
@@ -47,7 +48,40 @@ def ident(v):
 
 
 def body(b):
-    return {1: b"\x00", 2: b"\x01", 0: b"\xfa", 3: b"\xfb", -1: b"\xfc"}[b]
+    """A body of the older opcodes: 1, 2 as before; 0, 3, -1 (250..252) as before; 4, 5, 6 (253..255)."""
+    return {1: b"\x00", 2: b"\x01", 0: b"\xfa", 3: b"\xfb", -1: b"\xfc", 4: b"\xfd", 5: b"\xfe", 6: b"\xff"}[b]
+
+
+BAD = [0, -1, 6, 2**31 - 1, -2**31, 1000]  # fuzz_api.c's bad_numbers, bytes 240 ..
+
+
+def any_body(b):
+    """A body of the assembly opcodes (OP_ADD_PAIR, OP_PAIR_SURFACE): 1..5, or a bad one."""
+    return bytes([b - 1]) if 1 <= b <= 5 else bytes([240 + BAD.index(b)])
+
+
+def pair(p):
+    """A pair number: 1..3, or a bad one (0, -1, 4, ...)."""
+    return bytes([p - 1]) if 1 <= p <= 3 else bytes([242 if p == 4 else 240 + BAD.index(p)])
+
+
+def body_count(n):
+    return op("BODY_COUNT") + u8(n)
+
+
+def add_pair(nonmortar, mortar):
+    return op("ADD_PAIR") + any_body(nonmortar) + any_body(mortar)
+
+
+# mode 0 straight, 1 curved with the side's middles, 2 curved with an end and the middle
+# swapped, 3 straight from extra (count n, 2n ids)
+def pair_surface(p, b, side, first=0, n=0, mode=0, extra=b""):
+    return op("PAIR_SURFACE") + pair(p) + any_body(b) + u8(side) + u8(first) + u8(n) + u8(mode) + extra
+
+
+def pair_gap_offset(p, nodes, offsets):
+    return (op("PAIR_GAP_OFFSET") + pair(p) + count(len(nodes)) + b"".join(ident(v) for v in nodes)
+            + b"".join(real(v) for v in offsets))
 
 
 def count(n):
@@ -131,6 +165,19 @@ def stack(base_mid=24):  # node (3, 3) of the 6x3 grid: top middle
             + material(1, 100.0, 0.3) + material(2, 200.0, 0.3) + fix_side(2, BOTTOM, 3)
             + fix_raw(1, [base_mid], 1) + traction_side(1, TOP, 0, -1)
             + contact_side(1, BOTTOM) + contact_side(2, TOP))
+
+
+# Three stacked blocks (as in tests/test_contact_pairs.c): body 1 = [0,1]x[0,0.5] P1 6x3 on
+# body 2 = [0,1]x[-0.5,0] Q1 8x4 on body 3 = [0,1]x[-1,-0.5] P1 5x2 clamped at its bottom;
+# bodies 1 and 2 held in y by contact alone (u_x = 0 at one node each); pair 1: 1 on 2,
+# pair 2: 2 on 3.
+def stack3():
+    return (body_count(3) + grid(1, 3, 6, 3, 0, 0, 1, 0.5) + grid(2, 4, 8, 4, 0, -0.5, 1, 0.5)
+            + grid(3, 3, 5, 2, 0, -1, 1, 0.5) + material(1, 100.0, 0.3) + material(2, 200.0, 0.3)
+            + material(3, 150.0, 0.25) + fix_side(3, BOTTOM, 3) + fix_raw(1, [24], 1) + fix_raw(2, [0], 1)
+            + traction_side(1, TOP, 0, -1)
+            + add_pair(1, 2) + pair_surface(1, 1, BOTTOM) + pair_surface(1, 2, TOP)
+            + add_pair(2, 3) + pair_surface(2, 2, BOTTOM) + pair_surface(2, 3, TOP))
 
 
 SEEDS = {
@@ -277,6 +324,40 @@ SEEDS = {
     + fix_raw(2, [0, 1, 3], 3) + fix_raw(2, [2], 1) + pressure_side(1, TOP, 0.125)
     + contact_side(1, BOTTOM) + contact_side(2, TOP) + option_int(11, 1) + solve()
     + option_int(11, 2) + solve() + option_int(11, 0) + solve(),
+    # assemblies (issue 32): three stacked blocks with two pairs, solved on both paths and both
+    # mortar methods, a pair's gap offset, a re-solve with new loads, every pair result queried
+    "pairs_stack3": stack3() + solve() + op("QUERY") + option_int(11, 2) + solve() + option_int(1, 1)
+    + traction_side(1, TOP, 0.5, -2) + solve() + option_int(1, 0) + option_int(11, 0)
+    + pair_gap_offset(2, [0, 1, 2], [0.0078125, 0.0078125, 0.0078125]) + solve() + op("WRITE_VTU") + u8(0),
+    # five bodies: a quadratic T6 block on Q8 with curved pair surfaces, a host lattice body 3
+    # under it; bodies 4 and 5 without a mesh (refused by the solve), then the count shrunk to 3
+    "pairs_quadratic_host": body_count(5) + grid(1, 6, 4, 2, 0, 0, 1, 0.5) + grid(2, 8, 5, 2, 0, -0.5, 1, 0.5)
+    + material(1, 100.0, 0.3) + material(2, 200.0, 0.3) + fix_side(1, LEFT, 1) + fix_side(2, LEFT, 1)
+    + pressure_side(1, TOP, 1.0) + host_body(3, 1, 6, 2, 0, -1, 1, 0.5, 1) + host_stiffness(3, FULL, 150.0, 0.3)
+    + add_pair(1, 2) + pair_surface(1, 1, BOTTOM, mode=1) + pair_surface(1, 2, TOP, mode=1)
+    + add_pair(2, 3) + pair_surface(2, 2, BOTTOM, mode=1) + pair_surface(2, 3, TOP) + solve()
+    + body_count(3) + solve() + op("QUERY") + option_int(11, 2) + solve(),
+    # bad assembly input: body counts 0, 1 and 6 (past the harness's 5); pairs of a body with
+    # itself, with bodies that do not exist; surfaces of pairs that do not exist, of a body not
+    # in the pair, on a body without a mesh, raw edges that are not boundary edges; a count
+    # that would drop a body a pair uses; gap offsets of bad pairs and nodes; the two-body calls
+    # on a model whose pair 1 joins other bodies; two pairs whose non-mortar surfaces share a
+    # node with different mortar bodies; a pair with one side only
+    "pairs_bad_input": body_count(0) + body_count(1) + body_count(3) + grid(1, 4, 3, 2, 0, 0, 1, 1)
+    + grid(2, 4, 3, 2, 0, -1, 1, 1) + grid(3, 4, 3, 2, 1, 0, 1, 1) + material(1, 1.0, 0.3) + material(2, 1.0, 0.3)
+    + material(3, 1.0, 0.3) + add_pair(1, 1) + add_pair(1, 6) + add_pair(0, 2) + add_pair(-1, 2)
+    + add_pair(2**31 - 1, 1) + pair_surface(1, 1, BOTTOM) + pair_surface(0, 1, BOTTOM) + pair_surface(4, 1, BOTTOM)
+    + add_pair(2, 1) + pair_surface(1, 3, TOP) + pair_surface(1, 5, TOP) + pair_surface(1, 2, TOP)
+    + pair_surface(1, 1, TOP, mode=3, extra=count(2) + b"".join(ident(v) for v in (0, 5, 5, 6)))
+    + pair_surface(1, 2, TOP, mode=2) + pair_gap_offset(0, [0], [0.125]) + pair_gap_offset(4, [0], [0.125])
+    + pair_gap_offset(1, [1000, -1], [0.125, "nan"]) + pair_gap_offset(1, [0, 1], ["inf", 0.125])
+    + op("CONTACT_SIDE") + body(1) + u8(BOTTOM) + u8(0) + u8(0)
+    + op("GAP_OFFSET") + count(1) + ident(0) + real(0.125)
+    + add_pair(3, 1) + pair_surface(2, 3, LEFT) + pair_surface(2, 1, RIGHT) + body_count(2)
+    + add_pair(2, 3) + pair_surface(3, 2, TOP) + pair_surface(3, 3, LEFT, 0, 1)
+    + fix_side(2, BOTTOM, 3) + fix_side(3, RIGHT, 3) + fix_side(1, TOP, 3, (0.0, -0.125)) + solve()
+    + pair_surface(1, 2, TOP) + pair_surface(1, 1, BOTTOM) + solve() + op("QUERY") + op("NULLS")
+    + body_count(5) + solve() + op("NEW_MODEL") + add_pair(1, 2) + solve() + op("QUERY"),
 }
 
 

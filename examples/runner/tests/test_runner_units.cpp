@@ -522,6 +522,74 @@ START_TEST(multiplier_parsed) {
 }
 END_TEST
 
+// A valid scene of three bodies and two pairs; `edit` replaces the first occurrence of `from` by `to`.
+std::string pairs_scene_text(const std::string &from = "", const std::string &to = "") {
+  std::string s = R"({
+  "bodies": [
+    { "mesh": "m.msh", "domain": "a", "material": { "E": 2, "nu": 0.3 } },
+    { "mesh": "m.msh", "domain": "b", "material": { "E": 1, "nu": 0.3 } },
+    { "mesh": "n.msh", "material": { "E": 3, "nu": 0.3 } }
+  ],
+  "pairs": [
+    { "nonmortar": 1, "mortar": 2, "nonmortar_surface": "a_bottom", "mortar_surface": "b_top" },
+    { "nonmortar": 2, "mortar": 3, "nonmortar_surface": "b_bottom", "mortar_surface": "c_top", "gap_offset": -0.01 }
+  ]
+})";
+  if (!from.empty()) {
+    size_t at = s.find(from);
+    ck_assert_msg(at != std::string::npos, "test bug: '%s' not in the scene", from.c_str());
+    s.replace(at, from.size(), to);
+  }
+  return s;
+}
+
+START_TEST(pairs_scene_parsed_and_checked) {
+  const Scene s = parse_scene(pairs_scene_text(), "dir/s.json");
+  ck_assert(s.has_pairs);
+  ck_assert_int_eq(int(s.bodies.size()), 3);
+  ck_assert_int_eq(int(s.pairs.size()), 2);
+  ck_assert_int_eq(s.pairs[1].number, 2);
+  ck_assert_int_eq(s.pairs[1].nonmortar, 2);
+  ck_assert_int_eq(s.pairs[1].mortar, 3);
+  ck_assert_str_eq(s.pairs[1].mortar_surface.c_str(), "c_top");
+  ck_assert(s.pairs[1].has_gap_offset && !s.pairs[0].has_gap_offset);
+  ck_assert_double_eq(s.pairs[1].gap_offset, -0.01);
+  // Without "pairs": the implied pair 1 of the two bodies' "contact".
+  const Scene two = parse_scene(scene_text(), "dir/s.json");
+  ck_assert(!two.has_pairs);
+  ck_assert_int_eq(int(two.pairs.size()), 1);
+  ck_assert(two.pairs[0].implied);
+  ck_assert_str_eq(two.pairs[0].nonmortar_surface.c_str(), "c1");
+  ck_assert_str_eq(two.pairs[0].mortar_surface.c_str(), "c2");
+  // Bad pairs name the pair.
+  ASSERT_HAS(scene_error(pairs_scene_text("\"nonmortar\": 2, \"mortar\": 3", "\"nonmortar\": 2, \"mortar\": 4")),
+             "dir/s.json: pairs[1].mortar: pair 2 names body 4, which does not exist: the scene has bodies 1 to 3");
+  ASSERT_HAS(scene_error(pairs_scene_text("\"nonmortar\": 1, \"mortar\": 2", "\"nonmortar\": 0, \"mortar\": 2")),
+             "pairs[0].nonmortar: pair 1 names body 0, which does not exist");
+  ASSERT_HAS(scene_error(pairs_scene_text("\"nonmortar\": 1, \"mortar\": 2", "\"nonmortar\": \"top\", \"mortar\": 2")),
+             "pairs[0].nonmortar: pair 1 names body string \"top\", which does not exist");
+  ASSERT_HAS(scene_error(pairs_scene_text("\"nonmortar\": 2, \"mortar\": 3", "\"nonmortar\": 2, \"mortar\": 2")),
+             "dir/s.json: pairs[1]: pair 2 joins body 2 with itself: nonmortar and mortar must be two different bodies");
+  ASSERT_HAS(scene_error(pairs_scene_text(", \"mortar_surface\": \"b_top\"", "")),
+             "dir/s.json: pairs[0].mortar_surface: missing (required)");
+  ASSERT_HAS(scene_error(pairs_scene_text("\"mortar\": 2,", "")), "pairs[0].mortar: missing (required)");
+  ASSERT_HAS(scene_error(pairs_scene_text("\"mortar\": 2,", "\"mortar\": 2, \"mortar_surfce\": \"x\",")),
+             "pairs[0].mortar_surfce: unknown key (did you mean 'mortar_surface'?)");
+  ASSERT_HAS(scene_error(pairs_scene_text("\"E\": 1, \"nu\": 0.3 } }", "\"E\": 1, \"nu\": 0.3 }, \"contact\": \"b_top\" }")),
+             "bodies[1].contact: the scene lists \"pairs\": name the contact surfaces and gap offsets there");
+  ASSERT_HAS(scene_error(pairs_scene_text("\"domain\": \"b\", ", "")),
+             "bodies[1].domain: missing: both bodies use the mesh m.msh (bodies[0] and bodies[1])");
+  // More than two bodies need pairs; the Hertz check and adaptive refinement take two.
+  const std::string no_pairs = pairs_scene_text().substr(0, pairs_scene_text().find(",\n  \"pairs\"")) + "\n}";
+  ASSERT_HAS(scene_error(no_pairs.substr(0, no_pairs.size() - 2) + ", \"pairs\": []}"), "pairs: must list at least one");
+  ASSERT_HAS(scene_error(no_pairs), "bodies: must list exactly two bodies (body 1, the non-mortar side, first), got 3; "
+                                    "a scene of other than two bodies names its contact surfaces in a \"pairs\" list");
+  ASSERT_HAS(scene_error(pairs_scene_text("\"pairs\": [",
+                                          "\"analytic\": { \"type\": \"hertz\", \"radius\": 1, \"load\": 1 },\n \"pairs\": [")),
+             "analytic: the Hertz check compares two bodies in contact, the scene has 3");
+}
+END_TEST
+
 START_TEST(scene_errors_name_the_key) {
   std::string e = scene_error(scene_text("\"material\": { \"E\": 2", "\"materail\": { \"E\": 2"));
   ASSERT_HAS(e, "dir/s.json: bodies[0].materail: unknown key (did you mean 'material'?)");
@@ -932,6 +1000,7 @@ int main(int argc, char **argv) {
   tcase_add_test(tc, interface_solver_parsed);
   tcase_add_test(tc, multiplier_parsed);
   tcase_add_test(tc, scene_errors_name_the_key);
+  tcase_add_test(tc, pairs_scene_parsed_and_checked);
   tcase_add_test(tc, adaptive_scene_parsed);
   tcase_add_test(tc, size_field_equidistributes);
   tcase_add_test(tc, size_view_step_geo_and_vtu_array);
