@@ -931,13 +931,15 @@ static void assert_same_as_reference(mc_model *m, small_host *sh, const char *af
 
 /* The log lines of a model, kept for the assertions. */
 typedef struct log_lines {
-  char text[4096];
+  char text[16384];
 } log_lines;
 
 static void keep_log_line(void *user_data, mc_log_level level, const char *message) {
   log_lines *log = user_data;
+  const size_t used = strlen(log->text);
   (void)level;
-  strncat(log->text, message, sizeof log->text - strlen(log->text) - 2);
+  if (used + 2 >= sizeof log->text) return; /* full: later lines are dropped, never written past the end */
+  strncat(log->text, message, sizeof log->text - used - 2);
   strcat(log->text, "\n");
 }
 

@@ -220,6 +220,7 @@ typedef struct log_text {
 static void keep_log(void *user, mc_log_level level, const char *message) {
   log_text *log = user;
   if (level != MC_LOG_PHASE) return;
+  if (strlen(log->text) + 2 >= sizeof log->text) return; /* full: later lines are dropped */
   strncat(log->text, message, sizeof log->text - strlen(log->text) - 2);
   strcat(log->text, "\n");
 }

@@ -438,6 +438,7 @@ static void record_log(void *user_data, mc_log_level level, const char *message)
   if (level == MC_LOG_PHASE) {
     ++r->phases;
     if (strncmp(message, "solve: start", 12) != 0 && !ends_with_time(message)) ++r->bad_lines;
+    if (strlen(r->text) + 2 >= sizeof r->text) return; /* full: later lines are dropped */
     strncat(r->text, message, sizeof r->text - strlen(r->text) - 2);
     strcat(r->text, "\n");
   } else if (level == MC_LOG_ITERATION) {

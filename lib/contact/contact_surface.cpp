@@ -245,6 +245,17 @@ SurfaceCurve::SurfaceCurve(const Mesh &mesh, const std::vector<SurfaceSegment> &
   build_grid();
 }
 
+namespace {
+// The grid cell (0..n-1) of coordinate t = offset / cell size, clamped in floating point before
+// the conversion: a coordinate far outside the grid (1e300, found by the fuzzer) or NaN has no
+// int value, and converting it is undefined behaviour.
+int grid_cell(double t, int n) {
+  const double f = std::floor(t);
+  if (!(f >= 0)) return 0;  // below the grid, or NaN
+  return f >= double(n - 1) ? n - 1 : int(f);
+}
+}  // namespace
+
 void SurfaceCurve::build_grid() {
   const int count = int(segments_.size());
   cell_start_.assign(1, 0), cell_segment_.clear(), grid_nx_ = grid_ny_ = 0;
@@ -261,12 +272,15 @@ void SurfaceCurve::build_grid() {
   double cell = std::max(total / count, 1e-12 * std::max(extent, 1e-300));
   while ((std::floor(wx / cell) + 1) * (std::floor(wy / cell) + 1) > 4.0 * count + 16) cell *= 2;
   grid_lo_ = lo, cell_ = cell > 0 ? cell : 1;
-  grid_nx_ = int(std::floor(wx / cell_)) + 1, grid_ny_ = int(std::floor(wy / cell_)) + 1;
+  // (the loop above bounds the cell counts by 4 count + 16; an extent that overflows to inf, or a
+  // NaN, gives cell_ inf or NaN, and grid_cell keeps the counts in range all the same)
+  const int most = 4 * count + 16;
+  grid_nx_ = grid_cell(wx / cell_, most) + 1, grid_ny_ = grid_cell(wy / cell_, most) + 1;
   auto cell_range = [&](const CurveSegment &c, int &i0, int &i1, int &j0, int &j1) {
-    i0 = std::clamp(int(std::floor((c.box_lo.x - lo.x) / cell_)), 0, grid_nx_ - 1);
-    i1 = std::clamp(int(std::floor((c.box_hi.x - lo.x) / cell_)), 0, grid_nx_ - 1);
-    j0 = std::clamp(int(std::floor((c.box_lo.y - lo.y) / cell_)), 0, grid_ny_ - 1);
-    j1 = std::clamp(int(std::floor((c.box_hi.y - lo.y) / cell_)), 0, grid_ny_ - 1);
+    i0 = grid_cell((c.box_lo.x - lo.x) / cell_, grid_nx_);
+    i1 = grid_cell((c.box_hi.x - lo.x) / cell_, grid_nx_);
+    j0 = grid_cell((c.box_lo.y - lo.y) / cell_, grid_ny_);
+    j1 = grid_cell((c.box_hi.y - lo.y) / cell_, grid_ny_);
   };
   std::vector<int> count_in(size_t(grid_nx_) * grid_ny_ + 1, 0);
   int i0, i1, j0, j1;
@@ -289,8 +303,8 @@ template <class Visit, class GoOn> void SurfaceCurve::visit_near(Point p, Visit 
   if (grid_nx_ == 0) return;
   // p's cell, clamped to the grid: distances from the clamped point bound those from p below
   // (the projection onto the grid's box does not increase distances to points inside it).
-  const int ci = std::clamp(int(std::floor((p.x - grid_lo_.x) / cell_)), 0, grid_nx_ - 1);
-  const int cj = std::clamp(int(std::floor((p.y - grid_lo_.y) / cell_)), 0, grid_ny_ - 1);
+  const int ci = grid_cell((p.x - grid_lo_.x) / cell_, grid_nx_);
+  const int cj = grid_cell((p.y - grid_lo_.y) / cell_, grid_ny_);
   std::vector<int> seen;  // a segment spans a few cells: visited once
   const int rings = std::max({ci, grid_nx_ - 1 - ci, cj, grid_ny_ - 1 - cj});
   for (int r = 0; r <= rings; ++r) {
