@@ -97,6 +97,22 @@ void Model::check_contact_pairs() const {
   }
 }
 
+// Each group's initial-gap offsets, gathered from its pairs' (mc_set_gap_offset,
+// mc_set_pair_gap_offset). Offsets are values, not structure: a solve that reuses the contact
+// system gathers them again.
+void Model::gather_gap_offsets(ContactSystem &cs) const {
+  for (ContactGroup &group : cs.groups) {
+    group.gap_offset.clear();
+    for (int p : group.pairs) {
+      const ContactPair &pair = pairs[p];
+      if (pair.gap_offset.empty()) continue;
+      if (group.gap_offset.empty()) group.gap_offset.assign(body[group.nonmortar].mesh.n_nodes(), 0.0);
+      for (size_t i = 0; i < pair.gap_offset.size(); ++i)
+        if (pair.gap_offset[i] != 0) group.gap_offset[i] = pair.gap_offset[i];
+    }
+  }
+}
+
 std::unique_ptr<ContactSystem> Model::build_contact_system() {
   const double t_geometry = now();
   auto cs = std::make_unique<ContactSystem>();
@@ -118,6 +134,7 @@ std::unique_ptr<ContactSystem> Model::build_contact_system() {
     }
     group->pairs.push_back(int(p));
   }
+  gather_gap_offsets(*cs);
   int positions = 0, q = 0;
   for (size_t k = 0; k < cs->groups.size(); ++k) {
     ContactGroup &group = cs->groups[k];
@@ -125,11 +142,6 @@ std::unique_ptr<ContactSystem> Model::build_contact_system() {
     for (int p : group.pairs) {
       const ContactPair &pair = pairs[p];
       for (int s = 0; s < 2; ++s) side[s].insert(side[s].end(), pair.side[s].begin(), pair.side[s].end());
-      if (!pair.gap_offset.empty()) {
-        if (group.gap_offset.empty()) group.gap_offset.assign(body[group.nonmortar].mesh.n_nodes(), 0.0);
-        for (size_t i = 0; i < pair.gap_offset.size(); ++i)
-          if (pair.gap_offset[i] != 0) group.gap_offset[i] = pair.gap_offset[i];
-      }
     }
     if (group.pairs.size() > 1) {  // a mortar edge given by two pairs is the same edge: kept once
       std::sort(side[1].begin(), side[1].end(), [](const SurfaceSegment &x, const SurfaceSegment &y) {

@@ -262,6 +262,7 @@ private:
   // The contact pairs joined into groups, their geometry and rows stacked, B per body
   // (contact_pairs.cpp).
   std::unique_ptr<ContactSystem> build_contact_system();
+  void gather_gap_offsets(ContactSystem &cs) const;
   void check_contact_pairs() const;
   void contact_results(const std::vector<double> &lambda);
   // "body 1: translation in y; ..." for the floating bodies, for both paths' messages.
