@@ -78,9 +78,17 @@ class TestPairs(unittest.TestCase):
                 np.testing.assert_allclose(s[:, 0], 0.0, atol=1e-10 * P)
                 self.assertEqual(m.get_displacement(body).shape, (m.n_nodes(body), 2))
             u1 = m.get_displacement(1)
-        # an interference on pair 2 (given before the solve): the two upper blocks rise by it,
-        # the pressures stay p
-        delta = 1e-3
+            # an interference on pair 2: the two upper blocks rise by it, the pressures stay p;
+            # a re-solve (offsets are values: the factorizations are kept) ...
+            delta = 1e-3
+            m.set_pair_gap_offset(2, nodes[1][:, 0] + base, -delta)
+            m.solve()
+            self.assertEqual(m.get_info(mc.MC_INFO_FACTORIZATIONS), 0)
+            np.testing.assert_allclose(m.get_pair_contact(2, mc.MC_CONTACT_INITIAL_GAP), -delta, rtol=1e-12)
+            for pair in pairs:
+                np.testing.assert_allclose(m.get_pair_contact(pair, mc.MC_CONTACT_PRESSURE), P, rtol=1e-10)
+            np.testing.assert_allclose(m.get_displacement(1)[:, 1] - u1[:, 1], delta, rtol=1e-8)
+        # ... and a model given the offset before its first solve
         with mc.Model(index_base=base) as m:
             nodes, pairs = build_stack(m, base)
             m.set_option_int(mc.MC_OPTION_METHOD, method)
