@@ -23,7 +23,8 @@
  *
  * Getters returning vectors size them from the counts this Model passed to set_mesh or
  * set_host_body (the C API has no node-count getter): a body set through the raw handle get() is
- * unknown to them. The Model also remembers the index base it set (set_index_base), which the
+ * unknown to them. Bodies are 1..N (set_body_count; 2 by default), contact pairs 1, 2, ... in the
+ * order add_contact_pair made them, whatever the index base. The Model also remembers the index base it set (set_index_base), which the
  * vector overload of add_element_matrices needs to check its arrays.
  */
 #ifndef MORTARCONTACT_HPP
@@ -31,7 +32,6 @@
 
 #include <mortarcontact.h>
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <exception>
@@ -133,6 +133,16 @@ enum class Info : int {
 };
 
 enum class LogLevel : int { phase = MC_LOG_PHASE, iteration = MC_LOG_ITERATION };
+
+/// The field argument of Model::get_pair_contact: one value per contact position (normal: two,
+/// x and y), as the get_contact_* getter of the same name.
+enum class ContactField : int {
+  pressure = MC_CONTACT_PRESSURE,
+  force = MC_CONTACT_FORCE,
+  gap = MC_CONTACT_GAP,
+  initial_gap = MC_CONTACT_INITIAL_GAP,
+  normal = MC_CONTACT_NORMAL
+};
 
 /// The storage argument of Model::add_stiffness.
 enum class MatrixStorage : int {
@@ -263,6 +273,12 @@ class Model {
     check(::mc_set_index_base(get(), base));
     base_ = base;
   }
+  /// The number of bodies, n >= 2 (default 2). Growing keeps the bodies there are; shrinking
+  /// drops the last ones (Status::error_state while a contact pair uses one of them).
+  void set_body_count(int n) {
+    check(::mc_set_body_count(get(), n));
+    meshes_.resize(static_cast<std::size_t>(n));
+  }
   void set_plane(Plane plane, double thickness = 1.0) {
     check(::mc_set_plane(get(), static_cast<int>(plane), thickness));
   }
@@ -345,6 +361,40 @@ class Model {
   }
   void set_gap_offset(const std::vector<mc_int> &nodes, const std::vector<double> &offset) {
     set_gap_offset(detail::paired_count(nodes, 1, offset, 1, "set_gap_offset"), nodes.data(), offset.data());
+  }
+
+  // ---- assemblies: contact pairs ----
+
+  /// Makes a contact pair between two different bodies; returns its number (1, 2, ...).
+  int add_contact_pair(int nonmortar_body, int mortar_body) {
+    int pair = 0;
+    check(::mc_add_contact_pair(get(), nonmortar_body, mortar_body, &pair));
+    return pair;
+  }
+  /// One side of a pair: body is the pair's non-mortar or mortar body; edges 2 ids each.
+  /// Replaces that side's earlier edges.
+  void set_pair_surface(int pair, int body, mc_int n_edges, const mc_int *edges) {
+    check(::mc_set_pair_surface(get(), pair, body, n_edges, edges));
+  }
+  void set_pair_surface(int pair, int body, const std::vector<mc_int> &edges) {
+    set_pair_surface(pair, body, detail::item_count(edges.size(), 2, "set_pair_surface: edges"),
+                     detail::data_or_empty(edges));
+  }
+  /// One side of a pair of quadratic edges: 3 ids each (end, end, middle).
+  void set_pair_surface_curved(int pair, int body, mc_int n_edges, const mc_int *edges) {
+    check(::mc_set_pair_surface_curved(get(), pair, body, n_edges, edges));
+  }
+  void set_pair_surface_curved(int pair, int body, const std::vector<mc_int> &edges) {
+    set_pair_surface_curved(pair, body, detail::item_count(edges.size(), 3, "set_pair_surface_curved: edges"),
+                            detail::data_or_empty(edges));
+  }
+  /// Initial-gap offsets of the pair's non-mortar nodes, 1 per node (as set_gap_offset for pair 1).
+  void set_pair_gap_offset(int pair, mc_int n, const mc_int *nodes, const double *offset) {
+    check(::mc_set_pair_gap_offset(get(), pair, n, nodes, offset));
+  }
+  void set_pair_gap_offset(int pair, const std::vector<mc_int> &nodes, const std::vector<double> &offset) {
+    set_pair_gap_offset(pair, detail::paired_count(nodes, 1, offset, 1, "set_pair_gap_offset"),
+                        detail::data_or_empty(nodes), detail::data_or_empty(offset));
   }
 
   // ---- host bodies: a legacy program's own matrices ----
@@ -528,6 +578,32 @@ class Model {
   void get_contact_normal(double *n) const { check(::mc_get_contact_normal(get(), n)); }
   std::vector<double> get_contact_normal() const { return per_contact_node<double>(2, ::mc_get_contact_normal); }
 
+  /// After a solve: the number of the pair's contact positions (the length of its contact arrays).
+  mc_int get_pair_contact_count(int pair) const {
+    mc_int n = 0;
+    check(::mc_get_pair_contact_count(get(), pair, &n));
+    return n;
+  }
+  /// Their node ids on the non-mortar body (index base applies).
+  void get_pair_contact_nodes(int pair, mc_int *nodes) const { check(::mc_get_pair_contact_nodes(get(), pair, nodes)); }
+  std::vector<mc_int> get_pair_contact_nodes(int pair) const {
+    std::vector<mc_int> nodes(static_cast<std::size_t>(get_pair_contact_count(pair)));
+    mc_int none = 0;
+    check(::mc_get_pair_contact_nodes(get(), pair, nodes.empty() ? &none : nodes.data()));
+    return nodes;
+  }
+  /// A field of the pair's contact positions: 1 value per position, 2 (x, y) for ContactField::normal.
+  void get_pair_contact(int pair, ContactField field, double *out) const {
+    check(::mc_get_pair_contact(get(), pair, static_cast<int>(field), out));
+  }
+  std::vector<double> get_pair_contact(int pair, ContactField field) const {
+    const std::size_t per_position = field == ContactField::normal ? 2 : 1;
+    std::vector<double> values(per_position * static_cast<std::size_t>(get_pair_contact_count(pair)));
+    double none = 0;
+    get_pair_contact(pair, field, values.empty() ? &none : values.data());
+    return values;
+  }
+
   // ---- output ----
 
   void write_vtu(const std::string &path) const { check(::mc_write_vtu(get(), path.c_str())); }
@@ -547,10 +623,16 @@ class Model {
     if (status != MC_OK) throw Error(static_cast<Status>(status), ::mc_errmsg(get()));
   }
 
-  // Bodies are 1 and 2; any other number is left to the C call to reject with its message.
-  MeshSize &mesh_of(int body) { return meshes_[body == 2 ? 1 : 0]; }
+  // Called after a successful C call, so body is 1..N (meshes_ grows if the count was set
+  // through the raw handle); any other number is left to the C call to reject with its message.
+  MeshSize &mesh_of(int body) {
+    const auto index = static_cast<std::size_t>(body - 1);
+    if (index >= meshes_.size()) meshes_.resize(index + 1);
+    return meshes_[index];
+  }
   MeshSize known_mesh(int body) const {
-    const MeshSize mesh = (body == 1 || body == 2) ? meshes_[static_cast<std::size_t>(body - 1)] : MeshSize{};
+    const MeshSize mesh =
+        (body >= 1 && static_cast<std::size_t>(body) <= meshes_.size()) ? meshes_[static_cast<std::size_t>(body - 1)] : MeshSize{};
     if (!mesh.known())
       throw Error(Status::error_state, "body " + std::to_string(body) +
                                            " has no mesh or host body set through this Model: the array size is unknown");
@@ -587,7 +669,7 @@ class Model {
   }
 
   std::unique_ptr<mc_model, Destroy> handle_;
-  std::array<MeshSize, 2> meshes_{};
+  std::vector<MeshSize> meshes_ = std::vector<MeshSize>(2);  // bodies 1..N
   int base_ = 0;  // the index base set through this Model
   std::unique_ptr<detail::LogRelay> log_;
 };

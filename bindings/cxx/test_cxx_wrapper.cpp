@@ -4,7 +4,8 @@
 // way, and which one ran; the error estimate on and off; the multipliers' values), the log
 // callback, a contact solve (the README's scene: uniform pressure 0.1 transmitted exactly), and
 // the same scene with body 1 a host body (its stiffness assembled here, given as coordinate
-// entries in both storages and as element matrices).
+// entries in both storages and as element matrices); assemblies: three stacked blocks as three
+// bodies in two contact pairs (a patch test: every pressure of both pairs is p), bad bodies and pairs.
 // Whether every C function and constant has its wrapper: check_cxx_wrapper.py (cxx_wrapper_coverage).
 #include <mortarcontact.hpp>
 
@@ -536,6 +537,138 @@ void test_host_body_errors() {
   EXPECT_ERROR(mc::Status::error_argument, a.solve());
   EXPECT_ERROR(mc::Status::error_argument, a.add_stiffness(1, {0, 2}, {1, 1}, {1.0, 1.0}, mc::MatrixStorage::triangle));
 }
+
+// ---- assemblies: bodies 1..N and contact pairs ----
+
+/// A block [0, 1] x [y0, y0 + 1] of nx x 1 cells, P1 triangles, ids from `base`: node (i, j) is
+/// j (nx + 1) + i; its bottom and top as edge chains (left to right), its left side's nodes.
+struct Block {
+  std::vector<double> xy;
+  std::vector<mc_int> cells, bottom, top, left, bottom_nodes;
+};
+
+Block make_block(int nx, double y0, int base) {
+  Block b;
+  const auto id = [&](int i, int j) { return static_cast<mc_int>(j * (nx + 1) + i + base); };
+  for (int j = 0; j <= 1; ++j)
+    for (int i = 0; i <= nx; ++i) {
+      b.xy.push_back(static_cast<double>(i) / nx);
+      b.xy.push_back(y0 + j);
+    }
+  for (int i = 0; i < nx; ++i) {
+    b.cells.insert(b.cells.end(), {id(i, 0), id(i + 1, 0), id(i + 1, 1), id(i, 0), id(i + 1, 1), id(i, 1)});
+    b.bottom.insert(b.bottom.end(), {id(i, 0), id(i + 1, 0)});
+    b.top.insert(b.top.end(), {id(i, 1), id(i + 1, 1)});
+  }
+  for (int i = 0; i <= nx; ++i) b.bottom_nodes.push_back(id(i, 0));
+  b.left = {id(0, 0), id(0, 1)};
+  return b;
+}
+
+constexpr double kStackP = 0.25;
+
+/// Blocks of 3, 5 and 4 cells across (non-matching) as bodies 1 (top), 2, 3 (bottom); rollers on
+/// every left side, body 3 on rollers at y = 0, p on body 1's top; pairs (1 on 2), (2 on 3).
+/// Bodies 1 and 2 are held in y by contact alone.
+std::vector<Block> set_stack_scene(mc::Model &m, int base) {
+  std::vector<Block> blocks{make_block(3, 2.0, base), make_block(5, 1.0, base), make_block(4, 0.0, base)};
+  m.set_body_count(3);
+  for (int body = 1; body <= 3; ++body) {
+    const Block &b = blocks[static_cast<std::size_t>(body - 1)];
+    m.set_mesh(body, b.xy, b.cells, 3);
+    m.set_material(body, 2.0, 0.3);
+    m.fix(body, b.left, mc::Components::x);
+  }
+  m.fix(3, blocks[2].bottom_nodes, mc::Components::y);
+  m.add_pressure(1, blocks[0].top, std::vector<double>(blocks[0].top.size() / 2, kStackP));
+  for (int upper = 1; upper <= 2; ++upper) {
+    const int pair = m.add_contact_pair(upper, upper + 1);
+    EXPECT(pair == upper);  // numbered 1, 2 in the order made, whatever the index base
+    m.set_pair_surface(pair, upper, blocks[static_cast<std::size_t>(upper - 1)].bottom);
+    m.set_pair_surface(pair, upper + 1, blocks[static_cast<std::size_t>(upper)].top);
+  }
+  return blocks;
+}
+
+void test_three_blocks_two_pairs() {
+  for (int base = 0; base <= 1; ++base) {
+    mc::Model m(base);
+    const std::vector<Block> blocks = set_stack_scene(m, base);
+    m.solve();
+    mc_int positions = 0;
+    for (int pair = 1; pair <= 2; ++pair) {
+      const std::vector<mc_int> &expected = blocks[static_cast<std::size_t>(pair - 1)].bottom_nodes;
+      const mc_int n = m.get_pair_contact_count(pair);
+      positions += n;
+      EXPECT(static_cast<std::size_t>(n) == expected.size());
+      std::vector<mc_int> nodes = m.get_pair_contact_nodes(pair);
+      std::sort(nodes.begin(), nodes.end());
+      EXPECT(nodes == expected);
+      const std::vector<double> p = m.get_pair_contact(pair, mc::ContactField::pressure);
+      EXPECT(p.size() == expected.size());
+      for (double value : p) expect(std::fabs(value - kStackP) <= 1e-10 * kStackP, ("pressure " + std::to_string(value)).c_str(), __LINE__);
+      const std::vector<double> force = m.get_pair_contact(pair, mc::ContactField::force);
+      double total = 0;
+      for (double f : force) total += f;
+      EXPECT(std::fabs(total - kStackP) <= 1e-10 * kStackP);  // p times the width 1
+      const std::vector<double> normal = m.get_pair_contact(pair, mc::ContactField::normal);
+      EXPECT(normal.size() == 2 * expected.size());
+      for (std::size_t k = 0; k < normal.size(); k += 2) EXPECT(near(normal[k], 0.0) && near(normal[k + 1], -1.0));
+      for (double g0 : m.get_pair_contact(pair, mc::ContactField::initial_gap)) EXPECT(std::fabs(g0) < 1e-14);
+      for (double g : m.get_pair_contact(pair, mc::ContactField::gap)) EXPECT(std::fabs(g) < 1e-10);
+      // the pointer overloads
+      std::vector<double> p_raw(static_cast<std::size_t>(n));
+      m.get_pair_contact(pair, mc::ContactField::pressure, p_raw.data());
+      EXPECT(p_raw == p);
+      std::vector<mc_int> nodes_raw(static_cast<std::size_t>(n));
+      m.get_pair_contact_nodes(pair, nodes_raw.data());
+      EXPECT(nodes_raw == m.get_pair_contact_nodes(pair));
+    }
+    EXPECT(m.get_info_int(mc::Info::active_nodes) == positions);
+    EXPECT(m.get_contact_pressure() == m.get_pair_contact(1, mc::ContactField::pressure));  // pair 1
+    for (int body = 1; body <= 3; ++body) {  // the uniform stress in every body, read by number
+      const std::vector<double> sigma = m.get_stress(body);
+      EXPECT(sigma.size() == 4 * blocks[static_cast<std::size_t>(body - 1)].cells.size() / 3);
+      for (std::size_t c = 0; c < sigma.size(); c += 4)
+        EXPECT(std::fabs(sigma[c + 1] + kStackP) <= 1e-10 * kStackP && std::fabs(sigma[c]) <= 1e-10 * kStackP);
+    }
+    EXPECT(m.get_displacement(3).size() == blocks[2].xy.size());
+  }
+  // an interference on pair 2, given before the solve: the two upper blocks rise by it
+  mc::Model plain, offset;
+  const std::vector<Block> blocks = set_stack_scene(plain, 0);
+  set_stack_scene(offset, 0);
+  const double delta = 1e-3;
+  offset.set_pair_gap_offset(2, blocks[1].bottom_nodes, std::vector<double>(blocks[1].bottom_nodes.size(), -delta));
+  plain.solve();
+  offset.solve();
+  for (double g0 : offset.get_pair_contact(2, mc::ContactField::initial_gap)) EXPECT(near(g0, -delta));
+  for (double value : offset.get_pair_contact(2, mc::ContactField::pressure)) EXPECT(std::fabs(value - kStackP) <= 1e-10 * kStackP);
+  const std::vector<double> u0 = plain.get_displacement(1), u1 = offset.get_displacement(1);
+  for (std::size_t k = 1; k < u0.size(); k += 2) EXPECT(std::fabs(u1[k] - u0[k] - delta) <= 1e-8 * delta);
+}
+
+void test_pair_errors() {
+  mc::Model m;
+  EXPECT(EXPECT_ERROR(mc::Status::error_argument, m.set_body_count(1)).find("n = 1") != std::string::npos);
+  m.set_body_count(3);
+  const std::string message = EXPECT_ERROR(mc::Status::error_argument, m.add_contact_pair(2, 2));
+  EXPECT(message.find("two different bodies") != std::string::npos);
+  EXPECT(message == m.errmsg());  // the library's message
+  EXPECT(m.add_contact_pair(1, 2) == 1);  // usable afterwards
+  EXPECT(EXPECT_ERROR(mc::Status::error_argument, m.set_pair_surface(2, 1, {0, 1})).find("pair = 2") != std::string::npos);
+  EXPECT_ERROR(mc::Status::error_argument, m.set_pair_surface(1, 3, {0, 1}));          // body 3 is not in pair 1
+  EXPECT_ERROR(mc::Status::error_argument, m.set_pair_surface(1, 1, {0, 1, 2}));       // the wrapper: 2 ids per edge
+  EXPECT_ERROR(mc::Status::error_argument, m.set_pair_surface_curved(1, 1, {0, 1}));   // 3 ids per edge
+  EXPECT_ERROR(mc::Status::error_argument, m.set_pair_gap_offset(1, {0, 1}, {0.1}));   // 1 offset per node
+  EXPECT_ERROR(mc::Status::error_state, m.get_pair_contact_count(1));                  // no solve yet
+  EXPECT_ERROR(mc::Status::error_state, m.get_displacement(3));  // a body without a mesh: size unknown
+  const Block block = make_block(2, 0.0, 0);
+  m.set_mesh(3, block.xy, block.cells, 3);
+  EXPECT(m.add_contact_pair(2, 3) == 2);
+  EXPECT_ERROR(mc::Status::error_state, m.set_body_count(2));  // pair 2 uses body 3
+  EXPECT_ERROR(mc::Status::error_state, m.get_stress(3));  // still body 3's mesh: no solution yet
+}
 }  // namespace
 
 int main() {
@@ -554,6 +687,8 @@ int main() {
   test_write_vtu();
   test_host_body_matches_mesh_body();
   test_host_body_errors();
+  test_three_blocks_two_pairs();
+  test_pair_errors();
   if (failures) {
     std::fprintf(stderr, "%d check(s) failed\n", failures);
     return 1;

@@ -6,7 +6,8 @@
 !>    change it back; the wrappers pass ids through unchanged);
 !>  - arrays are assumed-shape, one column per node/cell/edge: xy(2, n_nodes),
 !>    cells(nodes_per_cell, n_cells), edges(2, n_edges), d(3, 3, n_cells), u(2, n_nodes),
-!>    sigma(4, n_cells) (mc_get_nodal_stress: sigma(4, n_nodes)), eta(n_cells); the counts
+!>    sigma(4, n_cells) (mc_get_nodal_stress: sigma(4, n_nodes)), eta(n_cells), a contact pair's
+!>    values(n_contact) (MC_CONTACT_NORMAL: values(2, n_contact)); the counts
 !>    come from the shapes, and each shape is checked before the C call: a wrong one returns
 !>    MC_ERROR_ARGUMENT (MC_ERROR_STATE when the body has no mesh yet) with a message, and
 !>    the C library is not called;
@@ -61,6 +62,8 @@ module mortarcontact
   integer, parameter, public :: MC_INTERFACE_AUTO = 0, MC_INTERFACE_CONDENSED = 1, &
        MC_INTERFACE_SPARSE = 2
   integer, parameter, public :: MC_MULTIPLIER_LINEAR = 0, MC_MULTIPLIER_QUADRATIC = 1
+  integer, parameter, public :: MC_CONTACT_PRESSURE = 1, MC_CONTACT_FORCE = 2, MC_CONTACT_GAP = 3, &
+       MC_CONTACT_INITIAL_GAP = 4, MC_CONTACT_NORMAL = 5
   integer, parameter, public :: MC_MATRIX_FULL = 1, MC_MATRIX_TRIANGLE = 2
   integer, parameter, public :: MC_LOG_PHASE = 1, MC_LOG_ITERATION = 2
   integer, parameter, public :: MC_INFO_DOFS = 1, MC_INFO_FACTOR_NNZ = 2, MC_INFO_ITERATIONS = 3, &
@@ -75,9 +78,10 @@ module mortarcontact
   type, public :: mc_model
      private
      type(c_ptr) :: ptr = c_null_ptr
-     integer(mc_int) :: n_nodes(2) = -1   ! mesh sizes, known from successful mc_set_mesh calls
-     integer(mc_int) :: n_cells(2) = -1   ! (and mc_set_host_body calls: no cells)
-     integer(mc_int) :: n_equations(2) = 0  ! a host body's system size; 0 for a mesh body
+     ! per body 1..N (N = 2 until mc_set_body_count; unallocated before mc_create):
+     integer(mc_int), allocatable :: n_nodes(:)   ! mesh sizes, known from successful mc_set_mesh
+     integer(mc_int), allocatable :: n_cells(:)   ! calls (and mc_set_host_body calls: no cells); -1: none
+     integer(mc_int), allocatable :: n_equations(:)  ! a host body's system size; 0 for a mesh body
      integer :: base = 1                  ! the index base set through the wrapper
      character(len=:), allocatable :: msg ! message of the last failed call
   end type mc_model
@@ -94,6 +98,8 @@ module mortarcontact
   public :: mc_set_gap_offset, mc_set_log_callback, mc_write_vtu, mc_log_fn, mc_log_message
   public :: mc_set_host_body, mc_add_stiffness, mc_add_element_matrices, mc_add_element_matrices_sg
   public :: mc_set_load_vector, mc_get_equation_solution, mc_get_contact_load, mc_set_contact_curved
+  public :: mc_set_body_count, mc_add_contact_pair, mc_set_pair_surface, mc_set_pair_surface_curved
+  public :: mc_set_pair_gap_offset, mc_get_pair_contact_count, mc_get_pair_contact_nodes, mc_get_pair_contact
 
   !> The log callback (mc_set_log_callback): a bind(C) subroutine of this interface, e.g.
   !>   subroutine my_log(user_data, level, message) bind(C)
@@ -118,6 +124,11 @@ module mortarcontact
   interface mc_get_info_int
      module procedure get_info_int32, get_info_int64
   end interface mc_get_info_int
+  !> A field of a pair's contact positions: values(n_contact), or values(2, n_contact) for
+  !> MC_CONTACT_NORMAL.
+  interface mc_get_pair_contact
+     module procedure get_pair_contact_1, get_pair_contact_2
+  end interface mc_get_pair_contact
 
   ! ---- the C API, one interface per function of mortarcontact.h ----------------------------
   interface
@@ -234,6 +245,59 @@ module mortarcontact
        integer(c_int32_t), value :: n
        integer(c_int32_t), intent(in) :: nodes(*)
        real(c_double), intent(in) :: offset(*)
+     end function
+     integer(c_int) function c_mc_set_body_count(m, n) bind(C, name="mc_set_body_count")
+       import :: c_ptr, c_int
+       type(c_ptr), value :: m
+       integer(c_int), value :: n
+     end function
+     integer(c_int) function c_mc_add_contact_pair(m, nonmortar_body, mortar_body, pair) &
+          bind(C, name="mc_add_contact_pair")
+       import :: c_ptr, c_int
+       type(c_ptr), value :: m
+       integer(c_int), value :: nonmortar_body, mortar_body
+       integer(c_int), intent(out) :: pair
+     end function
+     integer(c_int) function c_mc_set_pair_surface(m, pair, body, n_edges, edges) bind(C, name="mc_set_pair_surface")
+       import :: c_ptr, c_int, c_int32_t
+       type(c_ptr), value :: m
+       integer(c_int), value :: pair, body
+       integer(c_int32_t), value :: n_edges
+       integer(c_int32_t), intent(in) :: edges(*)
+     end function
+     integer(c_int) function c_mc_set_pair_surface_curved(m, pair, body, n_edges, edges) &
+          bind(C, name="mc_set_pair_surface_curved")
+       import :: c_ptr, c_int, c_int32_t
+       type(c_ptr), value :: m
+       integer(c_int), value :: pair, body
+       integer(c_int32_t), value :: n_edges
+       integer(c_int32_t), intent(in) :: edges(*)
+     end function
+     integer(c_int) function c_mc_set_pair_gap_offset(m, pair, n, nodes, offset) bind(C, name="mc_set_pair_gap_offset")
+       import :: c_ptr, c_int, c_int32_t, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: pair
+       integer(c_int32_t), value :: n
+       integer(c_int32_t), intent(in) :: nodes(*)
+       real(c_double), intent(in) :: offset(*)
+     end function
+     integer(c_int) function c_mc_get_pair_contact_count(m, pair, n) bind(C, name="mc_get_pair_contact_count")
+       import :: c_ptr, c_int, c_int32_t
+       type(c_ptr), value :: m
+       integer(c_int), value :: pair
+       integer(c_int32_t), intent(out) :: n
+     end function
+     integer(c_int) function c_mc_get_pair_contact_nodes(m, pair, nodes) bind(C, name="mc_get_pair_contact_nodes")
+       import :: c_ptr, c_int, c_int32_t
+       type(c_ptr), value :: m
+       integer(c_int), value :: pair
+       integer(c_int32_t), intent(out) :: nodes(*)
+     end function
+     integer(c_int) function c_mc_get_pair_contact(m, pair, field, out) bind(C, name="mc_get_pair_contact")
+       import :: c_ptr, c_int, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: pair, field
+       real(c_double), intent(out) :: out(*)
      end function
      integer(c_int) function c_mc_set_host_body(m, body, n_nodes, xy, equations, n_equations) &
           bind(C, name="mc_set_host_body")
@@ -470,17 +534,58 @@ contains
          ' = ' // shape_str(want) // ', got ' // shape_str(got))
   end function shape_ok
 
-  !> Checks that `body` is 1 or 2 and has a mesh known to the wrapper.
+  !> The number of bodies the wrapper knows (2 before mc_create and until mc_set_body_count).
+  integer function body_count(model)
+    type(mc_model), intent(in) :: model
+    body_count = 2
+    if (allocated(model%n_nodes)) body_count = size(model%n_nodes)
+  end function body_count
+
+  !> Whether the wrapper holds the sizes of `body` (1..N of a created model).
+  logical function known_body(model, body)
+    type(mc_model), intent(in) :: model
+    integer, intent(in) :: body
+    known_body = .false.
+    if (allocated(model%n_nodes)) known_body = body >= 1 .and. body <= size(model%n_nodes)
+  end function known_body
+
+  !> Sets the number of bodies whose sizes the wrapper holds: keeps the first ones, the new ones
+  !> have none yet.
+  subroutine resize_bodies(model, n)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: n
+    integer(mc_int), allocatable :: nodes(:), cells(:), equations(:)
+    integer :: keep
+    allocate(nodes(n), cells(n), equations(n))
+    nodes = -1
+    cells = -1
+    equations = 0
+    if (allocated(model%n_nodes)) then
+       keep = min(n, size(model%n_nodes))
+       nodes(1:keep) = model%n_nodes(1:keep)
+       cells(1:keep) = model%n_cells(1:keep)
+       equations(1:keep) = model%n_equations(1:keep)
+    end if
+    call move_alloc(nodes, model%n_nodes)
+    call move_alloc(cells, model%n_cells)
+    call move_alloc(equations, model%n_equations)
+  end subroutine resize_bodies
+
+  !> Checks that `body` is 1..N and has a mesh known to the wrapper.
   logical function body_ok(model, what, body, status)
     type(mc_model), intent(inout) :: model
     character(len=*), intent(in) :: what
     integer, intent(in) :: body
     integer, intent(out) :: status
-    character(len=16) :: buf
+    character(len=16) :: buf, count
     body_ok = .false.
-    if (body /= 1 .and. body /= 2) then
+    if (body < 1 .or. body > body_count(model)) then
        write (buf, '(i0)') body
-       status = fail(model, MC_ERROR_ARGUMENT, what // ': body must be 1 or 2, got ' // trim(buf))
+       write (count, '(i0)') body_count(model)
+       status = fail(model, MC_ERROR_ARGUMENT, what // ': body must be 1 to ' // trim(count) // ', got ' // trim(buf))
+    else if (.not. known_body(model, body)) then
+       write (buf, '(i0)') body
+       status = fail(model, MC_ERROR_STATE, what // ': no mesh or host body set for body ' // trim(buf))
     else if (model%n_nodes(body) < 0) then
        write (buf, '(i0)') body
        status = fail(model, MC_ERROR_STATE, what // ': no mesh or host body set for body ' // trim(buf))
@@ -495,9 +600,8 @@ contains
   !> Creates an empty model with 1-based ids.
   integer function mc_create(model) result(status)
     type(mc_model), intent(inout) :: model
-    model%n_nodes = -1
-    model%n_cells = -1
-    model%n_equations = 0
+    if (allocated(model%n_nodes)) deallocate(model%n_nodes, model%n_cells, model%n_equations)
+    call resize_bodies(model, 2)
     status = c_mc_create(model%ptr)
     if (status /= MC_OK) then
        model%msg = 'mc_create failed: ' // c_string(c_mc_status_string(int(status, c_int)))
@@ -512,9 +616,7 @@ contains
     type(mc_model), intent(inout) :: model
     call c_mc_destroy(model%ptr)
     model%ptr = c_null_ptr
-    model%n_nodes = -1
-    model%n_cells = -1
-    model%n_equations = 0
+    if (allocated(model%n_nodes)) deallocate(model%n_nodes, model%n_cells, model%n_equations)
     model%base = 1
   end subroutine mc_destroy
 
@@ -577,7 +679,7 @@ contains
     if (.not. shape_ok(model, 'mc_set_mesh: xy', shape(xy), [2, size(xy, 2)], '(2, n_nodes)', status)) return
     status = finish(model, c_mc_set_mesh(model%ptr, int(body, c_int), int(size(xy, 2), mc_int), xy, &
          int(size(cells, 2), mc_int), int(size(cells, 1), c_int), cells))
-    if (status == MC_OK .and. (body == 1 .or. body == 2)) then
+    if (status == MC_OK .and. known_body(model, body)) then
        model%n_nodes(body) = size(xy, 2)
        model%n_cells(body) = size(cells, 2)
        model%n_equations(body) = 0
@@ -681,7 +783,17 @@ contains
     status = finish(model, c_mc_clear_loads(model%ptr, int(body, c_int)))
   end function mc_clear_loads
 
-  !> Candidate contact surface: boundary edges(2, n_edges). Body 1 non-mortar, body 2 mortar.
+  !> The number of bodies, n >= 2 (default 2). Growing keeps the bodies there are; shrinking
+  !> drops the last ones (MC_ERROR_STATE while a contact pair uses one of them).
+  integer function mc_set_body_count(model, n) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: n
+    status = finish(model, c_mc_set_body_count(model%ptr, int(n, c_int)))
+    if (status == MC_OK) call resize_bodies(model, n)
+  end function mc_set_body_count
+
+  !> Candidate contact surface: boundary edges(2, n_edges). Body 1 non-mortar, body 2 mortar
+  !> (contact pair 1, made as (1, 2) if the model has no pair yet).
   integer function mc_set_contact(model, body, edges) result(status)
     type(mc_model), intent(inout) :: model
     integer, intent(in) :: body
@@ -702,6 +814,56 @@ contains
     status = finish(model, c_mc_set_gap_offset(model%ptr, int(size(nodes), mc_int), nodes, offset))
   end function mc_set_gap_offset
 
+  ! ---- assemblies: contact pairs --------------------------------------------------------------
+
+  !> Makes a contact pair between two different bodies; pair receives its number (1, 2, ... in
+  !> the order made, whatever the index base).
+  integer function mc_add_contact_pair(model, nonmortar_body, mortar_body, pair) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: nonmortar_body, mortar_body
+    integer, intent(out) :: pair
+    integer(c_int) :: p
+    p = 0
+    status = finish(model, c_mc_add_contact_pair(model%ptr, int(nonmortar_body, c_int), int(mortar_body, c_int), p))
+    pair = int(p)
+  end function mc_add_contact_pair
+
+  !> One side of a pair: body is the pair's non-mortar or mortar body, edges(2, n_edges) as in
+  !> mc_set_contact. Replaces that side's earlier edges.
+  integer function mc_set_pair_surface(model, pair, body, edges) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: pair, body
+    integer(mc_int), intent(in) :: edges(:, :)
+    if (.not. shape_ok(model, 'mc_set_pair_surface: edges', shape(edges), [2, size(edges, 2)], '(2, n_edges)', &
+         status)) return
+    status = finish(model, c_mc_set_pair_surface(model%ptr, int(pair, c_int), int(body, c_int), &
+         int(size(edges, 2), mc_int), edges))
+  end function mc_set_pair_surface
+
+  !> One side of a pair of quadratic edges(3, n_edges): end, end, middle (as mc_set_contact_curved).
+  integer function mc_set_pair_surface_curved(model, pair, body, edges) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: pair, body
+    integer(mc_int), intent(in) :: edges(:, :)
+    if (.not. shape_ok(model, 'mc_set_pair_surface_curved: edges', shape(edges), [3, size(edges, 2)], &
+         '(3, n_edges)', status)) return
+    status = finish(model, c_mc_set_pair_surface_curved(model%ptr, int(pair, c_int), int(body, c_int), &
+         int(size(edges, 2), mc_int), edges))
+  end function mc_set_pair_surface_curved
+
+  !> Adds offset(n) to the initial gap of the pair's non-mortar nodes(n), as mc_set_gap_offset
+  !> does for pair 1; replaces earlier offsets of those nodes.
+  integer function mc_set_pair_gap_offset(model, pair, nodes, offset) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: pair
+    integer(mc_int), intent(in) :: nodes(:)
+    real(mc_real), intent(in) :: offset(:)
+    if (.not. shape_ok(model, 'mc_set_pair_gap_offset: offset', shape(offset), [size(nodes)], '(size(nodes))', &
+         status)) return
+    status = finish(model, c_mc_set_pair_gap_offset(model%ptr, int(pair, c_int), int(size(nodes), mc_int), &
+         nodes, offset))
+  end function mc_set_pair_gap_offset
+
   ! ---- host bodies: a legacy program's own matrices -------------------------------------------
 
   !> Makes a body a host body (no cells): xy(2, n_nodes) the nodes the contact surface and the
@@ -718,7 +880,7 @@ contains
          '(2, n_nodes)', status)) return
     status = finish(model, c_mc_set_host_body(model%ptr, int(body, c_int), int(size(xy, 2), mc_int), xy, &
          equations, int(n_equations, mc_int)))
-    if (status == MC_OK .and. (body == 1 .or. body == 2)) then
+    if (status == MC_OK .and. known_body(model, body)) then
        model%n_nodes(body) = size(xy, 2)
        model%n_cells(body) = 0
        model%n_equations(body) = n_equations
@@ -820,7 +982,7 @@ contains
     type(mc_model), intent(inout) :: model
     integer, intent(in) :: body
     real(mc_real), intent(in) :: f(:)
-    if (body == 1 .or. body == 2) then
+    if (known_body(model, body)) then
        if (model%n_equations(body) > 0) then
           if (.not. shape_ok(model, 'mc_set_load_vector: f', shape(f), [int(model%n_equations(body))], &
                '(n_equations)', status)) return
@@ -1099,6 +1261,70 @@ contains
     if (.not. contact_ok(model, 'mc_get_contact_normal: n', shape(n), 2, status)) return
     status = finish(model, c_mc_get_contact_normal(model%ptr, n))
   end function mc_get_contact_normal
+
+  !> After a solve: the number of the pair's contact positions (the size of its contact arrays).
+  integer function mc_get_pair_contact_count(model, pair, n) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: pair
+    integer(mc_int), intent(out) :: n
+    n = 0
+    status = finish(model, c_mc_get_pair_contact_count(model%ptr, int(pair, c_int), n))
+  end function mc_get_pair_contact_count
+
+  !> The pair's contact count, checked against the shape of a caller's array (rows values per
+  !> position: 1 for a rank-1 array, 2 for MC_CONTACT_NORMAL's values(2, n_contact)).
+  logical function pair_contact_ok(model, what, pair, got, rows, status)
+    type(mc_model), intent(inout) :: model
+    character(len=*), intent(in) :: what
+    integer, intent(in) :: pair, got(:), rows
+    integer, intent(out) :: status
+    integer(mc_int) :: n
+    pair_contact_ok = .false.
+    status = mc_get_pair_contact_count(model, pair, n)
+    if (status /= MC_OK) return
+    if (rows == 1) then
+       pair_contact_ok = shape_ok(model, what, got, [int(n)], '(n_contact)', status)
+    else
+       pair_contact_ok = shape_ok(model, what, got, [rows, int(n)], '(2, n_contact)', status)
+    end if
+  end function pair_contact_ok
+
+  !> The node ids of the pair's contact positions on its non-mortar body, nodes(n_contact).
+  integer function mc_get_pair_contact_nodes(model, pair, nodes) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: pair
+    integer(mc_int), intent(out) :: nodes(:)
+    if (.not. pair_contact_ok(model, 'mc_get_pair_contact_nodes: nodes', pair, shape(nodes), 1, status)) return
+    status = finish(model, c_mc_get_pair_contact_nodes(model%ptr, int(pair, c_int), nodes))
+  end function mc_get_pair_contact_nodes
+
+  !> mc_get_pair_contact with values(n_contact): MC_CONTACT_PRESSURE, _FORCE, _GAP, _INITIAL_GAP.
+  integer function get_pair_contact_1(model, pair, field, values) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: pair, field
+    real(mc_real), intent(out) :: values(:)
+    if (field == MC_CONTACT_NORMAL) then
+       status = fail(model, MC_ERROR_ARGUMENT, 'mc_get_pair_contact: MC_CONTACT_NORMAL gives values(2, n_contact)')
+       return
+    end if
+    if (.not. pair_contact_ok(model, 'mc_get_pair_contact: values', pair, shape(values), 1, status)) return
+    status = finish(model, c_mc_get_pair_contact(model%ptr, int(pair, c_int), int(field, c_int), values))
+  end function get_pair_contact_1
+
+  !> mc_get_pair_contact with values(2, n_contact): MC_CONTACT_NORMAL, the unit outward normals
+  !> of the non-mortar body.
+  integer function get_pair_contact_2(model, pair, field, values) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: pair, field
+    real(mc_real), intent(out) :: values(:, :)
+    if (field /= MC_CONTACT_NORMAL) then
+       status = fail(model, MC_ERROR_ARGUMENT, 'mc_get_pair_contact: values(2, n_contact) is for ' // &
+            'MC_CONTACT_NORMAL; the other fields give values(n_contact)')
+       return
+    end if
+    if (.not. pair_contact_ok(model, 'mc_get_pair_contact: values', pair, shape(values), 2, status)) return
+    status = finish(model, c_mc_get_pair_contact(model%ptr, int(pair, c_int), int(field, c_int), values))
+  end function get_pair_contact_2
 
   ! ---- output ------------------------------------------------------------------------------
 

@@ -4,7 +4,8 @@
 ! the error estimate (MC_INFO_ERROR_ESTIMATE, mc_get_error_indicator, MC_OPTION_ERROR_ESTIMATE),
 ! MC_OPTION_MULTIPLIER's values, and that scene with body 1 a host body held as a Smith and
 ! Griffiths program holds it (nf, g_g, storkm, loads(0:neq)), given through each of the host-body
-! calls, index bases 1 and 0.
+! calls, index bases 1 and 0; assemblies: three stacked blocks as three bodies in two contact pairs
+! (a patch test: every contact pressure of both pairs is p), bad bodies and pairs.
 ! The contact patch test is examples/fortran/patch_test.f90 (also run by ctest).
 
 !> The log callback of the test: counts messages by level and keeps the phase messages.
@@ -66,6 +67,13 @@ program test_mortarcontact
   real(mc_real) :: storkm(6, 6, 2), loads(0:6), kv(6, 6), values(72), sol(6), rload(6), rmesh(8)
   real(mc_real) :: u_mesh(2, 4), p_mesh(2), u_host(2, 4), p_host(2), sol8(8)
   integer :: e, i, j, n_entries, input, base
+  ! assemblies: three stacked blocks, 3, 5 and 4 P1 cells across (non-matching)
+  integer, parameter :: stack_nx(3) = [3, 5, 4]
+  real(mc_real), parameter :: stack_p = 0.25d0
+  integer :: pair
+  integer(mc_int) :: npos
+  real(mc_real), allocatable :: bxy(:, :), pvals(:), pnormal(:, :), sig(:, :), ustack(:, :)
+  integer(mc_int), allocatable :: bcells(:, :), bbottom(:, :), btop(:, :), bleft(:), pnodes(:)
 
   call check(mc_version_number() == MC_HEADER_VERSION_NUMBER, 'mc_version_number')
   call check(mc_version_string() == MC_HEADER_VERSION_STRING, 'mc_version_string = ' // mc_version_string())
@@ -369,6 +377,72 @@ program test_mortarcontact
   call check(mc_set_contact_curved(m, 1, reshape([1, 2, 6], [3, 1])) /= MC_OK, 'a middle of another edge refused')
   call mc_destroy(m)
 
+  ! Assemblies: blocks [0, 1] x [3 - k, 4 - k] as bodies k = 1 (top), 2, 3 (bottom); rollers on
+  ! every left side, body 3 on rollers at y = 0, p on body 1's top; pairs (1 on 2) and (2 on 3).
+  ! Bodies 1 and 2 are held in y by contact alone. The uniform stress is exact: every contact
+  ! pressure of both pairs is p.
+  call expect(mc_create(m), MC_OK, 'mc_create (stack)')
+  call expect(mc_set_body_count(m, 3), MC_OK, 'mc_set_body_count')
+  do k = 1, 3
+     call make_block(stack_nx(k), 3d0 - k)
+     call expect(mc_set_mesh(m, k, bxy, bcells), MC_OK, 'mc_set_mesh (stack)')
+     call expect(mc_set_material(m, k, 2d0, 0.3d0), MC_OK, 'mc_set_material (stack)')
+     call expect(mc_fix(m, k, bleft, MC_X), MC_OK, 'rollers (stack)')
+     if (k == 1) call expect(mc_add_pressure(m, 1, btop, spread(stack_p, 1, size(btop, 2))), MC_OK, &
+          'pressure (stack)')
+     if (k == 3) call expect(mc_fix(m, 3, [(int(i, mc_int), i = 1, stack_nx(3) + 1)], MC_Y), MC_OK, &
+          'base (stack)')
+  end do
+  do k = 1, 2
+     call expect(mc_add_contact_pair(m, k, k + 1, pair), MC_OK, 'mc_add_contact_pair')
+     call check(pair == k, 'pairs numbered 1, 2')
+     call make_block(stack_nx(k), 3d0 - k)
+     call expect(mc_set_pair_surface(m, pair, k, bbottom), MC_OK, 'mc_set_pair_surface (non-mortar)')
+     call make_block(stack_nx(k + 1), 2d0 - k)
+     call expect(mc_set_pair_surface(m, pair, k + 1, btop), MC_OK, 'mc_set_pair_surface (mortar)')
+  end do
+  call expect(mc_solve(m), MC_OK, 'mc_solve (stack)')
+  do k = 1, 2
+     call expect(mc_get_pair_contact_count(m, k, npos), MC_OK, 'mc_get_pair_contact_count')
+     call check(npos == stack_nx(k) + 1, 'a position per node of the non-mortar bottom')
+     allocate(pvals(npos), pnodes(npos), pnormal(2, npos))
+     call expect(mc_get_pair_contact_nodes(m, k, pnodes), MC_OK, 'mc_get_pair_contact_nodes')
+     call check(all([(any(pnodes == i), i = 1, npos)]), 'the pair''s nodes: the bottom row 1..nx+1')
+     call expect(mc_get_pair_contact(m, k, MC_CONTACT_PRESSURE, pvals), MC_OK, 'MC_CONTACT_PRESSURE')
+     call check(all(abs(pvals - stack_p) <= 1d-10 * stack_p), 'every contact pressure is p')
+     call expect(mc_get_pair_contact(m, k, MC_CONTACT_FORCE, pvals), MC_OK, 'MC_CONTACT_FORCE')
+     call check(abs(sum(pvals) - stack_p) <= 1d-10 * stack_p, 'the pair''s forces add up to p times the width')
+     call expect(mc_get_pair_contact(m, k, MC_CONTACT_INITIAL_GAP, pvals), MC_OK, 'MC_CONTACT_INITIAL_GAP')
+     call check(all(abs(pvals) < 1d-14), 'the blocks touch')
+     call expect(mc_get_pair_contact(m, k, MC_CONTACT_NORMAL, pnormal), MC_OK, 'MC_CONTACT_NORMAL')
+     call check(all(abs(pnormal(1, :)) < 1d-12) .and. all(abs(pnormal(2, :) + 1) < 1d-12), 'normals (0, -1)')
+     call expect(mc_get_pair_contact(m, k, MC_CONTACT_NORMAL, pvals), MC_ERROR_ARGUMENT, 'normals need (2, n)')
+     call expect(mc_get_pair_contact(m, k, MC_CONTACT_GAP, pnormal), MC_ERROR_ARGUMENT, 'gaps need (n)')
+     call expect(mc_get_pair_contact(m, k, MC_CONTACT_GAP, pvals(2:)), MC_ERROR_ARGUMENT, 'gaps of size n - 1')
+     call check(index(mc_errmsg(m), '(n_contact)') > 0, 'message: ' // mc_errmsg(m))
+     if (k == 1) then  ! the two-body getters read pair 1
+        call expect(mc_get_contact_pressure(m, pvals), MC_OK, 'mc_get_contact_pressure (pair 1)')
+        call check(all(abs(pvals - stack_p) <= 1d-10 * stack_p), 'pair 1 through the two-body getter')
+     end if
+     deallocate(pvals, pnodes, pnormal)
+  end do
+  allocate(sig(4, 2 * stack_nx(3)), ustack(2, 2 * (stack_nx(3) + 1)))
+  call expect(mc_get_stress(m, 3, sig), MC_OK, 'mc_get_stress of body 3')
+  call check(all(abs(sig(2, :) + stack_p) <= 1d-10 * stack_p) .and. all(abs(sig(1, :)) <= 1d-10 * stack_p), &
+       'body 3: sigma_yy = -p, sigma_xx = 0')
+  call expect(mc_get_displacement(m, 3, ustack), MC_OK, 'mc_get_displacement of body 3')
+  ! bad input: the library's status and message; the wrapper's for a body beyond the count
+  call expect(mc_add_contact_pair(m, 2, 2, pair), MC_ERROR_ARGUMENT, 'a pair of a body with itself')
+  call check(index(mc_errmsg(m), 'two different bodies') > 0, 'message: ' // mc_errmsg(m))
+  call expect(mc_get_displacement(m, 4, ustack), MC_ERROR_ARGUMENT, 'body 4 of 3')
+  call check(index(mc_errmsg(m), 'body must be 1 to 3') > 0, 'message: ' // mc_errmsg(m))
+  call expect(mc_set_pair_surface(m, 3, 1, bbottom), MC_ERROR_ARGUMENT, 'pair 3 of 2')
+  call check(index(mc_errmsg(m), 'pair = 3') > 0, 'message: ' // mc_errmsg(m))
+  call expect(mc_set_pair_surface(m, 1, 1, reshape([1, 2, 3], [3, 1])), MC_ERROR_ARGUMENT, 'edges(3, 1)')
+  call expect(mc_set_body_count(m, 2), MC_ERROR_STATE, 'dropping body 3, which pair 2 uses')
+  call expect(mc_get_displacement(m, 3, ustack), MC_OK, 'body 3 kept')
+  call mc_destroy(m)
+
   if (failures > 0) then
      print '(i0, a)', failures, ' check(s) failed'
      error stop 1
@@ -389,6 +463,28 @@ contains
     call expect(mc_fix(model, 2, [1, 2] - shift, MC_Y), MC_OK, 'base 2')
     call expect(mc_set_contact(model, 2, reshape([3, 4] - shift, [2, 1])), MC_OK, 'contact 2')
   end subroutine readme_body_2
+
+  !> A block [0, 1] x [y0, y0 + 1] of nx x 1 P1 cells, node (i, j) numbered j (nx + 1) + i + 1,
+  !> into bxy, bcells, bbottom and btop (edge chains, left to right) and bleft (the left side).
+  subroutine make_block(nx, y0)
+    integer, intent(in) :: nx
+    real(mc_real), intent(in) :: y0
+    integer :: a, b
+    if (allocated(bxy)) deallocate(bxy, bcells, bbottom, btop, bleft)
+    allocate(bxy(2, 2 * (nx + 1)), bcells(3, 2 * nx), bbottom(2, nx), btop(2, nx))
+    do b = 0, 1
+       do a = 0, nx
+          bxy(:, b * (nx + 1) + a + 1) = [real(a, mc_real) / nx, y0 + b]
+       end do
+    end do
+    do a = 1, nx
+       bcells(:, 2 * a - 1) = int([a, a + 1, nx + 2 + a], mc_int)
+       bcells(:, 2 * a) = int([a, nx + 2 + a, nx + 1 + a], mc_int)
+       bbottom(:, a) = int([a, a + 1], mc_int)
+       btop(:, a) = int([nx + 1 + a, nx + 2 + a], mc_int)
+    end do
+    bleft = int([1, nx + 2], mc_int)
+  end subroutine make_block
 
   !> The plane-strain stiffness of a P1 triangle, freedoms x1 y1 x2 y2 x3 y3.
   function p1_km(coord, nodes, young, poisson) result(km)

@@ -388,7 +388,7 @@ void Model::solve() {
   } else {
     for_each_body(load_step);
   }
-  if (contact_) merge_gap_offsets();
+  if (contact_) merge_gap_offsets();  // values: offsets set since the last solve count
   double t_loads = 0;
   for (const LoadSolve &l : loads) t_loads += l.seconds;
   progress(MC_LOG_PHASE, "loads: load vectors and %s, %.3g s", contact_ ? "forward solves y = L^-1 P f" : "solves v = K^-1 f",

@@ -20,6 +20,11 @@ Two layers, both thin:
   `SparseMatrixCSC`, any matrix, or coordinate vectors), `add_element_matrices!` (MUMPS's
   `eltptr`/`eltvar`/`a_elt`, or Smith and Griffiths' `g_g` and `storkm`), `set_load_vector!`,
   `get_equation_solution`, `get_contact_load`; `set_contact_curved!` for 3-node edges.
+- Assemblies: `set_body_count!` (bodies 1..N), `add_contact_pair!` (returns the pair's number,
+  1, 2, ... whatever the index base), `set_pair_surface!`, `set_pair_surface_curved!`,
+  `set_pair_gap_offset!`, `get_pair_contact_count`, `get_pair_contact_nodes` and
+  `get_pair_contact(m, pair, field)` with `MC_CONTACT_PRESSURE`, `_FORCE`, `_GAP`, `_INITIAL_GAP`
+  (a vector) or `MC_CONTACT_NORMAL` (2×n_contact).
 
 The library is `libmortarcontact.so.0`, loaded from `ENV["MORTARCONTACT_LIBRARY"]` (full path)
 if set, else from the install prefix this package was installed into
@@ -52,6 +57,8 @@ export set_index_base!, set_plane!, set_mesh!, set_material!, set_cell_elasticit
        write_vtu
 export set_host_body!, add_stiffness!, add_element_matrices!, set_load_vector!, get_equation_solution,
        get_contact_load, set_contact_curved!
+export set_body_count!, add_contact_pair!, set_pair_surface!, set_pair_surface_curved!, set_pair_gap_offset!,
+       get_pair_contact_count, get_pair_contact_nodes, get_pair_contact
 
 # Resolved by soname: __init__ dlopens the chosen file first, and the dynamic loader then
 # matches this name against the already-loaded library's soname.
@@ -135,6 +142,11 @@ const MC_INTERFACE_CONDENSED = Cint(1)
 const MC_INTERFACE_SPARSE = Cint(2)
 const MC_MULTIPLIER_LINEAR = Cint(0)
 const MC_MULTIPLIER_QUADRATIC = Cint(1)
+const MC_CONTACT_PRESSURE = Cint(1)
+const MC_CONTACT_FORCE = Cint(2)
+const MC_CONTACT_GAP = Cint(3)
+const MC_CONTACT_INITIAL_GAP = Cint(4)
+const MC_CONTACT_NORMAL = Cint(5)
 const MC_MATRIX_FULL = Cint(1)
 const MC_MATRIX_TRIANGLE = Cint(2)
 const MC_LOG_PHASE = Cint(1)
@@ -204,6 +216,25 @@ mc_set_contact(m, body, n_edges, edges) =
 mc_set_gap_offset(m, n, nodes, offset) =
     ccall((:mc_set_gap_offset, libmortarcontact), Cint, (Ptr{Cvoid}, Int32, Ptr{Int32}, Ptr{Cdouble}),
           m, n, nodes, offset)
+mc_set_body_count(m, n) = ccall((:mc_set_body_count, libmortarcontact), Cint, (Ptr{Cvoid}, Cint), m, n)
+mc_add_contact_pair(m, nonmortar_body, mortar_body, pair) =
+    ccall((:mc_add_contact_pair, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Cint, Ref{Cint}),
+          m, nonmortar_body, mortar_body, pair)
+mc_set_pair_surface(m, pair, body, n_edges, edges) =
+    ccall((:mc_set_pair_surface, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Cint, Int32, Ptr{Int32}),
+          m, pair, body, n_edges, edges)
+mc_set_pair_surface_curved(m, pair, body, n_edges, edges) =
+    ccall((:mc_set_pair_surface_curved, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Cint, Int32, Ptr{Int32}),
+          m, pair, body, n_edges, edges)
+mc_set_pair_gap_offset(m, pair, n, nodes, offset) =
+    ccall((:mc_set_pair_gap_offset, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Int32, Ptr{Int32}, Ptr{Cdouble}),
+          m, pair, n, nodes, offset)
+mc_get_pair_contact_count(m, pair, n) =
+    ccall((:mc_get_pair_contact_count, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Ref{Int32}), m, pair, n)
+mc_get_pair_contact_nodes(m, pair, nodes) =
+    ccall((:mc_get_pair_contact_nodes, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Ptr{Int32}), m, pair, nodes)
+mc_get_pair_contact(m, pair, field, out) =
+    ccall((:mc_get_pair_contact, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Cint, Ptr{Cdouble}), m, pair, field, out)
 mc_set_host_body(m, body, n_nodes, xy, equations, n_equations) =
     ccall((:mc_set_host_body, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Int32, Ptr{Cdouble}, Ptr{Int32}, Int32),
           m, body, n_nodes, xy, equations, n_equations)
@@ -287,7 +318,7 @@ One scene (`mc_model`). Freed by `close(m)` or, failing that, by its finalizer.
 """
 mutable struct Model
     ptr::Ptr{Cvoid}
-    n_nodes::Vector{Int}   # per body; -1 = no mesh or host body yet
+    n_nodes::Vector{Int}   # per body 1..N (N = 2 until set_body_count!); -1 = no mesh or host body yet
     n_cells::Vector{Int}   # 0 for a host body
     n_equations::Vector{Int}  # a host body's system size; 0 for a mesh body
     base::Int              # the index base set through this Model
@@ -337,7 +368,7 @@ end
 argerror(msg) = throw(MortarContactError(MC_ERROR_ARGUMENT, msg))
 
 function checkbody(m::Model, body, what)
-    body in (1, 2) || argerror("$what: body must be 1 or 2, got $body")
+    1 <= body <= length(m.n_nodes) || argerror("$what: body must be 1 to $(length(m.n_nodes)), got $body")
     m.n_nodes[body] >= 0 ||
         throw(MortarContactError(MC_ERROR_STATE, "$what: no mesh or host body set for body $body"))
     return nothing
@@ -365,7 +396,7 @@ function set_mesh!(m::Model, body::Integer, xy::AbstractMatrix{<:Real}, cells::A
     size(xy, 1) == 2 || argerror("xy must be 2×n_nodes, got $(size(xy))")
     x, c = reals(xy), ids(cells)
     check(m, mc_set_mesh(m, body, size(x, 2), x, size(c, 2), size(c, 1), c))
-    if body in (1, 2)
+    if 1 <= body <= length(m.n_nodes)
         m.n_nodes[body] = size(x, 2)
         m.n_cells[body] = size(c, 2)
         m.n_equations[body] = 0
@@ -418,10 +449,53 @@ end
 set_body_force!(m::Model, body::Integer, fx::Real, fy::Real) = check(m, mc_set_body_force(m, body, fx, fy))
 clear_loads!(m::Model, body::Integer) = check(m, mc_clear_loads(m, body))
 
-"""Candidate contact surface, `edges` 2×n_edges; body 1 non-mortar, body 2 mortar."""
+"""Candidate contact surface, `edges` 2×n_edges; body 1 non-mortar, body 2 mortar (contact pair
+1, made as (1, 2) if the model has no pair yet)."""
 function set_contact!(m::Model, body::Integer, edges::AbstractMatrix{<:Integer})
     checkshape(edges, (2, size(edges, 2)), "edges")
     check(m, mc_set_contact(m, body, size(edges, 2), ids(edges)))
+end
+
+# ---- assemblies: bodies 1..N and contact pairs --------------------------------------------------
+
+"""The number of bodies, `n` ≥ 2 (default 2). Growing keeps the bodies there are; shrinking drops the
+last ones (`MC_ERROR_STATE` while a contact pair uses one of them)."""
+function set_body_count!(m::Model, n::Integer)
+    check(m, mc_set_body_count(m, n))
+    for (sizes, none) in ((m.n_nodes, -1), (m.n_cells, -1), (m.n_equations, 0))
+        old = length(sizes)
+        resize!(sizes, n)
+        n > old && fill!(view(sizes, old+1:n), none)
+    end
+    return nothing
+end
+
+"""Makes a contact pair between two different bodies and returns its number (1, 2, ... in the order
+made, whatever the index base). The non-mortar body carries the constraint, the mortar body is the
+surface it is measured against."""
+function add_contact_pair!(m::Model, nonmortar_body::Integer, mortar_body::Integer)
+    pair = Ref{Cint}(0)
+    check(m, mc_add_contact_pair(m, nonmortar_body, mortar_body, pair))
+    return Int(pair[])
+end
+
+"""One side of a pair: `body` its non-mortar or mortar body, `edges` 2×n_edges (as `set_contact!`).
+Replaces that side's earlier edges."""
+function set_pair_surface!(m::Model, pair::Integer, body::Integer, edges::AbstractMatrix{<:Integer})
+    checkshape(edges, (2, size(edges, 2)), "edges")
+    check(m, mc_set_pair_surface(m, pair, body, size(edges, 2), ids(edges)))
+end
+
+"""One side of a pair of quadratic edges, `edges` 3×n_edges: end, end, middle (as `set_contact_curved!`)."""
+function set_pair_surface_curved!(m::Model, pair::Integer, body::Integer, edges::AbstractMatrix{<:Integer})
+    checkshape(edges, (3, size(edges, 2)), "edges")
+    check(m, mc_set_pair_surface_curved(m, pair, body, size(edges, 2), ids(edges)))
+end
+
+"""Adds `offset` to the initial gap of the pair's non-mortar `nodes` (as `set_gap_offset!` for pair 1)."""
+function set_pair_gap_offset!(m::Model, pair::Integer, nodes::AbstractVector{<:Integer}, offset::AbstractVector{<:Real})
+    checkshape(offset, (length(nodes),), "offset")
+    check(m, mc_set_pair_gap_offset(m, pair, length(nodes), ids(nodes), reals(offset)))
 end
 
 # ---- host bodies: a legacy program's own matrices ----------------------------------------------
@@ -441,7 +515,7 @@ function set_host_body!(m::Model, body::Integer, xy::AbstractMatrix{<:Real}, equ
     checkshape(equations, (2, size(xy, 2)), "equations")
     x, eq = reals(xy), ids(equations)
     check(m, mc_set_host_body(m, body, size(x, 2), x, eq, n_equations))
-    if body in (1, 2)
+    if 1 <= body <= length(m.n_nodes)
         m.n_nodes[body] = size(x, 2)
         m.n_cells[body] = 0
         m.n_equations[body] = n_equations
@@ -469,7 +543,7 @@ end
 
 function add_stiffness!(m::Model, body::Integer, K::AbstractMatrix{<:Real}; storage::Integer=MC_MATRIX_FULL)
     size(K, 1) == size(K, 2) || argerror("the stiffness matrix must be square, got $(size(K))")
-    if body in (1, 2) && m.n_equations[body] > 0 && size(K, 1) != m.n_equations[body]
+    if 1 <= body <= length(m.n_nodes) && m.n_equations[body] > 0 && size(K, 1) != m.n_equations[body]
         argerror("the stiffness matrix must be $(m.n_equations[body])×$(m.n_equations[body]) " *
                  "(n_equations of body $body), got $(size(K))")
     end
@@ -629,6 +703,30 @@ get_contact_gap(m::Model) = contact_array(mc_get_contact_gap, m, Cdouble, 1)
 get_contact_initial_gap(m::Model) = contact_array(mc_get_contact_initial_gap, m, Cdouble, 1)
 """Unit outward normals of body 1 at the contact nodes, 2×n_contact."""
 get_contact_normal(m::Model) = contact_array(mc_get_contact_normal, m, Cdouble, 2)
+
+"""After a solve: the number of the pair's contact positions (the length of its contact arrays)."""
+function get_pair_contact_count(m::Model, pair::Integer)
+    n = Ref{Int32}(0)
+    check(m, mc_get_pair_contact_count(m, pair, n))
+    return Int(n[])
+end
+
+"""The node ids of the pair's contact positions on its non-mortar body (index base applies)."""
+function get_pair_contact_nodes(m::Model, pair::Integer)
+    out = Vector{Int32}(undef, get_pair_contact_count(m, pair))
+    check(m, mc_get_pair_contact_nodes(m, pair, out))
+    return out
+end
+
+"""A field of the pair's contact positions: `MC_CONTACT_PRESSURE`, `MC_CONTACT_FORCE`, `MC_CONTACT_GAP`,
+`MC_CONTACT_INITIAL_GAP` as a vector (as the `get_contact_*` getter of the same name), or
+`MC_CONTACT_NORMAL` as 2×n_contact."""
+function get_pair_contact(m::Model, pair::Integer, field::Integer)
+    n = get_pair_contact_count(m, pair)
+    out = field == MC_CONTACT_NORMAL ? Matrix{Cdouble}(undef, 2, n) : Vector{Cdouble}(undef, n)
+    check(m, mc_get_pair_contact(m, pair, field, out))
+    return out
+end
 
 """Writes the solved scene for ParaView: a path ending in ".pvd" gives a collection plus
 "<stem>_body1.vtu" and "<stem>_body2.vtu"; any other path one .vtu with both bodies."""

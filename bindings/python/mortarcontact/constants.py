@@ -78,6 +78,14 @@ MC_INTERFACE_SPARSE = 2
 MC_MULTIPLIER_LINEAR = 0
 MC_MULTIPLIER_QUADRATIC = 1
 
+# Fields of mc_get_pair_contact (mc_contact_field): one value per contact position, two (x, y)
+# for MC_CONTACT_NORMAL.
+MC_CONTACT_PRESSURE = 1
+MC_CONTACT_FORCE = 2
+MC_CONTACT_GAP = 3
+MC_CONTACT_INITIAL_GAP = 4
+MC_CONTACT_NORMAL = 5
+
 # Storage of mc_add_stiffness: both triangles, or one (either) with each off-diagonal pair once.
 MC_MATRIX_FULL = 1
 MC_MATRIX_TRIANGLE = 2

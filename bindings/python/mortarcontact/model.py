@@ -6,8 +6,8 @@ import os
 import numpy as np
 
 from . import _library
-from .constants import (INT_INFOS, INT_OPTIONS, MC_ERROR_ARGUMENT, MC_ERROR_STATE, MC_MATRIX_FULL, MC_OK,
-                        MC_XY)
+from .constants import (INT_INFOS, INT_OPTIONS, MC_CONTACT_NORMAL, MC_ERROR_ARGUMENT, MC_ERROR_STATE,
+                        MC_MATRIX_FULL, MC_OK, MC_XY)
 
 _lib = None
 _lib_path = None
@@ -123,7 +123,8 @@ def _ip(arr):
 
 
 class Model:
-    """One contact scene (``mc_model``): two 2D bodies, numbered 1 (the non-mortar side) and 2.
+    """One contact scene (``mc_model``): 2D bodies numbered 1 (the non-mortar side) and 2, or
+    1..N after :meth:`set_body_count`, in contact through pairs (:meth:`add_contact_pair`).
 
     Use it as a context manager, or call :meth:`close`; it is also freed when garbage
     collected. Every method raises :class:`MortarContactError` on failure; the model stays
@@ -149,6 +150,7 @@ class Model:
         self._n_nodes = {}
         self._n_cells = {}      # 0 for a host body
         self._n_equations = {}  # host bodies only
+        self._n_bodies = 2      # as set through set_body_count
         self._base = 0
         if index_base != 0:
             self.set_index_base(index_base)
@@ -199,10 +201,10 @@ class Model:
         return self._lib.mc_errmsg(self._h()).decode()
 
     def _body(self, body, what):
-        """Checks that body is 1 or 2 and has a mesh or is a host body (whose sizes size the
-        outputs)."""
-        if body not in (1, 2):
-            raise ArgumentError("body must be 1 or 2, got %r" % (body,))
+        """Checks that body is 1..N (the body count) and has a mesh or is a host body (whose
+        sizes size the outputs)."""
+        if body not in range(1, self._n_bodies + 1):
+            raise ArgumentError("body must be 1 to %d, got %r" % (self._n_bodies, body))
         if body not in self._n_nodes:
             raise MortarContactError(MC_ERROR_STATE, "%s: no mesh or host body set for body %d" % (what, body))
 
@@ -212,6 +214,21 @@ class Model:
         """Sets the base (0 or 1) of all node, cell and edge ids, in and out."""
         self._check(self._lib.mc_set_index_base(self._h(), int(base)))
         self._base = int(base)
+
+    def set_body_count(self, n):
+        """The number of bodies, ``n >= 2`` (default 2; ``mc_set_body_count``). Growing keeps the
+        bodies there are; shrinking drops the last ones (``MC_ERROR_STATE`` while a contact pair
+        uses one of them)."""
+        self._check(self._lib.mc_set_body_count(self._h(), int(n)))
+        self._n_bodies = int(n)
+        for sizes in (self._n_nodes, self._n_cells, self._n_equations):
+            for body in [b for b in sizes if b > self._n_bodies]:
+                del sizes[body]
+
+    @property
+    def body_count(self):
+        """The number of bodies set through :meth:`set_body_count` (2 by default)."""
+        return self._n_bodies
 
     def set_plane(self, plane, thickness=1.0):
         """``MC_PLANE_STRAIN`` (default), ``MC_PLANE_STRESS`` or ``MC_AXISYMMETRIC``, and the
@@ -306,16 +323,49 @@ class Model:
 
     def set_contact(self, body, edges):
         """Candidate contact surface of ``body``: boundary ``edges`` (n_edges, 2). Body 1 is the
-        non-mortar side, body 2 the mortar side; both need one for a contact solve."""
+        non-mortar side, body 2 the mortar side; both need one for a contact solve. Acts on
+        contact pair 1 (made as (1, 2) if the model has no pair yet)."""
         edges = _ids(edges, (None, 2), "edges")
         self._check(self._lib.mc_set_contact(self._h(), int(body), edges.shape[0], _ip(edges)))
 
     def set_gap_offset(self, nodes, offset):
         """Adds ``offset`` (a length; > 0 clearance, < 0 interference) to the initial gap of the
-        body-1 contact ``nodes``: (n,) or a scalar for all nodes. Replaces earlier offsets."""
+        body-1 contact ``nodes``: (n,) or a scalar for all nodes. Replaces earlier offsets.
+        Acts on contact pair 1 (:meth:`set_pair_gap_offset` for any pair)."""
         nodes = _ids(nodes, (None,), "nodes")
         off = _reals_rows(offset, nodes.shape[0], None, "offset")
         self._check(self._lib.mc_set_gap_offset(self._h(), nodes.shape[0], _ip(nodes), _dp(off)))
+
+    # ---- assemblies: contact pairs ----------------------------------------------------------
+
+    def add_contact_pair(self, nonmortar_body, mortar_body):
+        """Makes a contact pair between two different bodies and returns its number (1, 2, ... in
+        the order made, whatever the index base; ``mc_add_contact_pair``). The non-mortar body
+        carries the constraint, the mortar body is the surface it is measured against."""
+        pair = ctypes.c_int(0)
+        self._check(self._lib.mc_add_contact_pair(self._h(), int(nonmortar_body), int(mortar_body),
+                                                  ctypes.byref(pair)))
+        return pair.value
+
+    def set_pair_surface(self, pair, body, edges):
+        """One side of ``pair``: ``body`` (its non-mortar or its mortar body) and boundary
+        ``edges`` (n_edges, 2), as :meth:`set_contact`. Replaces that side's earlier edges."""
+        edges = _ids(edges, (None, 2), "edges")
+        self._check(self._lib.mc_set_pair_surface(self._h(), int(pair), int(body), edges.shape[0], _ip(edges)))
+
+    def set_pair_surface_curved(self, pair, body, edges):
+        """One side of ``pair`` of quadratic ``edges`` (n_edges, 3): end, end, middle, as
+        :meth:`set_contact_curved`. Replaces that side's earlier edges."""
+        edges = _ids(edges, (None, 3), "edges")
+        self._check(self._lib.mc_set_pair_surface_curved(self._h(), int(pair), int(body), edges.shape[0],
+                                                         _ip(edges)))
+
+    def set_pair_gap_offset(self, pair, nodes, offset):
+        """Adds ``offset`` to the initial gap of ``pair``'s non-mortar ``nodes``: (n,) or a scalar
+        for all nodes, as :meth:`set_gap_offset` does for pair 1. Replaces earlier offsets."""
+        nodes = _ids(nodes, (None,), "nodes")
+        off = _reals_rows(offset, nodes.shape[0], None, "offset")
+        self._check(self._lib.mc_set_pair_gap_offset(self._h(), int(pair), nodes.shape[0], _ip(nodes), _dp(off)))
 
     # ---- host bodies: a legacy program's own matrices ---------------------------------------
 
@@ -576,6 +626,30 @@ class Model:
     def get_contact_normal(self):
         """Unit outward normals of body 1 at the contact nodes: (m, 2)."""
         return self._contact(self._lib.mc_get_contact_normal, 2)
+
+    def get_pair_contact_count(self, pair):
+        """After a solve: the number of ``pair``'s contact positions (its non-mortar surface's
+        nodes, a corner once per face): the length of its contact arrays."""
+        n = ctypes.c_int32()
+        self._check(self._lib.mc_get_pair_contact_count(self._h(), int(pair), ctypes.byref(n)))
+        return n.value
+
+    def get_pair_contact_nodes(self, pair):
+        """Ids of ``pair``'s contact positions on its non-mortar body (index base applies): (m,)
+        int32."""
+        m = self.get_pair_contact_count(pair)
+        out = np.empty(m, dtype=np.int32)
+        self._check(self._lib.mc_get_pair_contact_nodes(self._h(), int(pair), _ip(out)))
+        return out
+
+    def get_pair_contact(self, pair, field):
+        """A field of ``pair``'s contact positions (``mc_get_pair_contact``): ``MC_CONTACT_PRESSURE``,
+        ``MC_CONTACT_FORCE``, ``MC_CONTACT_GAP``, ``MC_CONTACT_INITIAL_GAP`` as (m,), as the
+        ``get_contact_*`` getter of the same name; ``MC_CONTACT_NORMAL`` as (m, 2)."""
+        m = self.get_pair_contact_count(pair)
+        out = np.empty((m, 2) if field == MC_CONTACT_NORMAL else (m,), dtype=np.float64)
+        self._check(self._lib.mc_get_pair_contact(self._h(), int(pair), int(field), _dp(out)))
+        return out
 
     # ---- output --------------------------------------------------------------------------
 
