@@ -32,4 +32,4 @@ set_tests_properties(test_interface_solvers PROPERTIES TIMEOUT 600)
 
 # Assemblies: bodies 1..N and contact pairs (issue 32): patch tests of a stack and a corner,
 # invariance under renumbering and splitting, conservation, bad input (tests/test_contact_pairs.c).
-mc_add_check_test(test_contact_pairs test_contact_pairs.c)
+mc_add_check_test(test_contact_pairs test_contact_pairs.c host_assembly.c)

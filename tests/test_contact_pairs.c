@@ -24,6 +24,7 @@
 #include <string.h>
 
 #include "check_helpers.h"
+#include "host_assembly.h"
 #include "mortarcontact.h"
 #include "scenes.h"
 
@@ -52,15 +53,46 @@ static void stack3_free(stack3 *s) {
   for (int k = 0; k < 3; ++k) sc_mesh_free(&s->mesh[k]);
 }
 
+/* A block as a host body: its element matrices from the independent assembler
+   (host_assembly.h), 2 equations per node in node order, the bottom-left corner's x restrained. */
+static void set_host_block(mc_model *m, int body, const sc_mesh *mesh) {
+  const int npc = mesh->npc, nv = 2 * npc;
+  const mc_int corner = sc_node(mesh, 0, 0);
+  mc_int *equations = malloc(sizeof(mc_int) * 2 * (size_t)mesh->n_nodes), n_eq = 0;
+  for (mc_int i = 0; i < mesh->n_nodes; ++i)
+    for (int c = 0; c < 2; ++c) equations[2 * i + c] = i == corner && c == 0 ? -1 : n_eq++;
+  OK(mc_set_host_body(m, body, mesh->n_nodes, mesh->xy, equations, n_eq));
+  mc_int *eltptr = malloc(sizeof(mc_int) * ((size_t)mesh->n_cells + 1)), *eltvar = malloc(sizeof(mc_int) * (size_t)(nv * mesh->n_cells));
+  double *a = malloc(sizeof(double) * (size_t)(nv * nv * mesh->n_cells)), D[9], xy[18];
+  ha_law_plane_strain(STACK_E, STACK_NU, D);
+  for (mc_int c = 0; c < mesh->n_cells; ++c) {
+    eltptr[c] = c * nv;
+    for (int a_ = 0; a_ < npc; ++a_) {
+      const mc_int v = mesh->cells[npc * c + a_];
+      xy[2 * a_] = mesh->xy[2 * v], xy[2 * a_ + 1] = mesh->xy[2 * v + 1];
+      eltvar[nv * c + 2 * a_] = equations[2 * v], eltvar[nv * c + 2 * a_ + 1] = equations[2 * v + 1];
+    }
+    ck_assert_int_eq(ha_element_stiffness(npc, xy, 0, 1.0, D, a + (size_t)nv * nv * c), 0); /* symmetric: either order */
+  }
+  eltptr[mesh->n_cells] = nv * mesh->n_cells;
+  OK(mc_add_element_matrices(m, body, mesh->n_cells, eltptr, eltvar, a));
+  free(equations), free(eltptr), free(eltvar), free(a);
+}
+
 /* Builds the model with block k as body body_of[k]; the pairs (top on middle, middle on bottom)
-   made in the order given by `order` (0: top pair first). */
-static mc_model *stack3_model(stack3 *s, const int body_of[3], int order, int method, int path) {
+   made in the order given by `order` (0: top pair first). host_middle: the middle block is a
+   host body (its own element matrices) between two mesh bodies. */
+static mc_model *stack3_model_host(stack3 *s, const int body_of[3], int order, int method, int path, int host_middle) {
   mc_model *m;
   int pair[2];
   OK(mc_create(&m));
   OK(mc_set_body_count(m, 3));
   for (int k = 0; k < 3; ++k) {
     s->body_of[k] = body_of[k];
+    if (k == 1 && host_middle) {
+      set_host_block(m, body_of[k], &s->mesh[k]);
+      continue;
+    }
     OK(sc_set_mesh(m, body_of[k], &s->mesh[k], 0));
     OK(mc_set_material(m, body_of[k], STACK_E, STACK_NU));
     mc_int corner = sc_node(&s->mesh[k], 0, 0);
@@ -82,6 +114,10 @@ static mc_model *stack3_model(stack3 *s, const int body_of[3], int order, int me
   OK(mc_set_option_int(m, MC_OPTION_METHOD, method));
   OK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, path ? MC_INTERFACE_SPARSE : MC_INTERFACE_CONDENSED));
   return m;
+}
+
+static mc_model *stack3_model(stack3 *s, const int body_of[3], int order, int method, int path) {
+  return stack3_model_host(s, body_of, order, method, path, 0);
 }
 
 /* The pair numbers of the stack's two contacts (top on middle, middle on bottom) for `order`. */
@@ -135,6 +171,22 @@ START_TEST(stack_of_three_blocks_is_a_patch_test) {
     }
     free(sigma);
   }
+  mc_destroy(m);
+  stack3_free(&s);
+}
+END_TEST
+
+/* The middle block as a host body (mortar in one pair, non-mortar in the other, held by contact
+   alone in y and in rotation): the same patch test. _i: path x cells (P1, Q1). */
+START_TEST(stack_with_a_host_body_in_the_middle_is_a_patch_test) {
+  const int path = _i % 2, npc = 3 + _i / 2;
+  const int natural[3] = {1, 2, 3};
+  stack3 s;
+  stack3_meshes(&s, npc);
+  mc_model *m = stack3_model_host(&s, natural, 0, MC_METHOD_MORTAR, path, 1);
+  OK(mc_solve(m));
+  assert_pair_pressure(m, 1, STACK_P, 1e-10);
+  assert_pair_pressure(m, 2, STACK_P, 1e-10);
   mc_destroy(m);
   stack3_free(&s);
 }
@@ -566,6 +618,7 @@ static Suite *contact_pairs_suite(void) {
   tcase_set_timeout(tc, 60);
   tcase_add_loop_test(tc, stack_of_three_blocks_is_a_patch_test, 0, 16);
   tcase_add_loop_test(tc, block_pushed_into_a_corner_is_a_patch_test, 0, 8);
+  tcase_add_loop_test(tc, stack_with_a_host_body_in_the_middle_is_a_patch_test, 0, 4);
   suite_add_tcase(s, tc);
   tc = tcase_create("invariance");
   tcase_set_timeout(tc, 60);
