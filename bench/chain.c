@@ -45,6 +45,7 @@ static const double kPressure = 0.01;
 
 typedef struct parts {
   double geometry, interface, active_set;
+  long cg_steps; /* the sparse path's ("..., 9 conjugate-gradient steps, ...") */
 } parts;
 
 static double trailing_seconds(const char *message) {
@@ -57,14 +58,21 @@ static void note_parts(void *user, mc_log_level level, const char *message) {
   parts *p = user;
   if (strncmp(message, "contact geometry", 16) == 0) p->geometry += trailing_seconds(message);
   if (strncmp(message, "interface operator", 18) == 0) p->interface += trailing_seconds(message);
-  if (strncmp(message, "active-set solve", 16) == 0) p->active_set += trailing_seconds(message);
+  if (strncmp(message, "active-set solve", 16) == 0) {
+    p->active_set += trailing_seconds(message);
+    const char *cg = strstr(message, " conjugate-gradient steps");
+    if (cg) {
+      while (cg > message && cg[-1] >= '0' && cg[-1] <= '9') --cg;
+      p->cg_steps += atol(cg);
+    }
+  }
 }
 
 /* One solve's measurements. */
 typedef struct sample {
   double wall, assembly, analysis, factorization, solve, contact, geometry, interface, active_set;
   double pressure_error;
-  long dofs, rows, iterations, factorizations, ran;
+  long dofs, rows, iterations, factorizations, ran, nnz, cg_steps;
 } sample;
 
 #define CALL(call)                                                             \
@@ -82,7 +90,7 @@ static void press_top(mc_model *m, int body, const sc_mesh *mesh) {
 static sample solve_chain(const sc_mesh *mesh, int n, int kind, int threads) {
   sample s;
   memset(&s, 0, sizeof s);
-  parts log = {0, 0, 0};
+  parts log = {0, 0, 0, 0};
   mc_model *m;
   if (mc_create(&m) != MC_OK) exit(1);
   CALL(mc_set_body_count(m, n));
@@ -117,6 +125,8 @@ static sample solve_chain(const sc_mesh *mesh, int n, int kind, int threads) {
   s.iterations = (long)v;
   CALL(mc_get_info_int(m, MC_INFO_FACTORIZATIONS, &v));
   s.factorizations = (long)v;
+  CALL(mc_get_info_int(m, MC_INFO_FACTOR_NNZ, &v));
+  s.nnz = (long)v;
   CALL(mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &v));
   s.ran = (long)v;
   CALL(mc_get_info_real(m, MC_INFO_TIME_ASSEMBLY, &s.assembly));
@@ -124,7 +134,7 @@ static sample solve_chain(const sc_mesh *mesh, int n, int kind, int threads) {
   CALL(mc_get_info_real(m, MC_INFO_TIME_FACTORIZATION, &s.factorization));
   CALL(mc_get_info_real(m, MC_INFO_TIME_SOLVE, &s.solve));
   CALL(mc_get_info_real(m, MC_INFO_TIME_CONTACT, &s.contact));
-  s.geometry = log.geometry, s.interface = log.interface, s.active_set = log.active_set;
+  s.geometry = log.geometry, s.interface = log.interface, s.active_set = log.active_set, s.cg_steps = log.cg_steps;
   /* the patch test: every pair's pressures are p */
   for (int pair = 1; kind != PLAIN && pair < n; ++pair) {
     mc_int q;
@@ -189,9 +199,10 @@ int main(int argc, char **argv) {
   const int odd_nx = cells, even_nx = (int)lround(0.955 * cells), even_ny = (int)lround(1.05 * cells);
   printf("chain of N unit squares: odd bodies %d x %d P1 squares, even bodies %d x %d; medians of %d; threads %d\n\n",
          odd_nx, odd_nx, even_nx, even_ny, repeat, threads);
-  printf("| N | solver (ran) | DOFs | contact rows | iterations | factorizations | mc_solve s | assembly | analysis | "
-         "factorization | solve | contact | of which: geometry | interface operator | active-set solve | pressure error |\n");
-  printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  printf("| N | solver (ran) | DOFs | contact rows | iterations | factorizations | factor nonzeros | CG steps | mc_solve s | "
+         "assembly | analysis | factorization | solve | contact | of which: geometry | interface operator | active-set solve | "
+         "pressure error |\n");
+  printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   sample result[16][N_KINDS];
   memset(result, 0, sizeof result);
   for (int i = 0; i < n_sizes; ++i) {
@@ -213,12 +224,12 @@ int main(int argc, char **argv) {
       snprintf(ran, sizeof ran, "%s%s%s", kind_name[kind], kind == AUTO ? ": " : "",
                kind == AUTO ? (s.ran == MC_INTERFACE_CONDENSED ? "condensed" : "sparse") : "");
       if (kind == PLAIN)
-        printf("| %d | plain | %ld | - | - | - | %.3f | %.3f | %.3f | %.3f | %.3f | - | - | - | - | - |\n", n, s.dofs, s.wall,
-               s.assembly, s.analysis, s.factorization, s.solve);
+        printf("| %d | plain | %ld | - | - | - | %.3g | - | %.3f | %.3f | %.3f | %.3f | %.3f | - | - | - | - | - |\n", n, s.dofs,
+               (double)s.nnz, s.wall, s.assembly, s.analysis, s.factorization, s.solve);
       else
-        printf("| %d | %s | %ld | %ld | %ld | %ld | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.1e |\n", n,
-               ran, s.dofs, s.rows, s.iterations, s.factorizations, s.wall, s.assembly, s.analysis, s.factorization, s.solve,
-               s.contact, s.geometry, s.interface, s.active_set, s.pressure_error);
+        printf("| %d | %s | %ld | %ld | %ld | %ld | %.3g | %ld | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.1e |\n",
+               n, ran, s.dofs, s.rows, s.iterations, s.factorizations, (double)s.nnz, s.cg_steps, s.wall, s.assembly, s.analysis,
+               s.factorization, s.solve, s.contact, s.geometry, s.interface, s.active_set, s.pressure_error);
       fflush(stdout);
       if (kind != PLAIN && s.pressure_error > 1e-8) {
         fprintf(stderr, "chain: N %d %s: pressure error %g\n", n, ran, s.pressure_error);
