@@ -70,7 +70,7 @@ static void note_parts(void *user, mc_log_level level, const char *message) {
 
 /* One solve's measurements. */
 typedef struct sample {
-  double wall, assembly, analysis, factorization, solve, contact, geometry, interface, active_set;
+  double wall, cpu, assembly, analysis, factorization, solve, contact, geometry, interface, active_set;
   double pressure_error;
   long dofs, rows, iterations, factorizations, ran, nnz, cg_steps;
 } sample;
@@ -82,6 +82,14 @@ typedef struct sample {
       exit(1);                                                                 \
     }                                                                          \
   } while (0)
+
+/* The process's CPU time: on a shared machine less disturbed by the others' load than the wall
+   clock (the solves are serial; BLAS threads, if any, add theirs). */
+static double cpu_seconds(void) {
+  struct timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
 
 static void press_top(mc_model *m, int body, const sc_mesh *mesh) {
   CALL(sc_traction_side(m, body, mesh, SC_TOP, 0, -kPressure, 0));
@@ -113,9 +121,9 @@ static sample solve_chain(const sc_mesh *mesh, int n, int kind, int threads) {
     if (kind != AUTO) CALL(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, kind == CONDENSED ? MC_INTERFACE_CONDENSED : MC_INTERFACE_SPARSE));
     CALL(mc_set_log_callback(m, note_parts, &log));
   }
-  const double t0 = bench_wall();
+  const double t0 = bench_wall(), c0 = cpu_seconds();
   CALL(mc_solve(m));
-  s.wall = bench_wall() - t0;
+  s.wall = bench_wall() - t0, s.cpu = cpu_seconds() - c0;
   int64_t v;
   CALL(mc_get_info_int(m, MC_INFO_DOFS, &v));
   s.dofs = (long)v;
@@ -158,6 +166,7 @@ static sample median_of(sample *runs, int r) {
     out.field = bench_median(v, r);                    \
   } while (0)
   MEDIAN(wall);
+  MEDIAN(cpu);
   MEDIAN(assembly);
   MEDIAN(analysis);
   MEDIAN(factorization);
@@ -199,10 +208,10 @@ int main(int argc, char **argv) {
   const int odd_nx = cells, even_nx = (int)lround(0.955 * cells), even_ny = (int)lround(1.05 * cells);
   printf("chain of N unit squares: odd bodies %d x %d P1 squares, even bodies %d x %d; medians of %d; threads %d\n\n",
          odd_nx, odd_nx, even_nx, even_ny, repeat, threads);
-  printf("| N | solver (ran) | DOFs | contact rows | iterations | factorizations | factor nonzeros | CG steps | mc_solve s | "
+  printf("| N | solver (ran) | DOFs | contact rows | iterations | factorizations | factor nonzeros | CG steps | mc_solve s | CPU s | "
          "assembly | analysis | factorization | solve | contact | of which: geometry | interface operator | active-set solve | "
          "pressure error |\n");
-  printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   sample result[16][N_KINDS];
   memset(result, 0, sizeof result);
   for (int i = 0; i < n_sizes; ++i) {
@@ -224,11 +233,12 @@ int main(int argc, char **argv) {
       snprintf(ran, sizeof ran, "%s%s%s", kind_name[kind], kind == AUTO ? ": " : "",
                kind == AUTO ? (s.ran == MC_INTERFACE_CONDENSED ? "condensed" : "sparse") : "");
       if (kind == PLAIN)
-        printf("| %d | plain | %ld | - | - | - | %.3g | - | %.3f | %.3f | %.3f | %.3f | %.3f | - | - | - | - | - |\n", n, s.dofs,
-               (double)s.nnz, s.wall, s.assembly, s.analysis, s.factorization, s.solve);
+        printf("| %d | plain | %ld | - | - | - | %.3g | - | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | - | - | - | - | - |\n", n,
+               s.dofs, (double)s.nnz, s.wall, s.cpu, s.assembly, s.analysis, s.factorization, s.solve);
       else
-        printf("| %d | %s | %ld | %ld | %ld | %ld | %.3g | %ld | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.1e |\n",
-               n, ran, s.dofs, s.rows, s.iterations, s.factorizations, (double)s.nnz, s.cg_steps, s.wall, s.assembly, s.analysis,
+        printf("| %d | %s | %ld | %ld | %ld | %ld | %.3g | %ld | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | "
+               "%.1e |\n",
+               n, ran, s.dofs, s.rows, s.iterations, s.factorizations, (double)s.nnz, s.cg_steps, s.wall, s.cpu, s.assembly, s.analysis,
                s.factorization, s.solve, s.contact, s.geometry, s.interface, s.active_set, s.pressure_error);
       fflush(stdout);
       if (kind != PLAIN && s.pressure_error > 1e-8) {
@@ -252,6 +262,22 @@ int main(int argc, char **argv) {
            RATIO(s[CONDENSED].wall, s[PLAIN].wall), RATIO(s[SPARSE].wall, s[PLAIN].wall), RATIO(s[AUTO].wall, s[PLAIN].wall),
            (double)sizes[i] / sizes[0], RATIO(s[PLAIN].wall, f[PLAIN].wall), RATIO(s[CONDENSED].wall, f[CONDENSED].wall),
            RATIO(s[SPARSE].wall, f[SPARSE].wall), RATIO(s[AUTO].wall, f[AUTO].wall));
+#undef RATIO
+  }
+  /* the same from the CPU times, and the factors' nonzeros (no noise at all) */
+  printf("\n| N | plain CPU s | condensed CPU s | sparse CPU s | auto CPU s | condensed / plain | sparse / plain | N / %d | "
+         "plain / plain(%d) | condensed / condensed(%d) | sparse / sparse(%d) | auto / auto(%d) | factor nonzeros: plain, condensed, "
+         "sparse / their N = %d |\n",
+         sizes[0], sizes[0], sizes[0], sizes[0], sizes[0], sizes[0]);
+  printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (int i = 0; i < n_sizes; ++i) {
+    const sample *s = result[i], *f = result[0];
+#define RATIO(a, b) ((b) > 0 ? (double)(a) / (double)(b) : NAN)
+    printf("| %d | %.3f | %.3f | %.3f | %.3f | %.2f | %.2f | %.1f | %.2f | %.2f | %.2f | %.2f | %.2f, %.2f, %.2f |\n", sizes[i],
+           s[PLAIN].cpu, s[CONDENSED].cpu, s[SPARSE].cpu, s[AUTO].cpu, RATIO(s[CONDENSED].cpu, s[PLAIN].cpu),
+           RATIO(s[SPARSE].cpu, s[PLAIN].cpu), (double)sizes[i] / sizes[0], RATIO(s[PLAIN].cpu, f[PLAIN].cpu),
+           RATIO(s[CONDENSED].cpu, f[CONDENSED].cpu), RATIO(s[SPARSE].cpu, f[SPARSE].cpu), RATIO(s[AUTO].cpu, f[AUTO].cpu),
+           RATIO(s[PLAIN].nnz, f[PLAIN].nnz), RATIO(s[CONDENSED].nnz, f[CONDENSED].nnz), RATIO(s[SPARSE].nnz, f[SPARSE].nnz));
 #undef RATIO
   }
   return failed;
