@@ -16,8 +16,8 @@
  * corner and loaded by p on its top (N independent elasticity problems; "plain").
  *
  * Every solve is a fresh model (mc_create, the scene, mc_solve timed by the wall clock, the
- * results read, mc_destroy): the first solve, analysis and factorization included. Each case is
- * run --repeat times (default 3) and the medians printed, the time infos too (MC_INFO_TIME_*),
+ * results read, mc_destroy): the first solve, analysis and factorization included. --repeat
+ * rounds (default 3), each solving every N on every path once; the medians printed, the time infos too (MC_INFO_TIME_*),
  * and from the log the contact parts (contact geometry, interface operator, active-set solve).
  * MC_OPTION_THREADS is 1 (serial) unless --threads says otherwise, so that the ratios measure the
  * work, not how it is spread on a shared machine.
@@ -212,23 +212,30 @@ int main(int argc, char **argv) {
          "assembly | analysis | factorization | solve | contact | of which: geometry | interface operator | active-set solve | "
          "pressure error |\n");
   printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  /* Rounds outermost: round r solves every N and every path once, so that the ratios below
+     compare solves made at about the same time (a shared machine's load changes by the minute),
+     and each ratio's median is over the rounds. */
+  static sample runs[16][N_KINDS][MAX_REPEAT];
   sample result[16][N_KINDS];
   memset(result, 0, sizeof result);
-  for (int i = 0; i < n_sizes; ++i) {
-    const int n = sizes[i];
-    sc_mesh mesh[MAX_N];
-    for (int k = 0; k < n; ++k) {
+  static sc_mesh mesh[16][MAX_N];
+  for (int i = 0; i < n_sizes; ++i)
+    for (int k = 0; k < sizes[i]; ++k) {
       const int nx = k % 2 ? even_nx : odd_nx, ny = k % 2 ? even_ny : odd_nx;
-      if (sc_mesh_rect(&mesh[k], 3, nx, ny, 0, n - 1 - k, 1, 1, 0, 1)) {
+      if (sc_mesh_rect(&mesh[i][k], 3, nx, ny, 0, sizes[i] - 1 - k, 1, 1, 0, 1)) {
         fprintf(stderr, "chain: mesh of body %d failed\n", k + 1);
         return 1;
       }
     }
+  for (int r = 0; r < repeat; ++r)
+    for (int i = 0; i < n_sizes; ++i)
+      for (int kind = 0; kind < N_KINDS; ++kind)
+        if (want[kind]) runs[i][kind][r] = solve_chain(mesh[i], sizes[i], kind, threads);
+  for (int i = 0; i < n_sizes; ++i) {
+    const int n = sizes[i];
     for (int kind = 0; kind < N_KINDS; ++kind) {
       if (!want[kind]) continue;
-      sample runs[MAX_REPEAT];
-      for (int r = 0; r < repeat; ++r) runs[r] = solve_chain(mesh, n, kind, threads);
-      sample s = result[i][kind] = median_of(runs, repeat);
+      sample s = result[i][kind] = median_of(runs[i][kind], repeat);
       char ran[32];
       snprintf(ran, sizeof ran, "%s%s%s", kind_name[kind], kind == AUTO ? ": " : "",
                kind == AUTO ? (s.ran == MC_INTERFACE_CONDENSED ? "condensed" : "sparse") : "");
@@ -240,14 +247,30 @@ int main(int argc, char **argv) {
                "%.1e |\n",
                n, ran, s.dofs, s.rows, s.iterations, s.factorizations, (double)s.nnz, s.cg_steps, s.wall, s.cpu, s.assembly, s.analysis,
                s.factorization, s.solve, s.contact, s.geometry, s.interface, s.active_set, s.pressure_error);
-      fflush(stdout);
       if (kind != PLAIN && s.pressure_error > 1e-8) {
         fprintf(stderr, "chain: N %d %s: pressure error %g\n", n, ran, s.pressure_error);
         failed = 1;
       }
     }
-    for (int k = 0; k < n; ++k) sc_mesh_free(&mesh[k]);
   }
+  /* ratios within each round, then their medians: contact / plain at the same N, and each path
+     at N against itself at the first N */
+  printf("\nRatios of wall times within each round, medians over the %d rounds:\n\n", repeat);
+  printf("| N | condensed / plain | sparse / plain | auto / plain | N / %d | plain(N) / plain(%d) | condensed(N) / condensed(%d) | "
+         "sparse(N) / sparse(%d) | auto(N) / auto(%d) |\n", sizes[0], sizes[0], sizes[0], sizes[0], sizes[0]);
+  printf("|---|---|---|---|---|---|---|---|---|\n");
+  for (int i = 0; i < n_sizes; ++i) {
+    double ratio[7][MAX_REPEAT];
+    for (int r = 0; r < repeat; ++r) {
+      for (int kind = 1; kind < N_KINDS; ++kind) ratio[kind - 1][r] = runs[i][kind][r].wall / runs[i][PLAIN][r].wall;
+      for (int kind = 0; kind < N_KINDS; ++kind) ratio[3 + kind][r] = runs[i][kind][r].wall / runs[0][kind][r].wall;
+    }
+    printf("| %d | %.2f | %.2f | %.2f | %.1f | %.2f | %.2f | %.2f | %.2f |\n", sizes[i], bench_median(ratio[0], repeat),
+           bench_median(ratio[1], repeat), bench_median(ratio[2], repeat), (double)sizes[i] / sizes[0], bench_median(ratio[3], repeat),
+           bench_median(ratio[4], repeat), bench_median(ratio[5], repeat), bench_median(ratio[6], repeat));
+  }
+  for (int i = 0; i < n_sizes; ++i)
+    for (int k = 0; k < sizes[i]; ++k) sc_mesh_free(&mesh[i][k]);
   /* side by side: each path against the plain solve, and against its own N = first size */
   printf("\n| N | DOFs (contact) | plain s | condensed s | sparse s | auto s (ran) | condensed / plain | sparse / plain | auto / plain | "
          "N / %d | plain / plain(%d) | condensed / condensed(%d) | sparse / sparse(%d) | auto / auto(%d) |\n",
