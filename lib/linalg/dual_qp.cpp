@@ -101,7 +101,8 @@ bool solve_on_active_set(const DualQp &p, const std::vector<int> &act, double g_
     for (int a = 0; a < k; ++a)
       for (int b = 0; b < k; ++b)
         for (int j : act) gram[size_t(b) * k + a] += p.g[size_t(a) * p.q + j] * p.g[size_t(b) * p.q + j];
-    int lwork = 64, info = 0;
+    // k counts the rigid modes of every floating body (up to 3 each): dsyev needs 3k - 1
+    int lwork = std::max(64, 3 * k), info = 0;
     std::vector<double> work(lwork);
     dsyev_("N", "U", &k, gram.data(), &k, eig.data(), work.data(), &lwork, &info);
     if (info != 0 || !(eig[0] > 1e-12 * eig[k - 1])) return false;

@@ -347,7 +347,8 @@ bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lam
         for (int b = 0; b < k; ++b) gram[size_t(b) * k + a] += cs.g[size_t(a) * q + r] * cs.g[size_t(b) * q + r];
     }
     if (count < k) return false;
-    int lwork = 64, info = 0;
+    // k counts the rigid modes of every floating body (up to 3 each): dsyev needs 3k - 1
+    int lwork = std::max(64, 3 * k), info = 0;
     std::vector<double> work(lwork);
     dsyev_("N", "U", &k, gram.data(), &k, eig.data(), work.data(), &lwork, &info);
     return info == 0 && eig[0] > 1e-12 * eig[k - 1];
