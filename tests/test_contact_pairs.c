@@ -251,6 +251,33 @@ START_TEST(renumbered_bodies_and_reordered_pairs_change_nothing) {
 }
 END_TEST
 
+/* The bodies' work on two threads (the odd bodies on the second): the serial answer. */
+START_TEST(two_threads_give_the_serial_answer) {
+  const int natural[3] = {1, 2, 3};
+  double *u[2][3];
+  for (int threads = 1; threads <= 2; ++threads) {
+    stack3 s;
+    stack3_meshes(&s, 4);
+    mc_model *m = stack3_model(&s, natural, 0, MC_METHOD_MORTAR, _i);
+    mc_int node = sc_node(&s.mesh[0], s.mesh[0].nx, s.mesh[0].ny);
+    double f[2] = {0, -0.2};
+    OK(mc_add_nodal_force(m, 1, 1, &node, f));
+    OK(mc_set_option_int(m, MC_OPTION_THREADS, threads));
+    OK(mc_solve(m));
+    stack3_displacements(m, &s, u[threads - 1]);
+    if (threads == 2)
+      for (int k = 0; k < 3; ++k) {
+        for (mc_int i = 0; i < 2 * s.mesh[k].n_nodes; ++i)
+          ck_assert_msg(fabs(u[0][k][i] - u[1][k][i]) <= 1e-13, "block %d entry %d: %.17g serial, %.17g on two threads",
+                        k + 1, (int)i, u[0][k][i], u[1][k][i]);
+        free(u[0][k]), free(u[1][k]);
+      }
+    mc_destroy(m);
+    stack3_free(&s);
+  }
+}
+END_TEST
+
 /* Per pair the contact forces on its two sides cancel, per body f + r + contact = 0. */
 START_TEST(forces_balance_per_pair_and_per_body) {
   const int natural[3] = {1, 2, 3};
@@ -626,6 +653,7 @@ static Suite *contact_pairs_suite(void) {
   tcase_add_loop_test(tc, a_surface_split_into_two_pairs_gives_the_unsplit_answer, 0, 6);
   tcase_add_loop_test(tc, renumbered_bodies_and_reordered_pairs_change_nothing, 0, 2);
   tcase_add_loop_test(tc, forces_balance_per_pair_and_per_body, 0, 2);
+  tcase_add_loop_test(tc, two_threads_give_the_serial_answer, 0, 2);
   suite_add_tcase(s, tc);
   tc = tcase_create("errors");
   tcase_add_test(tc, a_slide_no_pair_holds_is_singular);
