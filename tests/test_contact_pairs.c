@@ -599,6 +599,16 @@ START_TEST(bad_bodies_and_pairs_are_refused) {
   OK(mc_add_contact_pair(m, 1, 2, &pair));
   ck_assert_int_eq(pair, 1);
   FAILS(mc_set_pair_surface(m, 2, 1, a.n_side_edges[SC_BOTTOM], a.side_edges[SC_BOTTOM]), MC_ERROR_ARGUMENT, "pair = 2");
+  {
+    mc_int top_node = sc_node(&a, 0, a.ny);
+    double offset = 0.01;
+    FAILS(mc_set_pair_gap_offset(m, 1, 1, &top_node, &offset), MC_ERROR_STATE, "pair 1 has no non-mortar surface (body 1)");
+    OK(mc_set_pair_surface(m, 1, 1, a.n_side_edges[SC_BOTTOM], a.side_edges[SC_BOTTOM]));
+    FAILS(mc_set_pair_gap_offset(m, 1, 1, &top_node, &offset), MC_ERROR_ARGUMENT,
+          "nodes[0] = "); /* the top node is not on the pair's non-mortar surface */
+    ck_assert_msg(strstr(mc_errmsg(m), "is not on pair 1's non-mortar surface (body 1)") != NULL, "message: %s", mc_errmsg(m));
+    FAILS(mc_set_pair_gap_offset(m, 3, 1, &top_node, &offset), MC_ERROR_ARGUMENT, "pair = 3");
+  }
   FAILS(mc_set_pair_surface(m, 1, 3, c.n_side_edges[SC_TOP], c.side_edges[SC_TOP]), MC_ERROR_ARGUMENT,
         "pair 1 joins bodies 1 (non-mortar) and 2 (mortar)");
   OK(mc_set_pair_surface(m, 1, 1, a.n_side_edges[SC_BOTTOM], a.side_edges[SC_BOTTOM]));

@@ -169,12 +169,13 @@ void set_contact_surface(mc::Model &model, int body, mc_int n_edges, const mc_in
 }
 
 // The initial-gap offsets of pair p's non-mortar nodes.
-void set_pair_gap_offset(mc::Model &model, int p, mc_int n, const mc_int *nodes, const double *offset) {
+// legacy: called as mc_set_gap_offset, whose messages speak of body 1's contact surface.
+void set_pair_gap_offset(mc::Model &model, int p, mc_int n, const mc_int *nodes, const double *offset, bool legacy) {
   mc::ContactPair &pair = model.pairs[p];
   const int body = pair.nonmortar + 1;
   mc::Body &b = meshed_body(model, body);
   if (!pair.has_side[0]) {
-    if (model.pairs.size() == 1 && p == 0)
+    if (legacy)
       fail(MC_ERROR_STATE, "body 1 has no contact surface: call mc_set_contact first");
     fail(MC_ERROR_STATE, "pair %d has no non-mortar surface (body %d): call mc_set_pair_surface first", p + 1, body);
   }
@@ -190,7 +191,7 @@ void set_pair_gap_offset(mc::Model &model, int p, mc_int n, const mc_int *nodes,
   for (mc_int i = 0; i < n; ++i) {
     local[i] = node_id(model, b.mesh, nodes[i], "nodes", size_t(i));
     if (!on_surface[local[i]]) {
-      if (model.pairs.size() == 1 && p == 0)
+      if (legacy)
         fail(MC_ERROR_ARGUMENT, "%s = %d is not on body 1's contact surface",
              mc::array_position("nodes", size_t(i), model.index_base).c_str(), int(nodes[i]));
       fail(MC_ERROR_ARGUMENT, "%s = %d is not on pair %d's non-mortar surface (body %d)",
@@ -217,7 +218,7 @@ mc_status mc_set_contact_curved(mc_model *m, int body, mc_int n_edges, const mc_
 mc_status mc_set_gap_offset(mc_model *m, mc_int n, const mc_int *nodes, const double *offset) {
   return guard(m, [&](mc::Model &model) {
     meshed_body(model, 1);
-    set_pair_gap_offset(model, legacy_pair(model, "mc_set_gap_offset", false), n, nodes, offset);
+    set_pair_gap_offset(model, legacy_pair(model, "mc_set_gap_offset", false), n, nodes, offset, true);
   });
 }
 
@@ -264,7 +265,7 @@ mc_status mc_set_pair_surface_curved(mc_model *m, int pair, int body, mc_int n_e
 }
 
 mc_status mc_set_pair_gap_offset(mc_model *m, int pair, mc_int n, const mc_int *nodes, const double *offset) {
-  return guard(m, [&](mc::Model &model) { set_pair_gap_offset(model, pair_index(model, pair), n, nodes, offset); });
+  return guard(m, [&](mc::Model &model) { set_pair_gap_offset(model, pair_index(model, pair), n, nodes, offset, false); });
 }
 
 }  // extern "C"

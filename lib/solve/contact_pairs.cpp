@@ -61,7 +61,6 @@ void stack_rows(ConstraintRows &all, const ConstraintRows &rows, int first_posit
 // Before any work: every pair complete, on bodies that have meshes; a non-mortar edge on two
 // pairs' surfaces refused (a position would carry two multipliers).
 void Model::check_contact_pairs() const {
-  bool any_complete = false;
   for (size_t p = 0; p < pairs.size(); ++p) {
     const ContactPair &pair = pairs[p];
     if (!pair.has_side[0] && !pair.has_side[1]) continue;  // made, no surface yet: not used
@@ -73,13 +72,11 @@ void Model::check_contact_pairs() const {
       fail(MC_ERROR_STATE, "pair %zu has no surface on its %s body %d: call mc_set_pair_surface", p + 1,
            missing == 0 ? "non-mortar" : "mortar", pair.body_of_side(missing) + 1);
     }
-    any_complete = true;
     for (int side = 0; side < 2; ++side)
       if (!body[pair.body_of_side(side)].has_mesh)
         fail(MC_ERROR_STATE, "pair %zu: body %d has no mesh: call mc_set_mesh or mc_set_host_body", p + 1,
              pair.body_of_side(side) + 1);
   }
-  (void)any_complete;
   // A non-mortar edge belongs to one pair: the same edge given on two pairs' non-mortar sides
   // would be two multipliers for one position (MOOSE's rank-deficient Jacobian).
   std::map<std::pair<int, std::pair<int, int>>, int> owner;  // (body, (a, b)) -> pair
