@@ -39,7 +39,9 @@
  *    frictionless plates leave free); the ring and the top plate are held vertically by contact
  *    alone. P is chosen so that the thin ring shortens by 1e-3 R. Reported: the diameter changes
  *    of the mean-radius nodes over P R^3 / (E' I), and each pair's vertical force on both of its
- *    sides (mc_get_contact_load).
+ *    sides (mc_get_contact_load). Then the whole ring (its seam closed, the plates' full width):
+ *    u_x = 0 only at the ring's top and bottom mean-radius nodes (no load by symmetry, reported)
+ *    and on the plates' nodes on x = 0; there the pole is inside the contact surface, not its end.
  * 4. Three equal cylinders stacked between two plates (five bodies): discs R = 10 centred at
  *    (0, 10), (0, 30), (0, 50) between the plates of scene 2 (the top one at y = 60), P = 1000.
  *    Every contact carries P: plate-cylinder contacts are Hertz's with R, cylinder-cylinder ones
@@ -594,12 +596,36 @@ static void ring_curved_beam(double h, double *c_vertical, double *c_horizontal)
   *c_vertical = 4 * R * dv / unit, *c_horizontal = 4 * R * dh / unit;
 }
 
-/* (r, theta) -> (x, y) for -pi/2 <= theta <= pi/2, exactly on the axes. */
+/* (r, theta) -> (x, y), exactly on the axes (theta a multiple of pi/2). */
 static void ring_polar(double *x, double *y, void *ctx) {
   (void)ctx;
-  const double r = *x, t = *y;
-  *x = fabs(t) >= PI / 2 - 1e-14 ? 0 : r * cos(t);
-  *y = fabs(t) <= 1e-14 ? 0 : fabs(t) >= PI / 2 - 1e-14 ? (t > 0 ? r : -r) : r * sin(t);
+  const double r = *x, t = *y, c = cos(t), sn = sin(t);
+  *x = fabs(c) < 1e-14 ? 0 : r * c;
+  *y = fabs(sn) < 1e-14 ? 0 : r * sn;
+}
+
+/* Closes a ring meshed by sc_mesh_cells over -pi/2 <= theta <= 3 pi/2 and mapped by ring_polar:
+   the last row of the lattice (theta = 3 pi/2) is merged into the first (theta = -pi/2, the same
+   points). Cells, the lattice and the outer side's edges are renumbered; the other side lists
+   are left stale (not used). */
+static void close_ring(sc_mesh *ring) {
+  const int nI = 2 * ring->nx + 1, nJ = 2 * ring->ny + 1;
+  mc_int *new_id = malloc(sizeof(mc_int) * (size_t)ring->n_nodes), n = 0;
+  for (int k = 0; k < nI * (nJ - 1); ++k) /* the nodes kept, in their order (new id <= old id) */
+    if (ring->lattice[k] >= 0) {
+      const mc_int i = ring->lattice[k];
+      new_id[i] = n, ring->xy[2 * n] = ring->xy[2 * i], ring->xy[2 * n + 1] = ring->xy[2 * i + 1], ++n;
+    }
+  for (int I = 0; I < nI; ++I) {
+    const mc_int seam = ring->lattice[(nJ - 1) * nI + I], first = ring->lattice[I];
+    if (seam >= 0) new_id[seam] = new_id[first];
+  }
+  for (mc_int k = 0; k < ring->npc * ring->n_cells; ++k) ring->cells[k] = new_id[ring->cells[k]];
+  for (int k = 0; k < nI * nJ; ++k)
+    if (ring->lattice[k] >= 0) ring->lattice[k] = new_id[ring->lattice[k]];
+  for (mc_int k = 0; k < 2 * ring->n_side_edges[SC_RIGHT]; ++k) ring->side_edges[SC_RIGHT][k] = new_id[ring->side_edges[SC_RIGHT][k]];
+  ring->n_nodes = n;
+  free(new_id);
 }
 
 typedef struct ring_result {
@@ -607,6 +633,7 @@ typedef struct ring_result {
   long dofs;
   double c_vertical, c_horizontal; /* the diameter changes over P R^3 / (E' I) */
   double force[4];                 /* pair k's vertical force on the ring (2 k) and its plate, over P */
+  double support;                  /* whole ring: the larger force of its two supports, over P */
   double seconds;
 } ring_result;
 
@@ -628,26 +655,50 @@ static mc_int *ring_arc(const sc_mesh *ring, double y_min, int sign, mc_int *n) 
    ring at (0, +-(R + h/2)). Body 1 the ring, 2 the bottom plate (rollers on its bottom), 3 the
    top plate under a uniform traction P / 2 over its top. P makes the thin ring's shortening
    RING_APPROACH (1e-3 R), so the ring does not wrap onto the plates. */
-static void ring_solve(double h_over_R, int level, ring_result *out) {
+static void ring_solve(double h_over_R, int level, int whole, ring_result *out) {
   const double R = RING_R, h = h_over_R * R, ro = R + h / 2, W = R / 2, e_prime = YOUNG / (1 - NU * NU),
                I = h * h * h / 12, unit_per_P = R * R * R / (e_prime * I), P = RING_APPROACH / (C_VERTICAL * unit_per_P);
   const int nr = 1 << level, nt = 2 * (int)ceil(PI / (4 * h_over_R)) << level, np = 4 << level;
+  const int f = whole ? 2 : 1; /* the whole ring and plates: twice the cells around and across */
   sc_mesh ring, plate[2];
-  if (sc_mesh_cells(&ring, 9, nr, nt, R - h / 2, -PI / 2, h, PI, 0) || sc_mesh_cells(&plate[0], 9, np, np / 2, 0, -ro - W, W, W, 0) ||
-      sc_mesh_cells(&plate[1], 9, np, np / 2, 0, ro, W, W, 0)) {
+  if (sc_mesh_cells(&ring, 9, nr, f * nt, R - h / 2, -PI / 2, h, f * PI, 0) ||
+      sc_mesh_cells(&plate[0], 9, f * np, np / 2, whole ? -W : 0, -ro - W, f * W, W, 0) ||
+      sc_mesh_cells(&plate[1], 9, f * np, np / 2, whole ? -W : 0, ro, f * W, W, 0)) {
     fprintf(stderr, "assemblies: ring meshes failed\n");
     exit(1);
   }
   sc_mesh_map(&ring, ring_polar, NULL);
+  if (whole) close_ring(&ring);
+  /* the mean radius's nodes: lattice column nr (of 2 nr + 1), rows 0, nt, 2 nt, 3 nt (theta =
+     -pi/2, 0, pi/2, pi) */
+  const int nI = 2 * nr + 1;
+  const mc_int bottom = ring.lattice[nr], side = ring.lattice[nt * nI + nr], top = ring.lattice[2 * nt * nI + nr],
+               other_side = whole ? ring.lattice[3 * nt * nI + nr] : -1;
+  if (fabs(ring.xy[2 * side] - R) > 1e-9 || fabs(ring.xy[2 * top + 1] - R) > 1e-9 || fabs(ring.xy[2 * bottom + 1] + R) > 1e-9 ||
+      (whole && fabs(ring.xy[2 * other_side] + R) > 1e-9)) {
+    fprintf(stderr, "assemblies: the ring's mean-radius nodes are misplaced\n");
+    exit(1);
+  }
   mc_model *m;
   if (mc_create(&m) != MC_OK) exit(1);
   CALL(mc_set_body_count(m, 3));
   CALL(sc_set_mesh(m, 1, &ring, 0));
-  CALL(sc_fix_side(m, 1, &ring, SC_BOTTOM, MC_X, 0)); /* theta = -pi/2 and pi/2: on x = 0 */
-  CALL(sc_fix_side(m, 1, &ring, SC_TOP, MC_X, 0));
+  const mc_int poles[2] = {bottom, top};
+  if (whole) CALL(mc_fix(m, 1, 2, poles, MC_X, NULL)); /* no load by symmetry: holds the slide and the rotation */
+  else {
+    CALL(sc_fix_side(m, 1, &ring, SC_BOTTOM, MC_X, 0)); /* theta = -pi/2 and pi/2: on x = 0 */
+    CALL(sc_fix_side(m, 1, &ring, SC_TOP, MC_X, 0));
+  }
   for (int k = 0; k < 2; ++k) {
     CALL(sc_set_mesh(m, k + 2, &plate[k], 0));
-    CALL(sc_fix_side(m, k + 2, &plate[k], SC_LEFT, MC_X, 0));
+    if (whole) { /* u_x = 0 on the plate's nodes on x = 0: its lattice column 2 np */
+      const int nIp = 2 * f * np + 1, nJp = np + 1;
+      mc_int *axis = malloc(sizeof(mc_int) * (size_t)nJp);
+      for (int J = 0; J < nJp; ++J) axis[J] = plate[k].lattice[J * nIp + 2 * np];
+      CALL(mc_fix(m, k + 2, nJp, axis, MC_X, NULL));
+      free(axis);
+    } else
+      CALL(sc_fix_side(m, k + 2, &plate[k], SC_LEFT, MC_X, 0));
   }
   for (int b = 1; b <= 3; ++b) CALL(mc_set_material(m, b, YOUNG, NU));
   CALL(sc_fix_side(m, 2, &plate[0], SC_BOTTOM, MC_Y, 0));
@@ -666,25 +717,23 @@ static void ring_solve(double h_over_R, int level, ring_result *out) {
   int64_t dofs;
   CALL(mc_get_info_int(m, MC_INFO_DOFS, &dofs));
   CALL(mc_get_info_real(m, MC_INFO_TIME_TOTAL, &out->seconds));
-  out->dofs = (long)dofs, out->nr = nr, out->nt = nt;
+  out->dofs = (long)dofs, out->nr = nr, out->nt = f * nt;
   double *u = malloc(sizeof(double) * 2 * (size_t)ring.n_nodes);
   CALL(mc_get_displacement(m, 1, u));
-  /* the mean radius's nodes: lattice column nr (of 2 nr + 1), rows 0, nt, 2 nt (of 2 nt + 1) */
-  const int nI = 2 * nr + 1;
-  const mc_int bottom = ring.lattice[nr], side = ring.lattice[nt * nI + nr], top = ring.lattice[2 * nt * nI + nr];
-  if (fabs(ring.xy[2 * side] - R) > 1e-9 || fabs(ring.xy[2 * top + 1] - R) > 1e-9 || fabs(ring.xy[2 * bottom + 1] + R) > 1e-9) {
-    fprintf(stderr, "assemblies: the ring's mean-radius nodes are misplaced\n");
-    exit(1);
-  }
   out->c_vertical = (u[2 * bottom + 1] - u[2 * top + 1]) / (P * unit_per_P);
-  out->c_horizontal = 2 * u[2 * side] / (P * unit_per_P);
+  out->c_horizontal = (u[2 * side] - (whole ? u[2 * other_side] : -u[2 * side])) / (P * unit_per_P);
+  out->support = 0;
+  if (whole) { /* the force of the two supports (zero in the exact symmetric solution) */
+    CALL(mc_get_reaction(m, 1, u));
+    out->support = fmax(fabs(u[2 * bottom]), fabs(u[2 * top])) / P;
+  }
   free(u);
   /* each pair's vertical force on the ring and on its plate (both halves, over P): pair 1
      pushes the ring up and the bottom plate down, pair 2 the ring down and the top plate up */
   for (int k = 0; k < 2; ++k) {
     const int sign = k ? -1 : 1;
-    out->force[2 * k] = 2 * sign * contact_load_y(m, 1, ring.n_nodes, ring.xy, 0, k ? 1 : -1) / P;
-    out->force[2 * k + 1] = -2 * sign * contact_load_y(m, k + 2, plate[k].n_nodes, plate[k].xy, NAN, 0) / P;
+    out->force[2 * k] = (3 - f) * sign * contact_load_y(m, 1, ring.n_nodes, ring.xy, 0, k ? 1 : -1) / P;
+    out->force[2 * k + 1] = -(3 - f) * sign * contact_load_y(m, k + 2, plate[k].n_nodes, plate[k].xy, NAN, 0) / P;
   }
   mc_destroy(m);
   sc_mesh_free(&ring), sc_mesh_free(&plate[0]), sc_mesh_free(&plate[1]);
@@ -692,12 +741,14 @@ static void ring_solve(double h_over_R, int level, ring_result *out) {
 
 static void ring_table(int quick) {
   static const double ratios[] = {0.1, 0.05, 0.025};
+  static const char *force_header = "largest \\|force / P - 1\\|";
+  double half[3][5][2]; /* the half model's shortening and growth, for the whole ring's table */
   printf("\n### A thin ring between two plates, plane strain\n\n");
   printf("Thin ring: the loaded diameter shortens by %.4f P R^3 / (E' I), the other grows by %.4f P R^3 / (E' I)\n\n", C_VERTICAL,
          C_HORIZONTAL);
   if (!quick) {
     printf("| h / R | curved bar: shortening | growth | level | cells (across x along the half ring) | DOFs | shortening | vs thin | "
-           "vs curved bar | growth | vs thin | vs curved bar | largest \\|force / P - 1\\| | seconds |\n");
+           "vs curved bar | growth | vs thin | vs curved bar | %s | seconds |\n", force_header);
     printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   }
   for (int r = 0; r < 3; ++r) {
@@ -706,7 +757,8 @@ static void ring_table(int quick) {
     const int levels = quick ? 1 : 5, first = quick ? 2 : 0;
     for (int level = first; level < first + levels; ++level) {
       ring_result o;
-      ring_solve(ratios[r], level, &o);
+      ring_solve(ratios[r], level, 0, &o);
+      half[r][level][0] = o.c_vertical, half[r][level][1] = o.c_horizontal;
       double worst_force = 0;
       for (int k = 0; k < 4; ++k) worst_force = fmax(worst_force, fabs(o.force[k] - 1));
       if (!quick) {
@@ -726,6 +778,41 @@ static void ring_table(int quick) {
         bound("shortening against the curved bar", o.c_vertical / cv - 1, curved_bound[r][0]);
         bound("growth against the curved bar", o.c_horizontal / ch - 1, curved_bound[r][1]);
         bound("contact forces / P (both sides of both pairs)", worst_force, 1e-8);
+      }
+    }
+  }
+  /* the whole ring: held sideways and against rotation by u_x = 0 at its two poles' mean-radius
+     nodes (no load by symmetry), vertically by contact alone */
+  printf("\nThe whole ring (two supports u_x = 0 that carry no load, the contact surfaces continuous through x = 0):\n\n");
+  if (!quick) {
+    printf("| h / R | level | cells (across x around) | DOFs | shortening | vs half model | vs curved bar | growth | vs half model | "
+           "vs curved bar | %s | largest support force / P | seconds |\n", force_header);
+    printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  }
+  for (int r = quick ? 1 : 0; r < (quick ? 2 : 3); ++r) {
+    double cv, ch;
+    ring_curved_beam(ratios[r] * RING_R, &cv, &ch);
+    for (int level = quick ? 2 : 0; level < (quick ? 3 : 4); ++level) {
+      ring_result o;
+      ring_solve(ratios[r], level, 1, &o);
+      double worst_force = 0;
+      for (int k = 0; k < 4; ++k) worst_force = fmax(worst_force, fabs(o.force[k] - 1));
+      if (!quick) {
+        printf("| 1/%.0f | %d | %dx%d | %ld | %.5f | %+.3f %% | %+.3f %% | %.5f | %+.3f %% | %+.3f %% | %.1e | %.1e | %.2f |\n",
+               1 / ratios[r], level, o.nr, o.nt, o.dofs, o.c_vertical, 100 * (o.c_vertical / half[r][level][0] - 1),
+               100 * (o.c_vertical / cv - 1), o.c_horizontal, 100 * (o.c_horizontal / half[r][level][1] - 1),
+               100 * (o.c_horizontal / ch - 1), worst_force, o.support, o.seconds);
+        fflush(stdout);
+      } else {
+        printf("h / R = 1/%.0f, level %d (%ld DOFs): shortening %.5f, growth %.5f, supports %.1e P\n", 1 / ratios[r], level, o.dofs,
+               o.c_vertical, o.c_horizontal, o.support);
+        /* as the half model's, the curved bar's within about twice the errors on this mesh */
+        bound("shortening against the thin ring", o.c_vertical / C_VERTICAL - 1, 2 * ratios[r] * ratios[r]);
+        bound("growth against the thin ring", o.c_horizontal / C_HORIZONTAL - 1, 2 * ratios[r] * ratios[r]);
+        bound("shortening against the curved bar", o.c_vertical / cv - 1, 0.0012);
+        bound("growth against the curved bar", o.c_horizontal / ch - 1, 0.0007);
+        bound("contact forces / P (both sides of both pairs)", worst_force, 1e-8);
+        bound("support forces / P", o.support, 1e-8);
       }
     }
   }
