@@ -52,9 +52,12 @@
  *    docs/convergence.md); the lower body of each contact is its non-mortar side. Reported: p0
  *    and a at the 4 contacts, and each pair's vertical force on both of its sides.
  *
- * usage: assemblies [--quick] [lame|roller|ring|cylinders ...]
+ * usage: assemblies [--quick] [--mirror] [lame|roller|ring|cylinders ...]
  *   --quick  coarse meshes only, and exit status 1 unless every error is below its bound (the
  *            bounds printed; ctest bench_assemblies_quick). Without it: the mesh sequences.
+ *   --mirror the roller's and the stacked cylinders' tables for whole models made by mirroring
+ *            the half meshes about x = 0 (mirror-symmetric: the u_x = 0 supports on x = 0 then
+ *            carry no load; the contact surfaces have no end at x = 0), for comparison.
  */
 #include "hertz_scene.h"
 #include "mortarcontact.h"
@@ -242,6 +245,7 @@ typedef struct stack_scene {
   int n_bottom; mc_int *bottom;             /* bottom plate's bottom nodes */
   int n_top; mc_int *top_edges;             /* top plate's top edges */
   int centre;                               /* a disc's centre node (the same id in every disc) */
+  int whole;                                /* 1 after stack_mirror: both halves */
 } stack_scene;
 
 /* Keeps the part x >= 0 of a mesh (x = 0 is a grid line of both Hertz meshes): new_id maps old
@@ -375,6 +379,56 @@ static int stack_build(stack_scene *r, int n_discs, double h1, int npc) {
   return r->centre < 0 || r->n_top < 1 || r->n_bottom < 2;
 }
 
+/* Mirrors mesh k about x = 0, its nodes on x = 0 shared: k's nodes first, then the images of the
+   others (mirror[i]: the id of node i's image). Cells are reversed to stay counter-clockwise. */
+static mesh mirror_x(const mesh *k, int *mirror) {
+  mesh out;
+  int n = k->n_nodes;
+  for (int i = 0; i < k->n_nodes; ++i) mirror[i] = k->xy[2 * i] == 0 ? i : n++;
+  out.npc = k->npc, out.n_nodes = n, out.n_cells = 2 * k->n_cells;
+  out.xy = malloc(sizeof(double) * 2 * (size_t)n);
+  out.cells = malloc(sizeof(mc_int) * (size_t)(out.npc * out.n_cells));
+  memcpy(out.xy, k->xy, sizeof(double) * 2 * (size_t)k->n_nodes);
+  for (int i = 0; i < k->n_nodes; ++i) out.xy[2 * mirror[i]] = -k->xy[2 * i], out.xy[2 * mirror[i] + 1] = k->xy[2 * i + 1];
+  memcpy(out.cells, k->cells, sizeof(mc_int) * (size_t)(k->npc * k->n_cells));
+  for (int c = 0; c < k->n_cells; ++c)
+    for (int v = 0; v < k->npc; ++v) out.cells[k->npc * (k->n_cells + c) + v] = mirror[k->cells[k->npc * c + k->npc - 1 - v]];
+  return out;
+}
+
+/* The n edges e and their images, each image reversed (counter-clockwise): 2 n edges. */
+static mc_int *with_images(mc_int *e, int n, const int *mirror) {
+  mc_int *out = malloc(sizeof(mc_int) * 4 * (size_t)n);
+  memcpy(out, e, sizeof(mc_int) * 2 * (size_t)n);
+  for (int j = 0; j < n; ++j) out[2 * (n + j)] = mirror[e[2 * j + 1]], out[2 * (n + j) + 1] = mirror[e[2 * j]];
+  free(e);
+  return out;
+}
+
+/* The half model made whole: every body mirrored about x = 0, a mirror-symmetric mesh whose
+   solution is exactly symmetric. The u_x = 0 supports on x = 0 stay: they then hold the slides
+   and rotations and carry no load. The contact surfaces run on through x = 0 (no end there). */
+static void stack_mirror(stack_scene *r) {
+  const int nb = r->n_discs + 2;
+  int *mirror[MAX_DISCS + 2];
+  for (int b = 0; b < nb; ++b) {
+    mirror[b] = malloc(sizeof(int) * (size_t)r->body[b].n_nodes);
+    const mesh whole = mirror_x(&r->body[b], mirror[b]);
+    free(r->body[b].xy), free(r->body[b].cells);
+    r->body[b] = whole;
+  }
+  for (int e = 0; e < 2; ++e) {
+    r->arc[e] = with_images(r->arc[e], r->n_arc, mirror[0]);
+    r->face[e] = with_images(r->face[e], r->n_face[e], mirror[r->n_discs + e]), r->n_face[e] *= 2;
+  }
+  r->n_arc *= 2;
+  r->top_edges = with_images(r->top_edges, r->n_top, mirror[r->n_discs + 1]), r->n_top *= 2;
+  free(r->bottom);
+  r->bottom = nodes_where(&r->body[r->n_discs], 1, -4 * ROLLER_R, &r->n_bottom);
+  for (int b = 0; b < nb; ++b) free(mirror[b]);
+  r->whole = 1;
+}
+
 static void stack_free(stack_scene *r) {
   for (int b = 0; b < r->n_discs + 2; ++b) free(r->body[b].xy), free(r->body[b].cells), free(r->axis[b]);
   for (int e = 0; e < 2; ++e) free(r->arc[e]), free(r->face[e]);
@@ -454,8 +508,9 @@ static void stack_solve(const stack_scene *r, stack_result *out) {
        upper one up */
     const int lower = k == 0 ? n : k - 1, upper = k == n ? n + 1 : k;
     const double centre_lower = k == 0 ? NAN : (2 * k - 1) * ROLLER_R, centre_upper = k == n ? NAN : (2 * k + 1) * ROLLER_R;
-    out->force[2 * k] = -2 * contact_load_y(m, lower + 1, r->body[lower].n_nodes, r->body[lower].xy, centre_lower, 1);
-    out->force[2 * k + 1] = 2 * contact_load_y(m, upper + 1, r->body[upper].n_nodes, r->body[upper].xy, centre_upper, -1);
+    const double halves = r->whole ? 1 : 2;
+    out->force[2 * k] = -halves * contact_load_y(m, lower + 1, r->body[lower].n_nodes, r->body[lower].xy, centre_lower, 1);
+    out->force[2 * k + 1] = halves * contact_load_y(m, upper + 1, r->body[upper].n_nodes, r->body[upper].xy, centre_upper, -1);
     free(nodes), free(p), free(f);
   }
   double *sigma = malloc(sizeof(double) * 4 * (size_t)r->body[0].n_nodes);
@@ -469,12 +524,13 @@ static void stack_solve(const stack_scene *r, stack_result *out) {
 
 /* Builds and solves the stack of n discs at h1 with cells of npc nodes. Returns the largest
    |force / P - 1| over every pair's two sides. */
-static double stack_run(int n_discs, double h1, int npc, stack_result *o) {
+static double stack_run(int n_discs, double h1, int npc, int whole, stack_result *o) {
   stack_scene r;
   if (stack_build(&r, n_discs, h1, npc)) {
     fprintf(stderr, "assemblies: meshes of %d disc(s) failed at h1 = %g\n", n_discs, h1);
     exit(1);
   }
+  if (whole) stack_mirror(&r);
   stack_solve(&r, o);
   stack_free(&r);
   double worst = 0;
@@ -482,10 +538,10 @@ static double stack_run(int n_discs, double h1, int npc, stack_result *o) {
   return worst;
 }
 
-static void roller_table(int quick) {
+static void roller_table(int quick, int whole) {
   const double e_star = YOUNG / (2 * (1 - NU * NU)), a = sqrt(4 * ROLLER_P * ROLLER_R / (PI * e_star)),
                p0 = 2 * ROLLER_P / (PI * a), sxx = 2 * ROLLER_P / (PI * 2 * ROLLER_R), syy = -6 * ROLLER_P / (PI * 2 * ROLLER_R);
-  printf("\n### A roller between two plates, plane strain\n\n");
+  printf("\n### A roller between two plates, plane strain%s\n\n", whole ? ", the half meshes mirrored into a whole model" : "");
   printf("Hertz: E* = %.0f, a = %.4f, p0 = %.1f; disc centre: sigma_xx = %+.2f, sigma_yy = %+.2f\n\n", e_star, a, p0, sxx, syy);
   if (!quick) {
     printf("| h1 (disc, at the poles) | a / h1 | DOFs | p0 bottom | error | p0 top | error | a bottom | error | a top | error | "
@@ -497,7 +553,7 @@ static void roller_table(int quick) {
   const int n = quick ? 1 : 6;
   for (int level = 0; level < n; ++level) {
     stack_result o;
-    const double worst_force = stack_run(1, h[level], 3, &o), force = 0.5 * (o.force[0] + o.force[2]) / ROLLER_P;
+    const double worst_force = stack_run(1, h[level], 3, whole, &o), force = 0.5 * (o.force[0] + o.force[2]) / ROLLER_P;
     if (!quick) {
       printf("| %.4g | %.1f | %ld | %.1f | %+.2f %% | %.1f | %+.2f %% | %.4f | %+.2f %% | %.4f | %+.2f %% | %+.2f | %+.2f %% | "
              "%+.2f | %+.2f %% | %.6f | %.2f |\n",
@@ -523,12 +579,13 @@ static void roller_table(int quick) {
 
 /* ---- three equal cylinders stacked between two plates -------------------------------------- */
 
-static void cylinders_table(int quick, int npc) {
+static void cylinders_table(int quick, int npc, int whole) {
   const double e_star = YOUNG / (2 * (1 - NU * NU)), a_pc = sqrt(4 * ROLLER_P * ROLLER_R / (PI * e_star)),
                a_cc = sqrt(4 * ROLLER_P * 0.5 * ROLLER_R / (PI * e_star)), a[4] = {a_pc, a_cc, a_cc, a_pc},
                p0[4] = {2 * ROLLER_P / (PI * a_pc), 2 * ROLLER_P / (PI * a_cc), 2 * ROLLER_P / (PI * a_cc), 2 * ROLLER_P / (PI * a_pc)};
   static const char *name[4] = {"bottom plate-cylinder 1", "cylinder 1-cylinder 2", "cylinder 2-cylinder 3", "cylinder 3-top plate"};
-  printf("\n### Three equal cylinders stacked between two plates, plane strain, %s cells\n\n", npc == 3 ? "P1" : "Q1");
+  printf("\n### Three equal cylinders stacked between two plates, plane strain, %s cells%s\n\n", npc == 3 ? "P1" : "Q1",
+         whole ? ", the half meshes mirrored into a whole model" : "");
   printf("Hertz: plate-cylinder (R) a = %.4f, p0 = %.1f; cylinder-cylinder (R / 2) a = %.4f, p0 = %.1f\n\n", a_pc, p0[0], a_cc, p0[1]);
   if (!quick) {
     printf("| h1 (discs, at the poles) | a_cc / h1 | DOFs | p0 plate 1 | p0 cc 1 | p0 cc 2 | p0 plate 2 | a plate 1 | a cc 1 | a cc 2 | "
@@ -540,7 +597,7 @@ static void cylinders_table(int quick, int npc) {
   const int n = quick ? 1 : (int)(sizeof full / sizeof *full);
   for (int level = 0; level < n; ++level) {
     stack_result o;
-    const double worst_force = stack_run(3, h[level], npc, &o);
+    const double worst_force = stack_run(3, h[level], npc, whole, &o);
     if (!quick) {
       printf("| %.4g | %.1f | %ld |", h[level] * ROLLER_R, a_cc / (h[level] * ROLLER_R), o.dofs);
       for (int k = 0; k < 4; ++k) printf(" %.1f (%+.2f %%) |", o.p0[k], 100 * (o.p0[k] / p0[k] - 1));
@@ -819,25 +876,31 @@ static void ring_table(int quick) {
 }
 
 int main(int argc, char **argv) {
-  int quick = 0, lame = 0, roller = 0, ring = 0, cylinders = 0;
+  int quick = 0, whole = 0, lame = 0, roller = 0, ring = 0, cylinders = 0;
   for (int i = 1; i < argc; ++i) {
     if (!strcmp(argv[i], "--quick")) quick = 1;
+    else if (!strcmp(argv[i], "--mirror")) whole = 1;
     else if (!strcmp(argv[i], "lame")) lame = 1;
     else if (!strcmp(argv[i], "roller")) roller = 1;
     else if (!strcmp(argv[i], "ring")) ring = 1;
     else if (!strcmp(argv[i], "cylinders")) cylinders = 1;
     else {
-      fprintf(stderr, "usage: assemblies [--quick] [lame|roller|ring|cylinders ...]\n");
+      fprintf(stderr, "usage: assemblies [--quick] [--mirror] [lame|roller|ring|cylinders ...]\n");
       return 2;
     }
   }
+  if (whole && (quick || lame || ring)) {
+    fprintf(stderr, "assemblies: --mirror is for the full tables of roller and cylinders only\n");
+    return 2;
+  }
+  if (whole && !roller && !cylinders) roller = cylinders = 1;
   if (!lame && !roller && !ring && !cylinders) lame = roller = ring = cylinders = 1;
   if (lame) lame_table(0, quick), lame_table(1, quick);
-  if (roller) roller_table(quick);
+  if (roller) roller_table(quick, whole);
   if (ring) ring_table(quick);
   if (cylinders) {
-    cylinders_table(quick, 4);
-    if (!quick) cylinders_table(quick, 3); /* P1, for comparison (docs/convergence.md) */
+    cylinders_table(quick, 4, whole);
+    if (!quick) cylinders_table(quick, 3, whole); /* P1, for comparison (docs/convergence.md) */
   }
   if (quick) printf("\n%s\n", failures ? "FAILED: an error above its bound" : "all errors below their bounds");
   return failures ? 1 : 0;
