@@ -711,12 +711,14 @@ static mc_int *ring_arc(const sc_mesh *ring, double y_min, int sign, mc_int *n) 
    level 0), between two plates R/2 wide (half) and R/2 thick, Q9 too; the plates touch the
    ring at (0, +-(R + h/2)). Body 1 the ring, 2 the bottom plate (rollers on its bottom), 3 the
    top plate under a uniform traction P / 2 over its top. P makes the thin ring's shortening
-   RING_APPROACH (1e-3 R), so the ring does not wrap onto the plates. */
+   RING_APPROACH (1e-3 R), so the ring does not wrap onto the plates. whole: the whole ring
+   (close_ring) and plates, u_x = 0 at the ring's two poles' mean-radius nodes and on the plates'
+   nodes on x = 0 (no load by symmetry; their force is out->support). */
 static void ring_solve(double h_over_R, int level, int whole, ring_result *out) {
   const double R = RING_R, h = h_over_R * R, ro = R + h / 2, W = R / 2, e_prime = YOUNG / (1 - NU * NU),
                I = h * h * h / 12, unit_per_P = R * R * R / (e_prime * I), P = RING_APPROACH / (C_VERTICAL * unit_per_P);
   const int nr = 1 << level, nt = 2 * (int)ceil(PI / (4 * h_over_R)) << level, np = 4 << level;
-  const int f = whole ? 2 : 1; /* the whole ring and plates: twice the cells around and across */
+  const int f = whole ? 2 : 1; /* whole: the full circle (twice the cells) and the plates' full width */
   sc_mesh ring, plate[2];
   if (sc_mesh_cells(&ring, 9, nr, f * nt, R - h / 2, -PI / 2, h, f * PI, 0) ||
       sc_mesh_cells(&plate[0], 9, f * np, np / 2, whole ? -W : 0, -ro - W, f * W, W, 0) ||
@@ -789,8 +791,8 @@ static void ring_solve(double h_over_R, int level, int whole, ring_result *out) 
      pushes the ring up and the bottom plate down, pair 2 the ring down and the top plate up */
   for (int k = 0; k < 2; ++k) {
     const int sign = k ? -1 : 1;
-    out->force[2 * k] = (3 - f) * sign * contact_load_y(m, 1, ring.n_nodes, ring.xy, 0, k ? 1 : -1) / P;
-    out->force[2 * k + 1] = -(3 - f) * sign * contact_load_y(m, k + 2, plate[k].n_nodes, plate[k].xy, NAN, 0) / P;
+    out->force[2 * k] = (whole ? 1 : 2) * sign * contact_load_y(m, 1, ring.n_nodes, ring.xy, 0, k ? 1 : -1) / P;
+    out->force[2 * k + 1] = -(whole ? 1 : 2) * sign * contact_load_y(m, k + 2, plate[k].n_nodes, plate[k].xy, NAN, 0) / P;
   }
   mc_destroy(m);
   sc_mesh_free(&ring), sc_mesh_free(&plate[0]), sc_mesh_free(&plate[1]);
