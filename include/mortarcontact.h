@@ -102,8 +102,14 @@ enum {
                                      MC_INTERFACE_AUTO (see below) */
   MC_OPTION_ERROR_ESTIMATE = 12, /* int: 1 (default) every solve estimates its error (MC_INFO_ERROR_ESTIMATE,
                                     mc_get_error_indicator); 0 skips it */
-  MC_OPTION_MULTIPLIER = 13      /* int: MC_MULTIPLIER_*; the contact multipliers of a body 1 with
+  MC_OPTION_MULTIPLIER = 13,     /* int: MC_MULTIPLIER_*; the contact multipliers of a body 1 with
                                     quadratic cells (MC_METHOD_MORTAR); default MC_MULTIPLIER_LINEAR */
+  MC_OPTION_LOAD_STEPS = 14,     /* int >= 1: a model with friction goes from the last converged state
+                                    to the loads and prescribed values of this solve in n equal
+                                    increments; default 1. No effect without friction. */
+  MC_OPTION_FRICTION_CT = 15     /* real >= 0: the tangential complementarity parameter c_t of the
+                                    stick/slip update (it changes the iterates, never the converged
+                                    answer); 0 (default) chooses one scaled by the interface operator */
 };
 
 /* Values of MC_OPTION_MULTIPLIER: the space of the contact pressure when body 1 has quadratic
@@ -214,6 +220,8 @@ enum {
   MC_INFO_FACTORIZATIONS = 6,      /* int: numeric factorizations done by the last solve (0 on reuse) */
   MC_INFO_INTERFACE_SOLVER = 7,    /* int: the contact solve that ran: MC_INTERFACE_CONDENSED or
                                       MC_INTERFACE_SPARSE; 0 without contact */
+  MC_INFO_STICK_NODES = 8,         /* int: constraint rows of pairs with friction that stick */
+  MC_INFO_SLIP_NODES = 9,          /* int: constraint rows of pairs with friction that slip */
   MC_INFO_TIME_ASSEMBLY = 20,      /* real, seconds */
   MC_INFO_TIME_ANALYSIS = 21,      /* real, seconds: ordering and symbolic factorization */
   MC_INFO_TIME_FACTORIZATION = 22, /* real, seconds: numeric factorization */
@@ -232,7 +240,7 @@ enum {
                                       on the full problem's residuals) and reports the value after;
                                       MC_INFO_COMPLEMENTARITY, the condensed problem's, cannot show
                                       what the condensation lost (docs/robustness.md) */
-  MC_INFO_ERROR_ESTIMATE = 30      /* real: the estimated relative error of the solution in the energy norm
+  MC_INFO_ERROR_ESTIMATE = 30,     /* real: the estimated relative error of the solution in the energy norm
                                       of both bodies, eta / sqrt(||u_h||^2 + eta^2) with ||u_h||^2 =
                                       u^T K u (twice MC_INFO_STRAIN_ENERGY): Zienkiewicz-Zhu recovery in
                                       each cell plus, on body 1's contact edges, the misfit between the
@@ -240,6 +248,10 @@ enum {
                                       complementarity of pressure and gap (docs/theory.md, "Error
                                       estimate"); 0 when MC_OPTION_ERROR_ESTIMATE is 0. Host bodies
                                       (no cells) add nothing to it. */
+  MC_INFO_FRICTION_COMPLEMENTARITY = 31, /* real: largest relative violation of the friction conditions
+                                      of the last solve's last step: |lambda_t| <= bound, slip 0 where
+                                      sticking, lambda_t = bound with the slip's sign where slipping;
+                                      0 without friction */
 };
 
 /* ---- lifecycle, errors, version ---------------------------------------- */
@@ -384,9 +396,32 @@ typedef enum mc_contact_field {
   MC_CONTACT_FORCE = 2,       /* nodal contact force, as mc_get_contact_force */
   MC_CONTACT_GAP = 3,         /* gap after the solve (+infinity where the mortar side is not seen) */
   MC_CONTACT_INITIAL_GAP = 4, /* initial gap, offsets included */
-  MC_CONTACT_NORMAL = 5       /* unit outward normal of the non-mortar body, 2 per position */
+  MC_CONTACT_NORMAL = 5,      /* unit outward normal of the non-mortar body, 2 per position */
+  MC_CONTACT_SHEAR = 6,       /* tangential traction on the non-mortar side along t = (-n_y, n_x):
+                                 the friction the mortar body exerts, opposite to the slip */
+  MC_CONTACT_SLIP = 7,        /* tangential slip of the last solve, (u1 - u2) . t from the last
+                                 converged state (all load steps of the solve) */
+  MC_CONTACT_SLIP_TOTAL = 8,  /* accumulated |slip| since the unloaded state (mc_reset_history) */
+  MC_CONTACT_STATE = 9        /* MC_STATE_OPEN, _STICK or _SLIP as a double; frictionless contact slips */
 } mc_contact_field;
+/* Values of MC_CONTACT_STATE. */
+enum { MC_STATE_OPEN = 0, MC_STATE_STICK = 1, MC_STATE_SLIP = 2 };
 MC_API mc_status mc_get_pair_contact(const mc_model *m, int pair, int field, double *out);
+
+/* ---- friction (docs/api.md, "Friction") --------------------------------------------------
+   Per contact pair: MC_FRICTION_NONE (default), MC_FRICTION_TRESCA (value: the slip bound, a
+   shear traction >= 0) or MC_FRICTION_COULOMB (value: the friction coefficient mu >= 0). The
+   stick/slip/open states are found exactly (a primal-dual active-set iteration; the converged
+   step satisfies the discrete conditions to round-off, MC_INFO_FRICTION_COMPLEMENTARITY).
+   Friction remembers: each mc_solve of a model with friction is a step from the last converged
+   state (the first: the unloaded state), in MC_OPTION_LOAD_STEPS increments; mc_reset_history
+   returns to the unloaded state. A change of the model's structure (meshes, supports' set,
+   contact surfaces, method) also does. */
+enum { MC_FRICTION_NONE = 0, MC_FRICTION_TRESCA = 1, MC_FRICTION_COULOMB = 2 };
+MC_API mc_status mc_set_friction(mc_model *m, int pair, int law, double value);
+/* Forgets the converged state: the next solve starts from the unloaded state (u = 0, loads 0,
+   accumulated slip 0). */
+MC_API mc_status mc_reset_history(mc_model *m);
 
 /* ---- host bodies: a legacy program's own matrices (docs/tutorial_legacy.md) ---------------
 

@@ -383,8 +383,15 @@ mc_status mc_set_option_int(mc_model *m, int option, int64_t value) {
         model.options.interface_solver = int(value);
         model.structure_changed();  // the two paths factorize different matrices
         break;
+      case MC_OPTION_LOAD_STEPS:
+        if (value < 1 || value > 1000000)
+          fail(MC_ERROR_ARGUMENT, "value = %lld: MC_OPTION_LOAD_STEPS takes 1 to 1000000", (long long)value);
+        model.options.load_steps = int(value);
+        model.values_changed();
+        break;
       case MC_OPTION_TOLERANCE:
       case MC_OPTION_FEATURE_ANGLE:
+      case MC_OPTION_FRICTION_CT:
         fail(MC_ERROR_ARGUMENT, "option = %d is real-valued: use mc_set_option_real", option);
       default:
         fail(MC_ERROR_ARGUMENT, "option = %d: not an integer option", option);
@@ -401,11 +408,19 @@ mc_status mc_set_option_real(mc_model *m, int option, double value) {
       model.structure_changed();
       return;
     }
+    if (option == MC_OPTION_FRICTION_CT) {
+      if (!(value >= 0 && std::isfinite(value)))
+        fail(MC_ERROR_ARGUMENT, "value = %g: MC_OPTION_FRICTION_CT must be finite and >= 0 (0: scaled automatically)",
+             value);
+      model.options.friction_ct = value;
+      model.values_changed();
+      return;
+    }
     if (option != MC_OPTION_TOLERANCE) {
       if (option == MC_OPTION_METHOD || option == MC_OPTION_MAX_ITERATIONS || option == MC_OPTION_ORDERING ||
           option == MC_OPTION_Q1_INTEGRATION || option == MC_OPTION_CONTACT_NORMAL ||
           option == MC_OPTION_CONTACT_SURFACE || option == MC_OPTION_THREADS || option == MC_OPTION_INTERFACE_SOLVER ||
-          option == MC_OPTION_ERROR_ESTIMATE || option == MC_OPTION_MULTIPLIER)
+          option == MC_OPTION_ERROR_ESTIMATE || option == MC_OPTION_MULTIPLIER || option == MC_OPTION_LOAD_STEPS)
         fail(MC_ERROR_ARGUMENT, "option = %d is integer-valued: use mc_set_option_int", option);
       fail(MC_ERROR_ARGUMENT, "option = %d: not a real option", option);
     }
@@ -442,8 +457,10 @@ mc_status mc_get_info_int(const mc_model *m, int info, int64_t *value) {
       case MC_INFO_CONTACT_NODES: *value = i.contact_rows; break;
       case MC_INFO_FACTORIZATIONS: *value = i.factorizations; break;
       case MC_INFO_INTERFACE_SOLVER: *value = i.interface_solver; break;
+      case MC_INFO_STICK_NODES: *value = i.stick; break;
+      case MC_INFO_SLIP_NODES: *value = i.slip; break;
       default:
-        if (info >= MC_INFO_TIME_ASSEMBLY && info <= MC_INFO_ERROR_ESTIMATE)
+        if (info >= MC_INFO_TIME_ASSEMBLY && info <= MC_INFO_FRICTION_COMPLEMENTARITY)
           fail(MC_ERROR_ARGUMENT, "info = %d is real-valued: use mc_get_info_real", info);
         fail(MC_ERROR_ARGUMENT, "info = %d: not an info", info);
     }
@@ -466,8 +483,9 @@ mc_status mc_get_info_real(const mc_model *m, int info, double *value) {
       case MC_INFO_EQUILIBRIUM: *value = i.equilibrium; break;
       case MC_INFO_GAP_RESIDUAL: *value = i.gap_residual; break;
       case MC_INFO_ERROR_ESTIMATE: *value = i.error_estimate; break;
+      case MC_INFO_FRICTION_COMPLEMENTARITY: *value = i.friction_complementarity; break;
       default:
-        if (info >= MC_INFO_DOFS && info <= MC_INFO_INTERFACE_SOLVER)
+        if (info >= MC_INFO_DOFS && info <= MC_INFO_SLIP_NODES)
           fail(MC_ERROR_ARGUMENT, "info = %d is integer-valued: use mc_get_info_int", info);
         fail(MC_ERROR_ARGUMENT, "info = %d: not an info", info);
     }

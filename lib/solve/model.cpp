@@ -399,15 +399,6 @@ void Model::solve() {
   // displacements_known: loads[b].v already holds K^+ (f_eff - B^T lambda) (the sparse path, or
   // after a refinement).
   bool displacements_known = false;
-  if (contact_ && contact_->sparse) {
-    // The sparse path, or (if its active-set iteration cycles) the condensed one, whose QP
-    // solver has a fallback for that (fall_back_to_condensed).
-    if (solve_sparse(loads, lambda, alpha)) displacements_known = true;
-    else fall_back_to_condensed(loads);
-  }
-  if (contact_ && !contact_->sparse) solve_condensed(loads, qp, lambda, alpha);
-  if (contact_) infos.interface_solver = contact_->sparse ? MC_INTERFACE_SPARSE : MC_INTERFACE_CONDENSED;
-
   // u = K^+ (f_eff - B^T lambda) + R alpha, then the prescribed values.
   const double t_recovery = now();
   std::vector<double> f_norm2(body.size(), 0.0), residual_norm2(body.size(), 0.0), energy(body.size(), 0.0);
@@ -417,7 +408,7 @@ void Model::solve() {
     const int ndof = sys.stiffness.n;
     std::vector<double> contact_force(ndof, 0.0), rigid_motion(ndof, 0.0);  // rigid_motion: R alpha
     if (contact_) {
-      for (int r = 0; r < contact_->rows.size(); ++r)
+      for (int r = 0; r < contact_->b_rows(); ++r)  // normal rows, then friction's tangential ones
         for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
           contact_force[contact_->b_dof[b][p]] -= contact_->b_value[b][p] * lambda[r];
       add_rigid_motion(b, alpha, rigid_motion);
@@ -466,14 +457,47 @@ void Model::solve() {
     body_.contact_load = contact_force;
     if (!body_.host) cell_and_nodal_stresses(b, sys.laws);
   };
-  for_each_body(recover);
-  if (contact_) {
-    infos.gap_residual = recovered_gap_residual(lambda);
-    if (!contact_->sparse && infos.gap_residual > kRefineAboveGapResidual && refine_solution(qp, loads, lambda, alpha)) {
-      displacements_known = true;
-      std::fill(f_norm2.begin(), f_norm2.end(), 0.0), std::fill(residual_norm2.begin(), residual_norm2.end(), 0.0);
-      for_each_body(recover);  // reactions, energy and stresses of the refined displacements
+  // Friction: the solve is a step from the last converged state (a rebuilt structure starts from
+  // the unloaded one), in MC_OPTION_LOAD_STEPS increments of the loads and prescribed values;
+  // each increment reuses the factorizations (friction.cpp).
+  const bool friction = contact_ && !contact_->tangent_of.empty();
+  if (rebuild) reset_history();
+  std::vector<std::vector<double>> solve_start;  // the displacements the solve starts from (empty: zero)
+  std::vector<LoadSolve> target, step_start;
+  std::vector<std::vector<double>> target_prescribed;
+  if (friction) {
+    refresh_friction();
+    prepare_history();
+    solve_start = history_.u, target = loads, target_prescribed = fixed_value_;
+  }
+  const int steps = friction ? options.load_steps : 1;
+  for (int step = 1; step <= steps; ++step) {
+    if (friction) {
+      step_loads(step, steps, target, target_prescribed, step_start, loads);
+      if (steps > 1) progress(MC_LOG_PHASE, "load step %d of %d", step, steps);
     }
+    displacements_known = false;
+    if (contact_ && contact_->sparse) {
+      // The sparse path, or (if its active-set iteration cycles) the condensed one, whose QP
+      // solver has a fallback for that (fall_back_to_condensed).
+      if (solve_sparse(loads, lambda, alpha)) displacements_known = true;
+      else fall_back_to_condensed(loads);
+    }
+    if (contact_ && !contact_->sparse) solve_condensed(loads, qp, lambda, alpha);
+    if (contact_) infos.interface_solver = contact_->sparse ? MC_INTERFACE_SPARSE : MC_INTERFACE_CONDENSED;
+    std::fill(f_norm2.begin(), f_norm2.end(), 0.0), std::fill(residual_norm2.begin(), residual_norm2.end(), 0.0);
+    for_each_body(recover);
+    if (contact_) {
+      infos.gap_residual = recovered_gap_residual(lambda);
+      // (The refinement works on the normal rows' active set: not with friction's rows.)
+      if (!friction && !contact_->sparse && infos.gap_residual > kRefineAboveGapResidual &&
+          refine_solution(qp, loads, lambda, alpha)) {
+        displacements_known = true;
+        std::fill(f_norm2.begin(), f_norm2.end(), 0.0), std::fill(residual_norm2.begin(), residual_norm2.end(), 0.0);
+        for_each_body(recover);  // reactions, energy and stresses of the refined displacements
+      }
+    }
+    if (friction) record_step(loads);
   }
   // Per-body sums added in body order, whatever the thread count.
   double residual_norm = 0, f_norm = 0;
@@ -483,6 +507,7 @@ void Model::solve() {
   if (f_norm == 0) infos.equilibrium = std::sqrt(residual_norm);
 
   contact_results(lambda);
+  if (contact_) friction_results(lambda, solve_start);
   progress(MC_LOG_PHASE, "recovery: displacements, reactions, stresses and contact results, %.3g s", now() - t_recovery);
   if (options.error_estimate) {
     const double t_estimate = now();

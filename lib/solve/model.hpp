@@ -5,6 +5,7 @@
 #include "bodies/assembly.hpp"
 #include "contact/contact_geometry.hpp"
 #include "linalg/dual_qp.hpp"
+#include "linalg/friction_qp.hpp"
 #include "bodies/host_body.hpp"
 #include "bodies/mesh.hpp"
 #include "contact/mortar_operators.hpp"
@@ -60,6 +61,8 @@ struct ContactPair {
   bool has_side[2] = {false, false};   // [0] the non-mortar side, [1] the mortar side
   std::vector<SurfaceSegment> side[2];
   std::vector<double> gap_offset;      // per non-mortar node, added to g0; empty: none
+  int friction_law = MC_FRICTION_NONE; // mc_set_friction
+  double friction_value = 0;           // Tresca: the slip bound (a shear traction); Coulomb: mu
   bool complete() const { return has_side[0] && has_side[1]; }
   int body_of_side(int s) const { return s == 0 ? nonmortar : mortar; }
 };
@@ -123,6 +126,16 @@ struct ContactSystem {
   std::vector<int> column_offset;
   int aux_offset = 0, mode_offset = 0, modes = 0;
   std::vector<double> g;           // G = B R, q x modes, column-major (both paths' floating bodies)
+  // Friction (friction.cpp): B's rows q + j (j = 0 .. tangent_of.size() - 1) are the tangential
+  // rows of normal rows tangent_of[j]: the same weights along t = (-n_y, n_x), so that row q + j
+  // of B u is the weighted tangential displacement (u1 - pi_h u2) . t there. Only the rows of
+  // pairs with friction have one. Per tangential row its law (MC_FRICTION_*) and its bound: mu
+  // (Coulomb), or the Tresca bound times the row's multiplier measure (a force, like lambda).
+  std::vector<int> tangent_of;
+  std::vector<int> friction_law;
+  std::vector<double> friction_bound;
+  std::vector<FrictionState> friction_state;  // the last converged states (a warm start)
+  int b_rows() const { return rows.size() + int(tangent_of.size()); }  // B's rows: normal, then tangential
   const ContactGroup &group_of_position(int pos) const { return groups[position_group[pos]]; }
 };
 
@@ -139,6 +152,8 @@ struct Options {
   int interface_solver = MC_INTERFACE_AUTO;  // MC_OPTION_INTERFACE_SOLVER
   bool error_estimate = true;                // MC_OPTION_ERROR_ESTIMATE
   int multiplier = MC_MULTIPLIER_LINEAR;     // MC_OPTION_MULTIPLIER
+  int load_steps = 1;                        // MC_OPTION_LOAD_STEPS
+  double friction_ct = 0;                    // MC_OPTION_FRICTION_CT (0: scaled automatically)
 };
 
 struct Infos {
@@ -150,6 +165,17 @@ struct Infos {
   int interface_solver = 0;  // MC_INFO_INTERFACE_SOLVER: MC_INTERFACE_CONDENSED or _SPARSE; 0 without contact
   double error_estimate = 0;  // MC_INFO_ERROR_ESTIMATE (error_estimate.cpp)
   double t_estimate = 0;      // its time (part of MC_INFO_TIME_TOTAL)
+  long stick = 0, slip = 0;   // MC_INFO_STICK_NODES, MC_INFO_SLIP_NODES (rows of pairs with friction)
+  double friction_complementarity = 0;  // MC_INFO_FRICTION_COMPLEMENTARITY
+};
+
+// The converged state a frictional solve steps from (friction.cpp): per body the displacements
+// u0, the loads f0 and the prescribed values of the last converged step, and per contact position
+// the accumulated slip. Empty (valid = false): the unloaded state.
+struct History {
+  bool valid = false;
+  std::vector<std::vector<double>> u, f, prescribed;
+  std::vector<double> slip_total;
 };
 
 // The smaller body's unknowns (2 x its nodes) from which MC_OPTION_THREADS = 0 (automatic)
@@ -227,6 +253,13 @@ public:
   bool refine_solution(DualQp &qp, std::vector<LoadSolve> &loads, std::vector<double> &lambda, std::vector<double> &alpha);
   // Contact results per contact position, the groups' stacked (after a contact solve).
   std::vector<double> contact_force, contact_gap, contact_pressure;
+  // Friction's (and the state's, for every pair): shear traction along t, slip of the last solve,
+  // accumulated slip, MC_STATE_*.
+  std::vector<double> contact_shear, contact_slip, contact_slip_total;
+  std::vector<int> contact_state;
+  // mc_reset_history: the next frictional solve starts from the unloaded state.
+  void reset_history() { history_ = History(); }
+  bool has_friction() const;
 
 private:
   int body_threads() const;
@@ -264,6 +297,18 @@ private:
   std::unique_ptr<ContactSystem> build_contact_system();
   void check_contact_pairs() const;
   void contact_results(const std::vector<double> &lambda);
+  // Friction (friction.cpp): the rows' laws and bounds, the frictional condensed problem, the
+  // history and load steps, the results per position.
+  void refresh_friction();
+  void solve_condensed_friction(DualQp &qp, std::vector<double> &lambda, std::vector<double> &alpha);
+  double tangential_reference(int row) const;  // B row `row` (tangential) times u0, less its prescribed part
+  void prepare_history();
+  void step_loads(int step, int steps, const std::vector<LoadSolve> &target,
+                  const std::vector<std::vector<double>> &target_prescribed, std::vector<LoadSolve> &start,
+                  std::vector<LoadSolve> &loads);
+  void record_step(const std::vector<LoadSolve> &loads);
+  std::vector<double> pointwise_slips(const std::vector<std::vector<double>> &from) const;
+  void friction_results(const std::vector<double> &lambda, const std::vector<std::vector<double>> &solve_start);
   void merge_gap_offsets();
   // "body 1: translation in y; ..." for the floating bodies, for both paths' messages.
   std::string free_modes_description() const;
@@ -289,6 +334,7 @@ private:
   long structure_version_ = 1, built_version_ = 0;
   std::vector<std::unique_ptr<BodySystem>> system_;
   std::unique_ptr<ContactSystem> contact_;
+  History history_;
 };
 
 }  // namespace mc
