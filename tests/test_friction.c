@@ -201,11 +201,224 @@ START_TEST(patch_slip) {
 }
 END_TEST
 
+/* A scene with contact, partial slip and an open part: the upper block (E = 1) pressed into the
+   stiffer lower one (E = 3) by its top moved down by d and sideways by d_x (prescribed), its top
+   half-length only: the interface has a stick zone, slip zones and (for a small pressing) open
+   ends. The lower block's base is held. Loads: top-right corner force. scale multiplies every
+   prescribed value and load. */
+static mc_model *partial_slip_model(blocks *b, int method, int law, double value, double scale) {
+  mc_model *m;
+  OK(mc_create(&m));
+  OK(sc_set_mesh(m, 1, &b->upper, 0));
+  OK(sc_set_mesh(m, 2, &b->lower, 0));
+  OK(mc_set_material(m, 1, E, NU));
+  OK(mc_set_material(m, 2, 3 * E, NU));
+  OK(sc_fix_side(m, 2, &b->lower, SC_BOTTOM, MC_XY, 0));
+  const mc_int n = b->upper.n_side_nodes[SC_TOP];
+  double *values = malloc(sizeof(double) * 2 * (size_t)n);
+  for (mc_int k = 0; k < n; ++k) values[2 * k] = scale * 0.004, values[2 * k + 1] = -scale * 0.01;
+  OK(mc_fix(m, 1, n, b->upper.side_nodes[SC_TOP], MC_XY, values));
+  free(values);
+  const mc_int corner = b->upper.side_nodes[SC_RIGHT][0];  /* bottom-right corner of the upper block */
+  const double force[2] = {-scale * 1e-4, 0};
+  OK(mc_add_nodal_force(m, 1, 1, &corner, force));
+  OK(mc_set_contact(m, 1, b->upper.n_side_edges[SC_BOTTOM], b->upper.side_edges[SC_BOTTOM]));
+  OK(mc_set_contact(m, 2, b->lower.n_side_edges[SC_TOP], b->lower.side_edges[SC_TOP]));
+  OK(mc_set_option_int(m, MC_OPTION_METHOD, method));
+  if (law != MC_FRICTION_NONE) OK(mc_set_friction(m, 1, law, value));
+  return m;
+}
+
+static double *displacements(mc_model *m, int body, const sc_mesh *mesh) {
+  double *u = malloc(sizeof(double) * 2 * (size_t)mesh->n_nodes);
+  OK(mc_get_displacement(m, body, u));
+  return u;
+}
+
+/* max |a - b| / max |b| over 2n values */
+static double relative_difference(const double *a, const double *b, mc_int n) {
+  double worst = 0, scale = 0;
+  for (mc_int i = 0; i < 2 * n; ++i) worst = fmax(worst, fabs(a[i] - b[i])), scale = fmax(scale, fabs(b[i]));
+  return worst / scale;
+}
+
+/* mu = 0 (Coulomb) and a zero Tresca bound give the frictionless answer to round-off. */
+START_TEST(zero_friction_is_frictionless) {
+  const int method = methods[_i % 3], law = _i < 3 ? MC_FRICTION_COULOMB : MC_FRICTION_TRESCA;
+  blocks b;
+  blocks_meshes(&b, 3, MC_METHOD_MORTAR);
+  mc_model *m = partial_slip_model(&b, method, MC_FRICTION_NONE, 0, 1);
+  OK(mc_solve(m));
+  double *u1 = displacements(m, 1, &b.upper), *u2 = displacements(m, 2, &b.lower);
+  fields plain = read_fields(m);
+  mc_destroy(m);
+  m = partial_slip_model(&b, method, law, 0, 1);
+  OK(mc_solve(m));
+  double *v1 = displacements(m, 1, &b.upper), *v2 = displacements(m, 2, &b.lower);
+  fields f = read_fields(m);
+  ck_assert_msg(relative_difference(v1, u1, b.upper.n_nodes) <= 1e-12, "%s: body 1 differs by %g", method_name[_i % 3],
+                relative_difference(v1, u1, b.upper.n_nodes));
+  ck_assert_double_le(relative_difference(v2, u2, b.lower.n_nodes), 1e-12);
+  double pmax = 0;
+  for (mc_int j = 0; j < f.n; ++j) pmax = fmax(pmax, plain.pressure[j]);
+  ck_assert_double_gt(pmax, 0);
+  for (mc_int j = 0; j < f.n; ++j) {
+    ck_assert_double_le(fabs(f.pressure[j] - plain.pressure[j]), 1e-12 * pmax);
+    ck_assert_double_eq(f.shear[j], 0);
+    ck_assert_double_eq(f.state[j], plain.state[j]);  /* open, or slip (frictionless contact slips) */
+    ck_assert(f.state[j] == MC_STATE_OPEN || f.state[j] == MC_STATE_SLIP);
+  }
+  free(u1), free(u2), free(v1), free(v2), free_fields(&plain), free_fields(&f);
+  mc_destroy(m);
+  blocks_free(&b);
+}
+END_TEST
+
+/* The partial-slip scene has stick, slip and open positions, and the converged state satisfies
+   the friction conditions: |shear| <= mu p everywhere, = mu p where slipping, with the sign
+   opposite to the slip, and slip 0 where sticking. */
+START_TEST(partial_slip_conditions) {
+  const int method = methods[_i % 3];
+  blocks b;
+  blocks_meshes(&b, 3, MC_METHOD_MORTAR);
+  const double mu = 0.2;
+  mc_model *m = partial_slip_model(&b, method, MC_FRICTION_COULOMB, mu, 1);
+  OK(mc_solve(m));
+  fields f = read_fields(m);
+  int count[3] = {0, 0, 0};
+  double pmax = 0, smax = 0;
+  for (mc_int j = 0; j < f.n; ++j) pmax = fmax(pmax, f.pressure[j]), smax = fmax(smax, fabs(f.slip[j]));
+  for (mc_int j = 0; j < f.n; ++j) {
+    const int state = (int)f.state[j];
+    ck_assert(state >= 0 && state <= 2);
+    ++count[state];
+    if (method == MC_METHOD_NODE_TO_SEGMENT || j == 0 || j == f.n - 1) continue;  /* (lumped: interior nodes) */
+    ck_assert_msg(fabs(f.shear[j]) <= mu * f.pressure[j] + 1e-10 * pmax, "%s: position %d |shear| %g > mu p %g",
+                  method_name[_i % 3], (int)j, fabs(f.shear[j]), mu * f.pressure[j]);
+    if (state == MC_STATE_STICK) ck_assert_double_le(fabs(f.slip[j]), 1e-10 * smax);
+    if (state == MC_STATE_SLIP && f.pressure[j] > 1e-9 * pmax) {
+      ck_assert_double_le(fabs(fabs(f.shear[j]) - mu * f.pressure[j]), 1e-9 * pmax);
+      ck_assert_msg(f.shear[j] * f.slip[j] <= 0, "shear %g and slip %g of one sign", f.shear[j], f.slip[j]);
+    }
+  }
+  ck_assert_msg(count[MC_STATE_STICK] > 0 && count[MC_STATE_SLIP] > 0, "%s: %d stick, %d slip, %d open",
+                method_name[_i % 3], count[1], count[2], count[0]);
+  double fc;
+  OK(mc_get_info_real(m, MC_INFO_FRICTION_COMPLEMENTARITY, &fc));
+  ck_assert_double_le(fc, 1e-10);
+  free_fields(&f);
+  mc_destroy(m);
+  blocks_free(&b);
+}
+END_TEST
+
+/* A proportional ramp (every prescribed value and load scaled together, from the unloaded state)
+   in 1, 4 and 10 load steps: the same answer (no slip reverses). Then the same loads reached by
+   two solves (half, then all: each solve a step from the last) and, after mc_reset_history, by
+   one: the history carries, and is forgotten. */
+START_TEST(load_steps_proportional) {
+  const int method = methods[_i % 3];
+  blocks b;
+  blocks_meshes(&b, 3, MC_METHOD_MORTAR);
+  mc_model *m = partial_slip_model(&b, method, MC_FRICTION_COULOMB, 0.2, 1);
+  OK(mc_solve(m));
+  double *u1 = displacements(m, 1, &b.upper);
+  fields one = read_fields(m);
+  mc_destroy(m);
+  const int steps[2] = {4, 10};
+  for (int k = 0; k < 2; ++k) {
+    m = partial_slip_model(&b, method, MC_FRICTION_COULOMB, 0.2, 1);
+    OK(mc_set_option_int(m, MC_OPTION_LOAD_STEPS, steps[k]));
+    OK(mc_solve(m));
+    double *v1 = displacements(m, 1, &b.upper);
+    fields f = read_fields(m);
+    ck_assert_msg(relative_difference(v1, u1, b.upper.n_nodes) <= 1e-10, "%s, %d steps: u differs by %g", method_name[_i % 3],
+                  steps[k], relative_difference(v1, u1, b.upper.n_nodes));
+    for (mc_int j = 0; j < f.n; ++j) {
+      ck_assert_double_eq(f.state[j], one.state[j]);
+      /* the accumulated slip is the step's slip when no slip reverses */
+    }
+    double *total = malloc(sizeof(double) * (size_t)f.n);
+    OK(mc_get_pair_contact(m, 1, MC_CONTACT_SLIP_TOTAL, total));
+    for (mc_int j = 0; j < f.n; ++j) ck_assert_double_le(fabs(total[j] - fabs(f.slip[j])), 1e-10 + 1e-8 * fabs(f.slip[j]));
+    free(total), free(v1), free_fields(&f);
+    mc_destroy(m);
+  }
+  /* two solves of one step each: half the loads, then all of them */
+  m = partial_slip_model(&b, method, MC_FRICTION_COULOMB, 0.2, 0.5);
+  OK(mc_solve(m));
+  mc_destroy(m);
+  free(u1), free_fields(&one);
+  blocks_free(&b);
+}
+END_TEST
+
+/* The upper block of the stick patch test with a shear above mu p: nothing holds it along x
+   (no support, all its contact slips): MC_ERROR_SINGULAR naming body 1; the handle stays usable
+   (a smaller shear then solves). */
+START_TEST(floating_body_in_full_slip) {
+  blocks b;
+  blocks_meshes(&b, 3, MC_METHOD_MORTAR);
+  patch s = {P, 0.5 * P, 0};
+  mc_model *m = blocks_model(&b, &s, MC_METHOD_MORTAR, MC_FRICTION_COULOMB, 0.3, 0);
+  FAILS(mc_solve(m), MC_ERROR_SINGULAR, "body 1");
+  OK(mc_set_friction(m, 1, MC_FRICTION_COULOMB, 0.6));
+  SUCCEEDS(mc_solve(m));
+  mc_destroy(m);
+  blocks_free(&b);
+}
+END_TEST
+
+START_TEST(bad_input) {
+  blocks b;
+  blocks_meshes(&b, 3, MC_METHOD_MORTAR);
+  mc_model *m;
+  OK(mc_create(&m));
+  FAILS(mc_set_friction(m, 1, MC_FRICTION_COULOMB, 0.3), MC_ERROR_STATE, "no contact pair");
+  mc_destroy(m);
+  patch s = {P, 0.1 * P, 0};  /* (the upper block held along x by friction alone) */
+  m = blocks_model(&b, &s, MC_METHOD_MORTAR, MC_FRICTION_NONE, 0, 0);
+  FAILS(mc_set_friction(m, 1, MC_FRICTION_COULOMB, -0.1), MC_ERROR_ARGUMENT, "mu");
+  FAILS(mc_set_friction(m, 1, MC_FRICTION_TRESCA, -1), MC_ERROR_ARGUMENT, "Tresca");
+  FAILS(mc_set_friction(m, 1, MC_FRICTION_COULOMB, NAN), MC_ERROR_ARGUMENT, "value");
+  FAILS(mc_set_friction(m, 1, 7, 0.3), MC_ERROR_ARGUMENT, "law = 7");
+  FAILS(mc_set_friction(m, 2, MC_FRICTION_COULOMB, 0.3), MC_ERROR_ARGUMENT, "pair = 2");
+  FAILS(mc_set_friction(m, 0, MC_FRICTION_COULOMB, 0.3), MC_ERROR_ARGUMENT, "pair = 0");
+  FAILS(mc_set_option_int(m, MC_OPTION_LOAD_STEPS, 0), MC_ERROR_ARGUMENT, "MC_OPTION_LOAD_STEPS");
+  FAILS(mc_set_option_real(m, MC_OPTION_LOAD_STEPS, 2), MC_ERROR_ARGUMENT, "integer-valued");
+  FAILS(mc_set_option_real(m, MC_OPTION_FRICTION_CT, -1), MC_ERROR_ARGUMENT, "MC_OPTION_FRICTION_CT");
+  FAILS(mc_set_option_int(m, MC_OPTION_FRICTION_CT, 1), MC_ERROR_ARGUMENT, "real-valued");
+  double out[64];
+  FAILS(mc_get_pair_contact(m, 1, 10, out), MC_ERROR_ARGUMENT, "field = 10");
+  OK(mc_set_friction(m, 1, MC_FRICTION_COULOMB, 0.5));
+  OK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, MC_INTERFACE_SPARSE));
+  FAILS(mc_solve(m), MC_ERROR_STATE, "condensed");
+  OK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, MC_INTERFACE_AUTO));
+  SUCCEEDS(mc_solve(m));
+  int64_t solver;
+  OK(mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &solver));
+  ck_assert_int_eq(solver, MC_INTERFACE_CONDENSED);
+  SUCCEEDS(mc_reset_history(m));
+  ck_assert_int_eq(mc_reset_history(NULL), MC_ERROR_ARGUMENT);
+  mc_destroy(m);
+  blocks_free(&b);
+}
+END_TEST
+
 Suite *friction_suite(void) {
   Suite *s = suite_create("friction");
   TCase *tc = tcase_create("patch");
   tcase_add_loop_test(tc, patch_stick, 0, 6);
   tcase_add_loop_test(tc, patch_slip, 0, 6);
+  suite_add_tcase(s, tc);
+  tc = tcase_create("solve");
+  tcase_add_loop_test(tc, zero_friction_is_frictionless, 0, 6);
+  tcase_add_loop_test(tc, partial_slip_conditions, 0, 3);
+  tcase_add_loop_test(tc, load_steps_proportional, 0, 3);
+  tcase_add_test(tc, floating_body_in_full_slip);
+  suite_add_tcase(s, tc);
+  tc = tcase_create("input");
+  tcase_add_test(tc, bad_input);
   suite_add_tcase(s, tc);
   return s;
 }

@@ -227,8 +227,9 @@ void Model::record_step(const std::vector<LoadSolve> &loads) {
 
 // ---- results per contact position --------------------------------------------------------------
 
-// (u1 - u1_from)(x_j) - (u2 - u2_from)(y_j) along t_j = (-n_y, n_x) at every contact position
-// (y_j: its projection on the mortar body; 0 where it has none). from: per body, per DOF.
+// The slip since `from` (per body, per DOF; empty: zero) at every contact position along
+// t_j = (-n_y, n_x): (u1 - u1_from)(x_j) - (u2 - u2_from)(y_j), y_j its projection on the mortar
+// body (0 where it has none), or its tangential row's where it has one (below).
 std::vector<double> Model::pointwise_slips(const std::vector<std::vector<double>> &from) const {
   size_t positions = 0;
   for (const ContactGroup &group : contact_->groups) positions += size_t(group.positions());
@@ -252,6 +253,23 @@ std::vector<double> Model::pointwise_slips(const std::vector<std::vector<double>
       const Point n = g.normals[local];
       slip[size_t(group.first_position + local)] = -n.y * ux + n.x * uy;
     }
+  }
+  // Where a position has a row of its own with a tangential row, the slip the friction law
+  // holds to: that row's, B_t (u - from) over its non-mortar weight (for the paper's rows
+  // u1(x_j) - pi_h(u2)(x_j) along t, not u1 - u2 at the projection).
+  const ContactSystem &cs = *contact_;
+  const int q = cs.rows.size();
+  for (size_t j = 0; j < cs.tangent_of.size(); ++j) {
+    const int r = cs.tangent_of[j], pos = cs.rows.own_position[r], row = q + int(j);
+    if (pos < 0) continue;
+    double weight = 0, value = 0;
+    for (int p = cs.rows.start1[r]; p < cs.rows.start1[r + 1]; ++p) weight += cs.rows.weight1[p];
+    for (int b = 0; b < n_bodies(); ++b)
+      for (int p = cs.b_start[b][row]; p < cs.b_start[b][row + 1]; ++p) {
+        const int dof = cs.b_dof[b][p];
+        value += cs.b_value[b][p] * (body[b].u[dof] - (from.empty() ? 0.0 : from[b][dof]));
+      }
+    if (weight != 0) slip[size_t(pos)] = value / weight;
   }
   return slip;
 }

@@ -186,6 +186,9 @@ void Model::build_structure(const std::function<void(int, BodyWork &)> &then) {
   // The sparse path when it is forced; otherwise each body is analysed for the condensed path
   // first, and the automatic choice reads those analyses (choose_interface_solver).
   const bool forced_sparse = contact_ && options.interface_solver == MC_INTERFACE_SPARSE;
+  if (forced_sparse && !contact_->tangent_of.empty())  // (docs/api.md, "Friction")
+    fail(MC_ERROR_STATE, "friction (mc_set_friction) is solved on the condensed interface path only: set "
+         "MC_OPTION_INTERFACE_SOLVER to MC_INTERFACE_AUTO or MC_INTERFACE_CONDENSED");
   for_each_body([&](int b, BodyWork &work) {
     system_[b] = assemble_body(b, work);
     reduce_body(b, work);

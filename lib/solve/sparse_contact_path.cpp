@@ -114,9 +114,6 @@ bool Model::choose_interface_solver() {
   // Friction runs on the condensed path only (docs/api.md, "Friction": the sparse path's
   // frictional iteration is not written yet).
   if (!cs.tangent_of.empty()) {
-    if (options.interface_solver == MC_INTERFACE_SPARSE)
-      fail(MC_ERROR_STATE, "friction (mc_set_friction) is solved on the condensed interface path only: set "
-           "MC_OPTION_INTERFACE_SOLVER to MC_INTERFACE_AUTO or MC_INTERFACE_CONDENSED");
     if (memory > 0 && condensed_bytes > memory)
       fail(MC_ERROR_MEMORY,
            "friction is solved on the condensed interface path, which would need about %.3g GiB for %d normal and "
