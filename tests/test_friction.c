@@ -344,11 +344,53 @@ START_TEST(load_steps_proportional) {
     free(total), free(v1), free_fields(&f);
     mc_destroy(m);
   }
-  /* two solves of one step each: half the loads, then all of them */
-  m = partial_slip_model(&b, method, MC_FRICTION_COULOMB, 0.2, 0.5);
-  OK(mc_solve(m));
-  mc_destroy(m);
   free(u1), free_fields(&one);
+  blocks_free(&b);
+}
+END_TEST
+
+/* The partial-slip scene's top motion in two parts: (sx, sy) times (0.004, -0.01). */
+static void move_top(mc_model *m, const blocks *b, double sx, double sy) {
+  const mc_int n = b->upper.n_side_nodes[SC_TOP];
+  double *values = malloc(sizeof(double) * 2 * (size_t)n);
+  for (mc_int k = 0; k < n; ++k) values[2 * k] = sx * 0.004, values[2 * k + 1] = -sy * 0.01;
+  OK(mc_fix(m, 1, n, b->upper.side_nodes[SC_TOP], MC_XY, values));
+  free(values);
+}
+
+/* Path dependence, and the history carried from solve to solve: pressing first and then
+   shearing (two solves) ends elsewhere than both at once (one solve); after mc_reset_history the
+   same model gives the one-solve answer again. The second solve's slip is its own, the
+   accumulated slip the sum of both solves' |slip|. */
+START_TEST(history_between_solves) {
+  const int method = methods[_i % 3];
+  blocks b;
+  blocks_meshes(&b, 3, MC_METHOD_MORTAR);
+  mc_model *m = partial_slip_model(&b, method, MC_FRICTION_COULOMB, 0.2, 1);
+  OK(mc_solve(m));
+  double *direct = displacements(m, 1, &b.upper);
+  mc_destroy(m);
+  m = partial_slip_model(&b, method, MC_FRICTION_COULOMB, 0.2, 1);
+  move_top(m, &b, 0, 1);
+  OK(mc_solve(m));
+  fields first = read_fields(m);
+  move_top(m, &b, 1, 1);
+  OK(mc_solve(m));
+  fields second = read_fields(m);
+  double *path = displacements(m, 1, &b.upper), *total = malloc(sizeof(double) * (size_t)second.n);
+  OK(mc_get_pair_contact(m, 1, MC_CONTACT_SLIP_TOTAL, total));
+  const double differ = relative_difference(path, direct, b.upper.n_nodes);
+  ck_assert_msg(differ > 1e-4, "%s: pressing then shearing ends %g from both at once", method_name[_i % 3], differ);
+  double smax = 0;
+  for (mc_int j = 0; j < second.n; ++j) smax = fmax(smax, fabs(second.slip[j]) + fabs(first.slip[j]));
+  for (mc_int j = 0; j < second.n; ++j)
+    ck_assert_double_le(fabs(total[j] - fabs(first.slip[j]) - fabs(second.slip[j])), 1e-12 * smax);
+  SUCCEEDS(mc_reset_history(m));
+  OK(mc_solve(m));
+  double *again = displacements(m, 1, &b.upper);
+  ck_assert_double_le(relative_difference(again, direct, b.upper.n_nodes), 1e-12);
+  free(direct), free(path), free(again), free(total), free_fields(&first), free_fields(&second);
+  mc_destroy(m);
   blocks_free(&b);
 }
 END_TEST
@@ -415,6 +457,7 @@ Suite *friction_suite(void) {
   tcase_add_loop_test(tc, zero_friction_is_frictionless, 0, 6);
   tcase_add_loop_test(tc, partial_slip_conditions, 0, 3);
   tcase_add_loop_test(tc, load_steps_proportional, 0, 3);
+  tcase_add_loop_test(tc, history_between_solves, 0, 3);
   tcase_add_test(tc, floating_body_in_full_slip);
   suite_add_tcase(s, tc);
   tc = tcase_create("input");
