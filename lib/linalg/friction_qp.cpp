@@ -138,7 +138,7 @@ FrictionResult solve_friction_qp(const DualQp &p, const FrictionProblem &f, doub
   std::vector<FrictionState> state(m, FrictionState::stick);
   if (int(start_state.size()) == m) state = start_state;
   for (int j = 0; j < m; ++j)
-    if (state[j] == FrictionState::open) state[j] = FrictionState::stick;
+    if (state[j] == FrictionState::open) state[j] = f.bound[j] == 0 ? FrictionState::slip_plus : FrictionState::stick;
 
   std::set<std::string> seen;
   auto key = [&](const std::vector<char> &a, const std::vector<FrictionState> &st) {
@@ -148,6 +148,7 @@ FrictionResult solve_friction_qp(const DualQp &p, const FrictionProblem &f, doub
   };
   std::vector<double> lambda, alpha, gap;
   std::vector<int> last_changing;
+  bool single_changes = false;
   for (int it = 1; it <= max_iterations; ++it) {
     result.iterations = it;
     if (!solve_states(p, f, active, state, s_scale, lambda, alpha)) {
@@ -182,6 +183,11 @@ FrictionResult solve_friction_qp(const DualQp &p, const FrictionProblem &f, doub
         continue;
       }
       const double bound = friction_bound(f, j, lambda[r], gap[r], cn), lt = lambda[q + j], s = -gap[q + j];
+      if (f.bound[j] == 0) {  // mu = 0 or a zero Tresca bound: l_t = 0 whatever the slip's sign
+        next_state[j] = FrictionState::slip_plus;
+        ++slip;
+        continue;
+      }
       auto by_trial = [&]() {  // |l_t + c_t s| against the bound
         const double xi = lt + ct * s;
         return std::fabs(xi) <= bound ? FrictionState::stick : xi > 0 ? FrictionState::slip_plus : FrictionState::slip_minus;
@@ -191,7 +197,10 @@ FrictionResult solve_friction_qp(const DualQp &p, const FrictionProblem &f, doub
         friction_violation = std::max({friction_violation, std::fabs(s) / gap_ref,
                                        std::max(0.0, std::fabs(lt) - bound) / lambda_ref});
       } else if (active[r] && slipping(state[j])) {
-        if (slip_sign(state[j]) * s < -eps * gap_ref) next_state[j] = by_trial();
+        // A slip against its sign: stick first (the trial value would send a row whose c_t s
+        // outweighs its bound straight to the other sign, and the iteration zig-zags between
+        // the two; both rules have the same fixed points).
+        if (slip_sign(state[j]) * s < -eps * gap_ref) next_state[j] = FrictionState::stick;
         friction_violation = std::max({friction_violation, std::max(0.0, -slip_sign(state[j]) * s) / gap_ref,
                                        std::fabs(lt - slip_sign(state[j]) * bound) / lambda_ref});
       } else {
@@ -227,15 +236,39 @@ FrictionResult solve_friction_qp(const DualQp &p, const FrictionProblem &f, doub
       return result;
     }
     if (!seen.insert(key(active, state)).second) {
-      result.outcome = FrictionOutcome::cycled;
-      result.active = active, result.state = state, result.lambda = lambda, result.alpha = alpha, result.gap = gap;
-      result.changing_rows = changing;
-      return result;
+      if (single_changes) {
+        result.outcome = FrictionOutcome::cycled;
+        result.active = active, result.state = state, result.lambda = lambda, result.alpha = alpha, result.gap = gap;
+        result.changing_rows = changing;
+        return result;
+      }
+      // The full update cycled (it converges only for M-matrix-like operators, as the
+      // frictionless one, dual_qp.cpp): from here one change per iteration, the row of least
+      // index (Murty's rule, finite for the frictionless problem; for friction no rule is
+      // known to be, so a second cycle is reported).
+      single_changes = true;
+      seen.clear();
+      seen.insert(key(active, state));
     }
     last_changing = changing;
+    if (single_changes) {
+      const int row = changing.front();
+      if (row < q) {
+        active[row] = next_active[row];
+        // a row leaving contact leaves its tangential row open; one entering sticks first
+      } else {
+        state[row - q] = next_state[row - q];
+      }
+      for (int j = 0; j < m; ++j)  // (a row coming into contact: its trial state)
+        if (!active[f.tangent_of[j]]) state[j] = FrictionState::open;
+        else if (state[j] == FrictionState::open)
+          state[j] = next_state[j] != FrictionState::open ? next_state[j] : FrictionState::stick;
+      continue;
+    }
     active = next_active, state = next_state;
     for (int j = 0; j < m; ++j)
-      if (state[j] == FrictionState::open && active[f.tangent_of[j]]) state[j] = FrictionState::stick;
+      if (state[j] == FrictionState::open && active[f.tangent_of[j]])
+        state[j] = f.bound[j] == 0 ? FrictionState::slip_plus : FrictionState::stick;
   }
   result.outcome = FrictionOutcome::not_converged;
   result.active = active, result.state = state, result.lambda = lambda, result.alpha = alpha, result.gap = gap;

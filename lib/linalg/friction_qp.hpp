@@ -11,8 +11,11 @@
 // Once the states are frozen every condition is linear: each iteration solves one linear system
 // (nonsymmetric for Coulomb: l_t = +-mu l_n couples the columns; LU with pivoting), then updates
 // the states by the primal-dual active-set rule: a normal row is active iff (l_n > 0 or
-// gap_n < 0, as in dual_qp.cpp); a tangential row sticks iff |l_t + c_t s| <= bound, else it
-// slips with the sign of l_t + c_t s. c_t changes the iterates, never the converged answer.
+// gap_n < 0, as in dual_qp.cpp); a sticking row slips (with the sign of l_t) once |l_t| exceeds
+// its bound, a slipping row whose slip turns against its sign sticks, and a row coming into
+// contact sticks iff |l_t + c_t s| <= bound, else slips with the sign of l_t + c_t s. c_t
+// changes the iterates, never the converged answer. If the states cycle, one change per
+// iteration (the row of least index) from there.
 // Converged states satisfy the conditions to round-off: nothing is regularized.
 #pragma once
 #include "linalg/dual_qp.hpp"

@@ -31,9 +31,12 @@ void Model::refresh_friction() {
              "pairs %d and %d join one surface (non-mortar body %d, mortar body %d) but have different friction "
              "(mc_set_friction): give them the same law and value",
              group.pairs.front() + 1, p + 1, group.nonmortar + 1, group.mortar + 1);
-    cs.friction_law[j] = lead.friction_law;
-    cs.friction_bound[j] = lead.friction_law == MC_FRICTION_COULOMB ? lead.friction_value
-                                                                    : lead.friction_value * cs.rows.measure[r];
+    const double bound = lead.friction_law == MC_FRICTION_COULOMB ? lead.friction_value
+                                                                   : lead.friction_value * cs.rows.measure[r];
+    // A row whose law or bound changed starts sticking (its last slip state was for another law).
+    if ((cs.friction_law[j] != lead.friction_law || cs.friction_bound[j] != bound) && j < cs.friction_state.size())
+      cs.friction_state[j] = FrictionState::stick;
+    cs.friction_law[j] = lead.friction_law, cs.friction_bound[j] = bound;
   }
 }
 
