@@ -7,6 +7,10 @@
 
 namespace mc {
 
+bool FrictionProblem::live(int j, const std::vector<char> &active) const {
+  return law[j] == MC_FRICTION_TRESCA || active[tangent_of[j]];
+}
+
 namespace {
 
 // The rows' Coulomb or Tresca bound: mu times the normal multiplier's prediction
@@ -33,7 +37,7 @@ bool solve_states(const DualQp &p, const FrictionProblem &f, const std::vector<c
   for (int r = 0; r < q; ++r)
     if (active[r]) index[r] = int(rows.size()), rows.push_back(r);
   for (int j = 0; j < m; ++j)
-    if (active[f.tangent_of[j]] && state[j] == FrictionState::stick) index[q + j] = int(rows.size()), rows.push_back(q + j);
+    if (f.live(j, active) && state[j] == FrictionState::stick) index[q + j] = int(rows.size()), rows.push_back(q + j);
   const int nf = int(rows.size()), n = nf + k;
   lambda.assign(nb, 0.0);
   alpha.assign(k, 0.0);
@@ -45,7 +49,7 @@ bool solve_states(const DualQp &p, const FrictionProblem &f, const std::vector<c
   // A slipping row's multiplier: coefficient times l_n (Coulomb) or a known force (Tresca).
   auto slip_terms = [&](int eq, auto &&value_of_row) {
     for (int j = 0; j < m; ++j) {
-      if (!active[f.tangent_of[j]] || !slipping(state[j])) continue;
+      if (!f.live(j, active) || !slipping(state[j])) continue;
       const double v = value_of_row(q + j) * slip_sign(state[j]);
       if (f.law[j] == MC_FRICTION_COULOMB) at(eq, index[f.tangent_of[j]]) += v * f.bound[j];
       else rhs[eq] -= v * f.bound[j];
@@ -83,7 +87,7 @@ bool solve_states(const DualQp &p, const FrictionProblem &f, const std::vector<c
   for (int e = 0; e < nf; ++e) lambda[rows[e]] = rhs[e];
   for (int c = 0; c < k; ++c) alpha[c] = g_scale * rhs[nf + c];
   for (int j = 0; j < m; ++j)
-    if (active[f.tangent_of[j]] && slipping(state[j]))
+    if (f.live(j, active) && slipping(state[j]))
       lambda[q + j] = slip_sign(state[j]) * f.bound[j] * (f.law[j] == MC_FRICTION_COULOMB ? lambda[f.tangent_of[j]] : 1.0);
   return true;
 }
@@ -98,7 +102,7 @@ std::vector<int> free_modes(const DualQp &p, const FrictionProblem &f, const std
   for (int r = 0; r < q; ++r)
     if (active[r]) rows.push_back(r);
   for (size_t j = 0; j < f.tangent_of.size(); ++j)
-    if (active[f.tangent_of[j]] && state[j] == FrictionState::stick) rows.push_back(q + int(j));
+    if (f.live(j, active) && state[j] == FrictionState::stick) rows.push_back(q + int(j));
   std::vector<double> gram(size_t(k) * k, 0.0), eig(k);
   for (int a = 0; a < k; ++a)
     for (int b = 0; b < k; ++b)
@@ -178,7 +182,7 @@ FrictionResult solve_friction_qp(const DualQp &p, const FrictionProblem &f, doub
     long stick = 0, slip = 0;
     for (int j = 0; j < m; ++j) {
       const int r = f.tangent_of[j];
-      if (!next_active[r]) {
+      if (!f.live(j, next_active)) {
         next_state[j] = FrictionState::open;
         continue;
       }
@@ -192,11 +196,12 @@ FrictionResult solve_friction_qp(const DualQp &p, const FrictionProblem &f, doub
         const double xi = lt + ct * s;
         return std::fabs(xi) <= bound ? FrictionState::stick : xi > 0 ? FrictionState::slip_plus : FrictionState::slip_minus;
       };
-      if (active[r] && state[j] == FrictionState::stick) {
+      const bool was_live = f.live(j, active);
+      if (was_live && state[j] == FrictionState::stick) {
         if (std::fabs(lt) > bound + eps * lambda_ref) next_state[j] = lt > 0 ? FrictionState::slip_plus : FrictionState::slip_minus;
         friction_violation = std::max({friction_violation, std::fabs(s) / gap_ref,
                                        std::max(0.0, std::fabs(lt) - bound) / lambda_ref});
-      } else if (active[r] && slipping(state[j])) {
+      } else if (was_live && slipping(state[j])) {
         // A slip against its sign: stick first (the trial value would send a row whose c_t s
         // outweighs its bound straight to the other sign, and the iteration zig-zags between
         // the two; both rules have the same fixed points).
@@ -215,7 +220,7 @@ FrictionResult solve_friction_qp(const DualQp &p, const FrictionProblem &f, doub
       if (next_active[r] != active[r]) ++changed, changing.push_back(r);
     for (int j = 0; j < m; ++j)
       if (next_state[j] != state[j] && !(state[j] == FrictionState::open && next_state[j] == FrictionState::open))
-        if (!(active[f.tangent_of[j]] == 0 && next_active[f.tangent_of[j]] == 0)) ++changed, changing.push_back(q + j);
+        if (f.live(j, active) || f.live(j, next_active)) ++changed, changing.push_back(q + j);
     int n_active = 0;
     for (char x : active) n_active += x;
     if (observe) observe({it, n_active, int(stick), int(slip), changed});
@@ -260,14 +265,14 @@ FrictionResult solve_friction_qp(const DualQp &p, const FrictionProblem &f, doub
         state[row - q] = next_state[row - q];
       }
       for (int j = 0; j < m; ++j)  // (a row coming into contact: its trial state)
-        if (!active[f.tangent_of[j]]) state[j] = FrictionState::open;
+        if (!f.live(j, active)) state[j] = FrictionState::open;
         else if (state[j] == FrictionState::open)
           state[j] = next_state[j] != FrictionState::open ? next_state[j] : FrictionState::stick;
       continue;
     }
     active = next_active, state = next_state;
     for (int j = 0; j < m; ++j)
-      if (state[j] == FrictionState::open && active[f.tangent_of[j]])
+      if (state[j] == FrictionState::open && f.live(j, active))
         state[j] = f.bound[j] == 0 ? FrictionState::slip_plus : FrictionState::stick;
   }
   result.outcome = FrictionOutcome::not_converged;

@@ -4,9 +4,10 @@
 // (tangent_of[j] is the normal row of tangential row q + j). With l = (l_n, l_t) and
 // gap = S l - d - G a (for a tangential row: minus the weighted slip of the step, -s_j):
 //   normal rows:      l_n >= 0, gap_n >= 0, l_n gap_n = 0
-//   tangential rows:  open (l_n = 0):   l_t = 0
+//   tangential rows:  open (Coulomb, l_n = 0): l_t = 0
 //                     stick:            s = 0,               |l_t| <= bound
 //                     slip:             l_t = bound sign(s)  (s != 0)
+//   (a Tresca row is never open: FrictionProblem::live)
 //   G^T l = e (floating bodies), bound = mu l_n (Coulomb) or the row's Tresca force.
 // Once the states are frozen every condition is linear: each iteration solves one linear system
 // (nonsymmetric for Coulomb: l_t = +-mu l_n couples the columns; LU with pivoting), then updates
@@ -32,6 +33,12 @@ struct FrictionProblem {
   std::vector<int> law;              // MC_FRICTION_TRESCA or MC_FRICTION_COULOMB
   std::vector<double> bound;         // mu (Coulomb) or the Tresca bound as a force
   double ct = 0;                     // c_t; 0: 1 / (largest diagonal entry of S)
+  // Whether tangential row j carries friction in the states `active` of the normal rows: a
+  // Coulomb row only in contact (its bound mu l_n is 0 when open); a Tresca row always: the
+  // given-bound problem of Kikuchi and Oden holds |l_t| <= g on the whole contact surface,
+  // which keeps it convex with a unique answer (bounds that vanish where a row opens would
+  // couple the tangential states to the normal ones, and the iteration cycled on them).
+  bool live(int j, const std::vector<char> &active) const;
 };
 
 enum class FrictionOutcome { solved, modes_not_held, not_converged, cycled };

@@ -295,14 +295,15 @@ std::unique_ptr<ContactSystem> Model::build_contact_system() {
 // and each body's share fitted to (translation x, translation y, rotation about its centroid)
 // and named ("body 2: translation in x"). Empty if every row together holds every mode (the
 // active set at hand did not: the caller then names the free modes).
-std::string Model::unheld_modes_description() const {
+std::string Model::unheld_modes_description(const std::vector<char> &holding) const {
   const std::vector<double> g = rigid_mode_rows();
   const int q = contact_->b_rows(), k = q > 0 ? int(g.size()) / q : 0;
   if (k == 0) return "";
   std::vector<double> gram(size_t(k) * k, 0.0), eig(k);
   for (int a = 0; a < k; ++a)
     for (int b = 0; b < k; ++b)
-      for (int r = 0; r < q; ++r) gram[size_t(b) * k + a] += g[size_t(a) * q + r] * g[size_t(b) * q + r];
+      for (int r = 0; r < q; ++r)
+        if (holding.empty() || holding[r]) gram[size_t(b) * k + a] += g[size_t(a) * q + r] * g[size_t(b) * q + r];
   int n = k, lwork = 64 + 3 * k, info = 0;
   std::vector<double> work(lwork);
   dsyev_("V", "U", &n, gram.data(), &n, eig.data(), work.data(), &lwork, &info);

@@ -99,19 +99,17 @@ void Model::solve_condensed_friction(DualQp &qp, std::vector<double> &lambda, st
            outcome[int(result.outcome)], result.iterations, result.stick, result.slip, result.violation,
            result.friction_violation, now() - start);
   if (result.outcome == FrictionOutcome::modes_not_held) {
-    std::string text;
-    for (int b = 0; b < n_bodies(); ++b) {
-      if (!system_[b] || system_[b]->rigid.count == 0) continue;
-      const int offset = mode_offset(b);
-      bool free = false;
-      for (int c : result.unheld_modes) free = free || (c >= offset && c < offset + system_[b]->rigid.count);
-      if (free) text += (text.empty() ? "" : "; ") + std::string("body ") + std::to_string(b + 1);
-    }
+    // The rows that hold in the states reached: in contact, and sticking.
+    std::vector<char> holding(size_t(cs.b_rows()), 0);
+    for (int r = 0; r < q; ++r) holding[r] = result.active[r];
+    for (size_t j = 0; j < cs.tangent_of.size(); ++j)
+      holding[q + j] = f.live(int(j), result.active) && result.state[j] == FrictionState::stick;
+    std::string text = unheld_modes_description(holding);
     if (text.empty()) text = free_modes_description();
     fail(MC_ERROR_SINGULAR,
-         "no support and no sticking contact holds the rigid motion of %s (%s): its contact slips or is open; add a "
-         "support, or loads that friction can carry",
-         text.c_str(), free_modes_description().c_str());
+         "no support and no sticking contact holds %s: the contact there slips or is open; add a support, or loads "
+         "that friction can carry",
+         text.c_str());
   }
   if (result.outcome != FrictionOutcome::solved) {
     std::string rows;
@@ -121,13 +119,14 @@ void Model::solve_condensed_friction(DualQp &qp, std::vector<double> &lambda, st
       const bool tangential = row >= q;
       const int r = tangential ? cs.tangent_of[row - q] : row;
       rows += (rows.empty() ? "" : ", ") + row_place(*this, cs, r) +
-              (tangential ? std::string(" (") + state_name(result.state[row - q]) + ")"
-                          : std::string(result.active[r] ? " (contact)" : " (open)"));
+              (tangential ? std::string(": tangential row, ") + state_name(result.state[row - q])
+                          : std::string(result.active[r] ? ": normal row, in contact" : ": normal row, open"));
     }
     if (result.outcome == FrictionOutcome::cycled)
       fail(MC_ERROR_NOT_CONVERGED,
-           "the stick/slip iteration cycled after %d iterations: %zu rows kept changing state (%s); try "
-           "MC_OPTION_LOAD_STEPS > 1, or set MC_OPTION_FRICTION_CT",
+           "the stick/slip iteration cycled after %d iterations: its last step would have changed %zu rows (%s); "
+           "Coulomb friction need not have a unique discrete answer for large mu: try smaller load increments "
+           "(MC_OPTION_LOAD_STEPS) or a finer mesh there",
            result.iterations, result.changing_rows.size(), rows.c_str());
     fail(MC_ERROR_NOT_CONVERGED,
          "the stick/slip iteration stopped after %d iterations (limit %d) with residuals %.3g (contact) and %.3g "
@@ -147,6 +146,12 @@ void Model::solve_condensed_friction(DualQp &qp, std::vector<double> &lambda, st
 }
 
 // ---- the history ----------------------------------------------------------------------------
+
+// mc_reset_history: the unloaded state, and (with friction) no warm start from the last states.
+void Model::reset_history() {
+  history_ = History();
+  if (contact_ && !contact_->tangent_of.empty()) contact_->friction_state.clear(), contact_->last_active.clear();
+}
 
 // The state a frictional solve steps from: the last converged one, or the unloaded state (zero
 // displacements, loads and prescribed values) when there is none or the model's unknowns or

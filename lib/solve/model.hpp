@@ -258,7 +258,7 @@ public:
   std::vector<double> contact_shear, contact_slip, contact_slip_total;
   std::vector<int> contact_state;
   // mc_reset_history: the next frictional solve starts from the unloaded state.
-  void reset_history() { history_ = History(); }
+  void reset_history();
   bool has_friction() const;
 
 private:
@@ -314,7 +314,9 @@ private:
   std::string free_modes_description() const;
   // The rigid motions that no support and no pair can hold, "body 2: translation in x" ("" if
   // the rows together hold every free mode).
-  std::string unheld_modes_description() const;
+  // holding: the B rows that hold (the rows in contact and the sticking ones, for friction);
+  // empty: every row.
+  std::string unheld_modes_description(const std::vector<char> &holding = {}) const;
   // The active-set iterations' log messages (MC_LOG_ITERATION), for both paths; empty without a
   // log callback.
   DualQpObserver iteration_log(int q);
