@@ -37,7 +37,7 @@
  * Methods: mortar and dual mortar on non-matching meshes, node-to-segment on matching ones.
  * Times: wall clock of mc_solve (median of --repeat runs); the machine may be loaded.
  *
- * usage: friction_tables [--quick] [--repeat N] [--base-factor F] [--cells P1|Q1|T6|Q8|Q9] [block|ssnv128|ssnv503 ...]
+ * usage: friction_tables [--quick] [--repeat N] [--base-factor F] [--cells P1|Q1|T6|Q8|Q9] [block|ssnv128|ssnv503|tresca ...]
  *   --base-factor  SSNV128's base: Young's modulus F times the plate's (default 1000)
  *   --cells        SSNV128's cells (default Q1; n cells per side, quadratic ones with mid-edge nodes)
  *   --quick  coarse meshes, one repeat, and exit status 1 unless every check passes (ctest
@@ -243,6 +243,8 @@ static const double ASTER128[5] = {2.8648839013e-05, 2.72686641895e-05, 2.292355
                                    1.56084651799e-05};
 static double base_stiffness_factor = 1000;
 static int plate_friction = 1; /* 0: the same scene without friction (a time reference) */
+static int plate_law = MC_FRICTION_COULOMB;
+static double plate_value = 1.0; /* mu, or the Tresca bound */
 static int plate_npc = 4; /* --cells: P1 3, Q1 4, T6 6, Q8 8, Q9 9 (plate and base) */
 
 typedef struct plate_scene {
@@ -273,7 +275,7 @@ static void plate_build(plate_scene *s, int method, int n, int matching) {
   CALL(mc_set_contact(m, 2, s->base.n_side_edges[SC_TOP], s->base.side_edges[SC_TOP]));
   CALL(mc_set_option_int(m, MC_OPTION_METHOD, method));
   CALL(mc_set_option_int(m, MC_OPTION_ERROR_ESTIMATE, 0));
-  if (plate_friction) CALL(mc_set_friction(m, 1, MC_FRICTION_COULOMB, 1.0));
+  if (plate_friction) CALL(mc_set_friction(m, 1, plate_law, plate_value));
 }
 
 static void plate_free(plate_scene *s) {
@@ -450,6 +452,40 @@ static void ssnv128_table(void) {
     check(ok && d1 <= 1e-8 && d20 <= 1e-8, what);
     snprintf(what, sizeof what, "ssnv128 %s: both orders solve", method_names[k]);
     check(lf.status == MC_OK && tf.status == MC_OK, what);
+  }
+  /* A load cycle with slip reversals: one model, one solve per line (5 load steps each), each from
+     the last converged state. */
+  static const double cycle[8][2] = {{1, 1}, {1, 0}, {1, 1}, {1, -0.5}, {1, 1}, {0.2, 1}, {1, 1}, {0, 0}};
+  printf("\n### A load cycle (n = %d, 5 load steps per solve, one model)\n\n", n);
+  printf("| method | solve | top x 5e7, left x 15e7 | status | DX(A) x=0 | DX(E) x=0.01125 | stick / slip rows | iterations | "
+         "friction compl. |\n|---|---|---|---|---|---|---|---|---|\n");
+  for (int k = 0; k < 3; ++k) {
+    plate_scene ps;
+    plate_build(&ps, methods[k], n, methods[k] == MC_METHOD_NODE_TO_SEGMENT);
+    mc_model *m = ps.m;
+    CALL(mc_set_option_int(m, MC_OPTION_LOAD_STEPS, 5));
+    int all_ok = 1;
+    double last_dx = 1;
+    for (int c = 0; c < 8; ++c) {
+      plate_loads(&ps, cycle[c][0], cycle[c][1]);
+      const mc_status st = mc_solve(ps.m);
+      char msg[200];
+      snprintf(msg, sizeof msg, "%s", st == MC_OK ? "ok" : mc_errmsg(ps.m));
+      plate_result r;
+      memset(&r, 0, sizeof r);
+      if (st == MC_OK) {
+        r.iterations = info_int(ps.m, MC_INFO_ITERATIONS);
+        plate_read(&ps, n, &r);
+        last_dx = fmax(fabs(r.dx[0]), fabs(r.dx[4]));
+      }
+      all_ok = all_ok && st == MC_OK;
+      printf("| %s | %d | %g, %g | %.150s | %.5e | %.5e | %ld / %ld | %ld | %.1e |\n", method_names[k], c + 1, cycle[c][0],
+             cycle[c][1], msg, r.dx[0], r.dx[4], (long)r.stick, (long)r.slip, (long)r.iterations, r.fc);
+    }
+    plate_free(&ps);
+    char what[160];
+    snprintf(what, sizeof what, "ssnv128 %s: every solve of the load cycle converges, and zero load gives u = 0", method_names[k]);
+    check(all_ok && last_dx <= 1e-20, what);
   }
 }
 
@@ -652,8 +688,39 @@ static void ssnv503_table(void) {
     }
 }
 
+/* Tresca friction on the same scenes, printed, not checked (docs/robustness.md, "Friction"):
+   SSNV128 with a Tresca bound g instead of Coulomb, and the SSNV503-like pad at several loads. */
+static void tresca_table(void) {
+  printf("\n## Tresca (not checked): SSNV128 with a bound g, mortar, n = 32\n\n");
+  printf("| g | load steps | status | DX(A) | stick / slip rows | iterations |\n|---|---|---|---|---|---|\n");
+  static const double gs[6] = {1e6, 1e7, 2e7, 3e7, 5e7, 1e8};
+  plate_law = MC_FRICTION_TRESCA;
+  for (int i = 0; i < 6; ++i)
+    for (int steps = 1; steps <= 5; steps += 4) {
+      plate_value = gs[i];
+      plate_result r = plate_run(MC_METHOD_MORTAR, 32, 0, steps, 0);
+      if (r.status == MC_OK)
+        printf("| %g | %d | ok | %.5e | %ld / %ld | %ld |\n", gs[i], steps, r.dx[0], (long)r.stick, (long)r.slip, (long)r.iterations);
+      else
+        printf("| %g | %d | %s: %.160s | | | |\n", gs[i], steps, status_name(r.status), r.msg);
+    }
+  plate_law = MC_FRICTION_COULOMB, plate_value = 1.0;
+  printf("\n## Tresca (not checked): the SSNV503-like pad, bound mu Pn = 90, mortar, 2 load steps\n\n");
+  printf("| pad cells | load / (mu Fn) | status | tangential reaction | stick / slip rows | iterations |\n|---|---|---|---|---|---|\n");
+  static const double fs[5] = {0.5, 0.8, 0.9, 0.95, 0.99};
+  for (int nx = 8; nx <= 32; nx *= 2)
+    for (int i = 0; i < 5; ++i) {
+      pad_result r = pad_run(MC_METHOD_MORTAR, nx, 0, 1, fs[i], MC_FRICTION_TRESCA);
+      if (r.status == MC_OK)
+        printf("| %d x %d | %.2f | ok | %.4f | %ld / %ld | %ld |\n", nx, nx / 2, fs[i], r.ft, (long)r.stick, (long)r.slip,
+               (long)r.iterations);
+      else
+        printf("| %d x %d | %.2f | %s: %.160s | | | |\n", nx, nx / 2, fs[i], status_name(r.status), r.msg);
+    }
+}
+
 int main(int argc, char **argv) {
-  int want[3] = {0, 0, 0}, any = 0;
+  int want[4] = {0, 0, 0, 0}, any = 0;
   for (int a = 1; a < argc; ++a) {
     if (!strcmp(argv[a], "--quick")) {
       quick = 1, repeat = 1;
@@ -672,20 +739,23 @@ int main(int argc, char **argv) {
       want[1] = any = 1;
     } else if (!strcmp(argv[a], "ssnv503")) {
       want[2] = any = 1;
+    } else if (!strcmp(argv[a], "tresca")) {
+      want[3] = any = 1;
     } else {
       goto usage;
     }
   }
   if (quick) repeat = 1;
-  if (!any) want[0] = want[1] = want[2] = 1;
+  if (!any) want[0] = want[1] = want[2] = 1, want[3] = !quick;
   printf("friction_tables%s: mortarcontact %s, repeat %d\n", quick ? " --quick" : "", mc_version_string(), repeat);
   if (want[0]) block_table();
   if (want[1]) ssnv128_table();
   if (want[2]) ssnv503_table();
+  if (want[3]) tresca_table();
   printf("\n%d check%s failed\n", failures, failures == 1 ? "" : "s");
   return failures ? 1 : 0;
 usage:
   fprintf(stderr, "usage: friction_tables [--quick] [--repeat N (1..16)] [--base-factor F] [--cells P1|Q1|T6|Q8|Q9] "
-                  "[block|ssnv128|ssnv503 ...]\n");
+                  "[block|ssnv128|ssnv503|tresca ...]\n");
   return 2;
 }
