@@ -704,9 +704,9 @@ START_TEST(test_options_infos) {
   /* infos: wrong type, unknown, NULL; the output is untouched on failure */
   FAILS(mc_get_info_int(m, MC_INFO_STRAIN_ENERGY, &iv), MC_ERROR_ARGUMENT, "real-valued");
   FAILS(mc_get_info_real(m, MC_INFO_DOFS, &rv), MC_ERROR_ARGUMENT, "integer-valued");
-  FAILS(mc_get_info_int(m, MC_INFO_ERROR_ESTIMATE, &iv), MC_ERROR_ARGUMENT, "real-valued"); /* the last real one */
-  for (k = -1; k <= 32; ++k) {
-    if ((k >= MC_INFO_DOFS && k <= MC_INFO_INTERFACE_SOLVER) || (k >= MC_INFO_TIME_ASSEMBLY && k <= MC_INFO_ERROR_ESTIMATE))
+  FAILS(mc_get_info_int(m, MC_INFO_FRICTION_COMPLEMENTARITY, &iv), MC_ERROR_ARGUMENT, "real-valued"); /* the last real one */
+  for (k = -1; k <= 34; ++k) {
+    if ((k >= MC_INFO_DOFS && k <= MC_INFO_SLIP_NODES) || (k >= MC_INFO_TIME_ASSEMBLY && k <= MC_INFO_FRICTION_COMPLEMENTARITY))
       continue;
     FAILS(mc_get_info_int(m, k, &iv), MC_ERROR_ARGUMENT, "info");
     FAILS(mc_get_info_real(m, k, &rv), MC_ERROR_ARGUMENT, "info");
