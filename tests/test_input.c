@@ -675,17 +675,17 @@ END_TEST
 START_TEST(test_options_infos) {
   scene s;
   mc_model *m;
-  static const int int_options[5] = {MC_OPTION_METHOD, MC_OPTION_MAX_ITERATIONS, MC_OPTION_ORDERING,
-                                     MC_OPTION_Q1_INTEGRATION, MC_OPTION_CONTACT_NORMAL};
-  static const int64_t too_big[5] = {MC_METHOD_NODE_TO_SEGMENT + 1, 1000001, MC_ORDERING_METIS + 1, MC_Q1_BBAR + 1,
-                                     MC_NORMAL_MORTAR + 1};
-  static const int64_t too_small[5] = {-1, 0, -1, -1, -1};
+  static const int int_options[6] = {MC_OPTION_METHOD, MC_OPTION_MAX_ITERATIONS, MC_OPTION_ORDERING,
+                                     MC_OPTION_Q1_INTEGRATION, MC_OPTION_CONTACT_NORMAL, MC_OPTION_LOAD_STEPS};
+  static const int64_t too_big[6] = {MC_METHOD_NODE_TO_SEGMENT + 1, 1000001, MC_ORDERING_METIS + 1, MC_Q1_BBAR + 1,
+                                     MC_NORMAL_MORTAR + 1, 1000001};
+  static const int64_t too_small[6] = {-1, 0, -1, -1, -1, 0};
   int k;
   int64_t iv = -7;
   double rv = -7;
   scene_make(&s, 0);
   m = s.m;
-  for (k = 0; k < 5; ++k) {
+  for (k = 0; k < 6; ++k) {
     int o = int_options[k];
     FAILS(mc_set_option_int(m, o, too_big[k]), MC_ERROR_ARGUMENT, "value");
     FAILS(mc_set_option_int(m, o, too_small[k]), MC_ERROR_ARGUMENT, "value");
@@ -698,6 +698,10 @@ START_TEST(test_options_infos) {
   FAILS(mc_set_option_real(m, MC_OPTION_TOLERANCE, 0), MC_ERROR_ARGUMENT, "value");
   FAILS(mc_set_option_real(m, MC_OPTION_TOLERANCE, 1), MC_ERROR_ARGUMENT, "value");
   FAILS(mc_set_option_real(m, MC_OPTION_TOLERANCE, -1e-8), MC_ERROR_ARGUMENT, "value");
+  FAILS(mc_set_option_int(m, MC_OPTION_FRICTION_CT, 1), MC_ERROR_ARGUMENT, "real-valued");
+  FAILS(mc_set_option_real(m, MC_OPTION_FRICTION_CT, -1e-8), MC_ERROR_ARGUMENT, "MC_OPTION_FRICTION_CT");
+  FAILS(mc_set_option_real(m, MC_OPTION_FRICTION_CT, NAN), MC_ERROR_ARGUMENT, "MC_OPTION_FRICTION_CT");
+  FAILS(mc_set_option_real(m, MC_OPTION_FRICTION_CT, INFINITY), MC_ERROR_ARGUMENT, "MC_OPTION_FRICTION_CT");
   FAILS(mc_set_option_int(m, 0, 0), MC_ERROR_ARGUMENT, "option = 0");
   FAILS(mc_set_option_int(m, 5, 0), MC_ERROR_ARGUMENT, "option = 5"); /* a gap in the values */
   FAILS(mc_set_option_real(m, -1, 0.5), MC_ERROR_ARGUMENT, "option = -1");
@@ -705,8 +709,10 @@ START_TEST(test_options_infos) {
   FAILS(mc_get_info_int(m, MC_INFO_STRAIN_ENERGY, &iv), MC_ERROR_ARGUMENT, "real-valued");
   FAILS(mc_get_info_real(m, MC_INFO_DOFS, &rv), MC_ERROR_ARGUMENT, "integer-valued");
   FAILS(mc_get_info_int(m, MC_INFO_FRICTION_COMPLEMENTARITY, &iv), MC_ERROR_ARGUMENT, "real-valued"); /* the last real one */
-  for (k = -1; k <= 34; ++k) {
-    if ((k >= MC_INFO_DOFS && k <= MC_INFO_SLIP_NODES) || (k >= MC_INFO_TIME_ASSEMBLY && k <= MC_INFO_FRICTION_COMPLEMENTARITY))
+  FAILS(mc_get_info_real(m, MC_INFO_SLIP_NODES, &rv), MC_ERROR_ARGUMENT, "integer-valued"); /* the last integer one */
+  for (k = -1; k <= 33; ++k) {
+    if ((k >= MC_INFO_DOFS && k <= MC_INFO_SLIP_NODES) ||
+        (k >= MC_INFO_TIME_ASSEMBLY && k <= MC_INFO_FRICTION_COMPLEMENTARITY))
       continue;
     FAILS(mc_get_info_int(m, k, &iv), MC_ERROR_ARGUMENT, "info");
     FAILS(mc_get_info_real(m, k, &rv), MC_ERROR_ARGUMENT, "info");
