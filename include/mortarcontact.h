@@ -587,7 +587,9 @@ MC_API mc_status mc_get_contact_normal(const mc_model *m, double *n);
    included, is a point with its own values.
    MC_ERROR_STATE before a successful solve; MC_ERROR_ARGUMENT if the file cannot be written.
    Array names: point data "displacement" (3 components, z = 0), "nodal_stress" (4 components,
-   as "stress"), "pressure", "gap", "initial_gap", "active", "contact"; cell data "stress" (4
+   as "stress"), "pressure", "gap", "initial_gap", "active", "contact", and the fields of
+   friction "shear", "slip", "slip_total" and "state" (MC_CONTACT_SHEAR, ...; state an integer,
+   MC_STATE_*); cell data "stress" (4
    components), "von_mises" (with sigma_zz), "body". A corner node, a contact position in two
    faces, gets its total force over its total tributary measure as pressure, and the smaller of
    its gaps. A body-1 contact-surface node that sees no mortar surface has
