@@ -37,4 +37,4 @@ mc_add_check_test(test_contact_pairs test_contact_pairs.c host_assembly.c)
 # Friction (issue 33): frictional patch tests (stick and slip, every method), mu = 0 against the
 # frictionless solve, a floating body in full slip, load steps and history, bad input
 # (tests/test_friction.c).
-mc_add_check_test(test_friction test_friction.c)
+mc_add_check_test(test_friction test_friction.c host_assembly.c)

@@ -9,6 +9,9 @@
  *     position sticks, shear exactly -tau, pressure p, the displacements the exact field;
  *   * slip: the upper block's top moved by delta along x beyond the exact field: every position
  *     slips, shear exactly -mu p (Coulomb) or the Tresca bound, slip delta;
+ * - the same on quadratic cells (T6, Q8: the weak rows), with the upper block a host body, and
+ *   on a stack of three blocks (two pairs with friction, two bodies held along x by sticking
+ *   contact alone);
  * - mu = 0 gives the frictionless answer to round-off;
  * - a floating body whose tangential motion only sticking contact could hold, all slipping:
  *   MC_ERROR_SINGULAR naming the body;
@@ -24,6 +27,7 @@
 #include <string.h>
 
 #include "check_helpers.h"
+#include "host_assembly.h"
 #include "mortarcontact.h"
 #include "scenes.h"
 
@@ -55,6 +59,11 @@ typedef struct blocks {
    which fails the frictionless patch test already on non-matching meshes (docs/theory.md). */
 static void blocks_meshes(blocks *b, int npc, int method) {
   const int matching = method == MC_METHOD_NODE_TO_SEGMENT;
+  if (npc > 4) { /* T6, Q8, Q9: undistorted */
+    ck_assert_int_eq(sc_mesh_cells(&b->upper, npc, 3, 2, 0, 1, 1, 1, 0), 0);
+    ck_assert_int_eq(sc_mesh_cells(&b->lower, npc, matching ? 3 : 4, 3, 0, 0, 1, 1, 0), 0);
+    return;
+  }
   ck_assert_int_eq(sc_mesh_rect(&b->upper, npc, 3, 2, 0, 1, 1, 1, 0.1, 3), 0);
   ck_assert_int_eq(sc_mesh_rect(&b->lower, npc, matching ? 3 : 4, 3, 0, 0, 1, 1, 0.1, 5), 0);
 }
@@ -66,16 +75,58 @@ static void blocks_free(blocks *b) {
 /* The two blocks in the uniform stress state s: body 1 the upper block (non-mortar), body 2 the
    lower one. slip_case: the upper block's top is moved (x: the exact field plus delta) instead of
    loaded in x. */
-static mc_model *blocks_model(blocks *b, const patch *s, int method, int law, double value, int slip_case) {
+/* The upper block as a host body (its element matrices from the independent assembler,
+   host_assembly.h; 2 equations per node in node order) with its side and top tractions as
+   loads. (No supports: a host body's supports are freedoms without equations, at rest.) */
+static void set_host_upper(mc_model *m, const sc_mesh *mesh, const patch *s) {
+  const int npc = mesh->npc, nv = 2 * npc;
+  mc_int *equations = malloc(sizeof(mc_int) * 2 * (size_t)mesh->n_nodes);
+  for (mc_int i = 0; i < 2 * mesh->n_nodes; ++i) equations[i] = i;
+  OK(mc_set_host_body(m, 1, mesh->n_nodes, mesh->xy, equations, 2 * mesh->n_nodes));
+  mc_int *eltptr = malloc(sizeof(mc_int) * ((size_t)mesh->n_cells + 1)), *eltvar = malloc(sizeof(mc_int) * (size_t)(nv * mesh->n_cells));
+  double *a = malloc(sizeof(double) * (size_t)(nv * nv * mesh->n_cells)), D[9], xy[18];
+  ha_law_plane_strain(E, NU, D);
+  for (mc_int c = 0; c < mesh->n_cells; ++c) {
+    eltptr[c] = c * nv;
+    for (int k = 0; k < npc; ++k) {
+      const mc_int v = mesh->cells[npc * c + k];
+      xy[2 * k] = mesh->xy[2 * v], xy[2 * k + 1] = mesh->xy[2 * v + 1];
+      eltvar[nv * c + 2 * k] = equations[2 * v], eltvar[nv * c + 2 * k + 1] = equations[2 * v + 1];
+    }
+    ck_assert_int_eq(ha_element_stiffness(npc, xy, 0, 1.0, D, a + (size_t)nv * nv * c), 0);
+  }
+  eltptr[mesh->n_cells] = nv * mesh->n_cells;
+  OK(mc_add_element_matrices(m, 1, mesh->n_cells, eltptr, eltvar, a));
+  /* the tractions as consistent nodal loads (P1 edges: half an edge's force at each end): the
+     sides (0, -+tau), the top (tau, -p) */
+  double *load = calloc(2 * (size_t)mesh->n_nodes, sizeof(double));
+  for (int side = SC_RIGHT; side <= SC_LEFT; ++side)
+    for (mc_int e = 0; e < mesh->n_side_edges[side]; ++e) {
+      const mc_int p = mesh->side_edges[side][2 * e], q = mesh->side_edges[side][2 * e + 1];
+      const double length = hypot(mesh->xy[2 * q] - mesh->xy[2 * p], mesh->xy[2 * q + 1] - mesh->xy[2 * p + 1]);
+      const double tx = side == SC_TOP ? s->tau : 0, ty = side == SC_TOP ? -s->p : side == SC_RIGHT ? s->tau : -s->tau;
+      load[2 * p] += 0.5 * tx * length, load[2 * q] += 0.5 * tx * length;
+      load[2 * p + 1] += 0.5 * ty * length, load[2 * q + 1] += 0.5 * ty * length;
+    }
+  OK(mc_set_load_vector(m, 1, 2 * mesh->n_nodes, load));
+  free(equations), free(eltptr), free(eltvar), free(a), free(load);
+}
+
+static mc_model *blocks_model_host(blocks *b, const patch *s, int method, int law, double value, int slip_case,
+                                   int host_upper) {
   mc_model *m;
   OK(mc_create(&m));
-  OK(sc_set_mesh(m, 1, &b->upper, 0));
+  if (host_upper) {
+    set_host_upper(m, &b->upper, s);
+  } else {
+    OK(sc_set_mesh(m, 1, &b->upper, 0));
+    OK(mc_set_material(m, 1, E, NU));
+  }
   OK(sc_set_mesh(m, 2, &b->lower, 0));
-  OK(mc_set_material(m, 1, E, NU));
   OK(mc_set_material(m, 2, E, NU));
   OK(sc_fix_field(m, 2, &b->lower, b->lower.n_side_nodes[SC_BOTTOM], b->lower.side_nodes[SC_BOTTOM], 0, field_lower,
                   (void *)s));
-  for (int body = 1; body <= 2; ++body) {
+  for (int body = host_upper ? 2 : 1; body <= 2; ++body) {
     const sc_mesh *mesh = body == 1 ? &b->upper : &b->lower;
     OK(sc_traction_side(m, body, mesh, SC_LEFT, 0, -s->tau, 0));
     OK(sc_traction_side(m, body, mesh, SC_RIGHT, 0, s->tau, 0));
@@ -90,7 +141,7 @@ static mc_model *blocks_model(blocks *b, const patch *s, int method, int law, do
     }
     OK(mc_fix(m, 1, n, b->upper.side_nodes[SC_TOP], MC_X, values));
     free(values);
-  } else {
+  } else if (!host_upper) {
     OK(sc_traction_side(m, 1, &b->upper, SC_TOP, s->tau, -s->p, 0));
   }
   OK(mc_set_contact(m, 1, b->upper.n_side_edges[SC_BOTTOM], b->upper.side_edges[SC_BOTTOM]));
@@ -98,6 +149,10 @@ static mc_model *blocks_model(blocks *b, const patch *s, int method, int law, do
   OK(mc_set_option_int(m, MC_OPTION_METHOD, method));
   if (law != MC_FRICTION_NONE) OK(mc_set_friction(m, 1, law, value));
   return m;
+}
+
+static mc_model *blocks_model(blocks *b, const patch *s, int method, int law, double value, int slip_case) {
+  return blocks_model_host(b, s, method, law, value, slip_case, 0);
 }
 
 /* Largest |u - exact| over both bodies, relative to the largest |exact|. */
@@ -447,11 +502,130 @@ START_TEST(bad_input) {
 }
 END_TEST
 
+/* The stick and slip patch tests on quadratic cells (T6, Q8: the weak rows, their tangential
+   rows with the rotated vector weights), mortar and dual mortar: the same exactness. */
+START_TEST(patch_quadratic) {
+  const int npc = _i & 1 ? 8 : 6, method = _i & 2 ? MC_METHOD_DUAL_MORTAR : MC_METHOD_MORTAR, slip_case = _i >= 4;
+  blocks b;
+  blocks_meshes(&b, npc, method);
+  const double mu = 0.4;
+  patch s = {P, slip_case ? mu * P : 0.3 * mu * P, slip_case ? 0.05 : 0};
+  mc_model *m = blocks_model(&b, &s, method, MC_FRICTION_COULOMB, mu, slip_case);
+  OK(mc_solve(m));
+  fields f = read_fields(m);
+  for (mc_int j = 0; j < f.n; ++j) {
+    ck_assert_msg(f.state[j] == (slip_case ? MC_STATE_SLIP : MC_STATE_STICK), "npc %d method %d: position %d state %g", npc,
+                  method, (int)j, f.state[j]);
+    ck_assert_msg(fabs(f.pressure[j] - s.p) <= 1e-10 * s.p, "npc %d: pressure %.17g", npc, f.pressure[j]);
+    ck_assert_msg(fabs(f.shear[j] + s.tau) <= 1e-10 * s.p, "npc %d method %d slip %d: position %d shear %.17g, expected %g",
+                  npc, method, slip_case, (int)j, f.shear[j], -s.tau);
+    if (slip_case) ck_assert_double_le(fabs(f.slip[j] - s.delta), 1e-10 * s.delta);
+  }
+  ck_assert_double_le(displacement_error(m, &b, &s), 1e-10);
+  free_fields(&f);
+  mc_destroy(m);
+  blocks_free(&b);
+}
+END_TEST
+
+/* The stick patch test with the upper block a host body (the host's own element matrices and
+   load vector), held along x by sticking contact alone; mortar and dual mortar. */
+START_TEST(patch_host_body) {
+  const int slip_case = 0, method = _i ? MC_METHOD_DUAL_MORTAR : MC_METHOD_MORTAR;
+  blocks b;
+  blocks_meshes(&b, 3, MC_METHOD_MORTAR);
+  const double mu = 0.5;
+  patch s = {P, slip_case ? mu * P : 0.4 * mu * P, slip_case ? 0.05 : 0};
+  mc_model *m = blocks_model_host(&b, &s, method, MC_FRICTION_COULOMB, mu, slip_case, 1);
+  OK(mc_solve(m));
+  fields f = read_fields(m);
+  for (mc_int j = 0; j < f.n; ++j) {
+    ck_assert(f.state[j] == (slip_case ? MC_STATE_SLIP : MC_STATE_STICK));
+    ck_assert_double_le(fabs(f.pressure[j] - s.p), 1e-10 * s.p);
+    ck_assert_msg(fabs(f.shear[j] + s.tau) <= 1e-10 * s.p, "position %d shear %.17g, expected %g", (int)j, f.shear[j], -s.tau);
+  }
+  ck_assert_double_le(displacement_error(m, &b, &s), 1e-10);
+  free_fields(&f);
+  mc_destroy(m);
+  blocks_free(&b);
+}
+END_TEST
+
+/* Three blocks stacked, two pairs with friction, under the uniform stress state: the top and
+   middle blocks are held along x by sticking contact alone; every position of both pairs
+   sticks with shear -tau and pressure p, the displacements the exact field. */
+static void field_stack(double x, double y, void *ctx, double val[2], double grad[4]) {
+  (void)grad;
+  exact_u(ctx, x, y, 0, val);
+}
+
+START_TEST(stack_of_three_sticks) {
+  const int method = _i ? MC_METHOD_DUAL_MORTAR : MC_METHOD_MORTAR;
+  sc_mesh mesh[3];
+  static const int nx[3] = {3, 5, 4};
+  for (int k = 0; k < 3; ++k) ck_assert_int_eq(sc_mesh_rect(&mesh[k], 3, nx[k], 2, 0, 2 - k, 1, 1, 0.1, 7 + k), 0);
+  const double mu = 0.5;
+  patch s = {P, 0.4 * mu * P, 0};
+  mc_model *m;
+  OK(mc_create(&m));
+  OK(mc_set_body_count(m, 3));
+  for (int k = 0; k < 3; ++k) {
+    OK(sc_set_mesh(m, k + 1, &mesh[k], 0));
+    OK(mc_set_material(m, k + 1, E, NU));
+    OK(sc_traction_side(m, k + 1, &mesh[k], SC_LEFT, 0, -s.tau, 0));
+    OK(sc_traction_side(m, k + 1, &mesh[k], SC_RIGHT, 0, s.tau, 0));
+  }
+  OK(sc_traction_side(m, 1, &mesh[0], SC_TOP, s.tau, -s.p, 0));
+  OK(sc_fix_field(m, 3, &mesh[2], mesh[2].n_side_nodes[SC_BOTTOM], mesh[2].side_nodes[SC_BOTTOM], 0, field_stack, &s));
+  for (int k = 0; k < 2; ++k) {
+    int pair;
+    OK(mc_add_contact_pair(m, k + 1, k + 2, &pair));
+    OK(mc_set_pair_surface(m, pair, k + 1, mesh[k].n_side_edges[SC_BOTTOM], mesh[k].side_edges[SC_BOTTOM]));
+    OK(mc_set_pair_surface(m, pair, k + 2, mesh[k + 1].n_side_edges[SC_TOP], mesh[k + 1].side_edges[SC_TOP]));
+    OK(mc_set_friction(m, pair, MC_FRICTION_COULOMB, mu));
+  }
+  OK(mc_set_option_int(m, MC_OPTION_METHOD, method));
+  OK(mc_solve(m));
+  for (int pair = 1; pair <= 2; ++pair) {
+    mc_int n;
+    OK(mc_get_pair_contact_count(m, pair, &n));
+    double *shear = malloc(sizeof(double) * (size_t)n), *pressure = malloc(sizeof(double) * (size_t)n);
+    double *state = malloc(sizeof(double) * (size_t)n);
+    OK(mc_get_pair_contact(m, pair, MC_CONTACT_SHEAR, shear));
+    OK(mc_get_pair_contact(m, pair, MC_CONTACT_PRESSURE, pressure));
+    OK(mc_get_pair_contact(m, pair, MC_CONTACT_STATE, state));
+    for (mc_int j = 0; j < n; ++j) {
+      ck_assert(state[j] == MC_STATE_STICK);
+      ck_assert_double_le(fabs(pressure[j] - s.p), 1e-10 * s.p);
+      ck_assert_msg(fabs(shear[j] + s.tau) <= 1e-10 * s.p, "pair %d position %d shear %.17g", pair, (int)j, shear[j]);
+    }
+    free(shear), free(pressure), free(state);
+  }
+  double worst = 0, scale = 0;
+  for (int k = 0; k < 3; ++k) {
+    double *u = malloc(sizeof(double) * 2 * (size_t)mesh[k].n_nodes);
+    OK(mc_get_displacement(m, k + 1, u));
+    for (mc_int v = 0; v < mesh[k].n_nodes; ++v) {
+      double e[2];
+      exact_u(&s, mesh[k].xy[2 * v], mesh[k].xy[2 * v + 1], 0, e);
+      for (int c = 0; c < 2; ++c) worst = fmax(worst, fabs(u[2 * v + c] - e[c])), scale = fmax(scale, fabs(e[c]));
+    }
+    free(u);
+  }
+  ck_assert_msg(worst <= 1e-10 * scale, "displacement error %g", worst / scale);
+  mc_destroy(m);
+  for (int k = 0; k < 3; ++k) sc_mesh_free(&mesh[k]);
+}
+END_TEST
+
 Suite *friction_suite(void) {
   Suite *s = suite_create("friction");
   TCase *tc = tcase_create("patch");
   tcase_add_loop_test(tc, patch_stick, 0, 6);
   tcase_add_loop_test(tc, patch_slip, 0, 6);
+  tcase_add_loop_test(tc, patch_quadratic, 0, 8);
+  tcase_add_loop_test(tc, patch_host_body, 0, 2);
+  tcase_add_loop_test(tc, stack_of_three_sticks, 0, 2);
   suite_add_tcase(s, tc);
   tc = tcase_create("solve");
   tcase_add_loop_test(tc, zero_friction_is_frictionless, 0, 6);
