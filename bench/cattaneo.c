@@ -22,6 +22,7 @@
  * stick zone's edges and the contact's ends (0.1 a from each, EDGE_BAND).
  *
  * Usage: cattaneo [--quick] [--levels n] [--load P] [--press-steps n] [--slide-steps n] [--press-friction]
+ *        cattaneo --cost [--levels n] [--repeat n]   (what friction costs: see cost_table)
  *   --quick: h = a/10 and a/20, asserts bounds (about twice what they measure), exit 1 if one fails.
  *   CATTANEO_PROFILE=1 prints every position's pressure and shear; CATTANEO_LOG=1 the library's log.
  */
@@ -135,6 +136,7 @@ typedef struct result {
   int positions, stick, slip, iterations;
   long dofs;
   double seconds;         /* the sliding step's mc_solve */
+  double delta;           /* the sideways motion found */
 } result;
 
 /* The pressing depth that gives P close to 0.01: two secant steps from a guess. */
@@ -174,7 +176,7 @@ static result slide_to(mc_model *m, const scene *sc, double d, double target) {
   int64_t iterations, dofs;
   CHECK(mc_get_info_int(m, MC_INFO_ITERATIONS, &iterations));
   CHECK(mc_get_info_int(m, MC_INFO_DOFS, &dofs));
-  res.iterations = (int)iterations, res.dofs = (long)dofs;
+  res.iterations = (int)iterations, res.dofs = (long)dofs, res.delta = dx;
   res.P = P, res.Q = Q, res.ratio = Q / (MU * P);
   const double estar = 1.0 / (2 * (1 - NU * NU));
   res.a = sqrt(4 * P / (M_PI * estar)), res.p0 = 2 * P / (M_PI * res.a);
@@ -223,8 +225,83 @@ static result slide_to(mc_model *m, const scene *sc, double d, double target) {
   return res;
 }
 
+/* ---- --cost: what friction costs (issue 33's cost goals) ------------------------------------
+   Per mesh, each a fresh model's solves, medians of `repeats`:
+   - frictionless: the disc pressed and moved sideways in one solve (first solve: assembly,
+     factorization, the interface operator, the active set, recovery);
+   - Coulomb: the same solve with mu = 0.3 (its interface operator has a tangential row per
+     contact row);
+   - a 10-step history: the same final loads reached in 10 solves (each a step from the last).
+   The displacements are those of the table's Q/(mu P) = 0.5 at this mesh (pressing_depth and
+   slide_to run first, untimed). */
+/* The process's CPU time: on a loaded machine the wall clock measures the neighbours too. */
+static double cpu_seconds(void) {
+  struct timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+static double timed_solves(const scene *sc, int method, double mu, int steps, double d, double dx, double *cpu) {
+  mc_model *m;
+  if (mc_create(&m) != MC_OK) exit(2);
+  for (int b = 0; b < 2; ++b) {
+    const hertz_mesh *mesh = &sc->s.body[b];
+    CHECK(mc_set_mesh(m, b + 1, mesh->n_nodes, mesh->xy, mesh->n_cells, mesh->nodes_per_cell, mesh->cells));
+    CHECK(mc_set_material(m, b + 1, 1.0, NU));
+  }
+  CHECK(mc_fix(m, 2, sc->s.n_bottom_nodes, sc->s.bottom_nodes, MC_XY, NULL));
+  CHECK(mc_set_contact(m, 1, sc->s.n_contact_edges[0], sc->s.contact_edges[0]));
+  CHECK(mc_set_contact(m, 2, sc->s.n_contact_edges[1], sc->s.contact_edges[1]));
+  CHECK(mc_set_option_int(m, MC_OPTION_METHOD, method));
+  CHECK(mc_set_option_int(m, MC_OPTION_THREADS, 1));
+  if (mu > 0) CHECK(mc_set_friction(m, 1, MC_FRICTION_COULOMB, mu));
+  double *values = malloc(sizeof(double) * 2 * (size_t)sc->n_top);
+  const double start = bench_wall(), cpu_start = cpu_seconds();
+  for (int k = 1; k <= steps; ++k) {
+    for (int i = 0; i < sc->n_top; ++i) values[2 * i] = dx * k / steps, values[2 * i + 1] = -d * k / steps;
+    CHECK(mc_fix(m, 1, sc->n_top, sc->top, MC_XY, values));
+    CHECK(mc_solve(m));
+  }
+  const double seconds = bench_wall() - start;
+  *cpu = cpu_seconds() - cpu_start;
+  free(values);
+  mc_destroy(m);
+  return seconds;
+}
+
+static void cost_table(int levels, int repeats) {
+  const double a_nominal = sqrt(4 * p_target / (M_PI / (2 * (1 - NU * NU))));
+  printf("| h / a | DOFs | frictionless s | Coulomb s | Coulomb / frictionless | 10-step history s | history / one Coulomb solve | the same ratios from CPU time |\n");
+  printf("|---|---|---|---|---|---|---|---|\n");
+  for (int level = 1; level < levels; ++level) {
+    const double h = a_nominal / (10 << level);
+    scene sc;
+    scene_build(&sc, h, a_nominal);
+    mc_model *m = scene_model(&sc, MC_METHOD_MORTAR);
+    const double d = pressing_depth(m, &sc);
+    /* the sideways motion of Q/(mu P) = 0.5 */
+    result r = slide_to(m, &sc, d, 0.5);
+    int64_t dofs;
+    CHECK(mc_get_info_int(m, MC_INFO_DOFS, &dofs));
+    mc_destroy(m);
+    double t0[16], t1[16], t10[16], c0[16], c1[16], c10[16];
+    for (int k = 0; k < repeats && k < 16; ++k) {
+      t0[k] = timed_solves(&sc, MC_METHOD_MORTAR, 0, 1, d, r.delta, &c0[k]);
+      t1[k] = timed_solves(&sc, MC_METHOD_MORTAR, MU, 1, d, r.delta, &c1[k]);
+      t10[k] = timed_solves(&sc, MC_METHOD_MORTAR, MU, 10, d, r.delta, &c10[k]);
+    }
+    const int n = repeats < 16 ? repeats : 16;
+    const double m0 = bench_median(t0, n), m1 = bench_median(t1, n), m10 = bench_median(t10, n);
+    const double p0 = bench_median(c0, n), p1 = bench_median(c1, n), p10 = bench_median(c10, n);
+    printf("| 1/%d | %ld | %.3f | %.3f | %.2f | %.3f | %.2f | %.2f, %.2f |\n", 10 << level, (long)dofs, m0, m1, m1 / m0, m10,
+           m10 / m1, p1 / p0, p10 / p1);
+    fflush(stdout);
+    scene_free(&sc);
+  }
+}
+
 int main(int argc, char **argv) {
-  int quick = 0, levels = 4;
+  int quick = 0, levels = 4, cost = 0, repeats = 3;
   for (int i = 1; i < argc; ++i) {
     if (!strcmp(argv[i], "--quick")) quick = 1, levels = 2;
     else if (!strcmp(argv[i], "--levels") && i + 1 < argc) levels = atoi(argv[++i]);
@@ -232,10 +309,16 @@ int main(int argc, char **argv) {
     else if (!strcmp(argv[i], "--slide-steps") && i + 1 < argc) slide_steps = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--press-friction")) press_with_friction = 1;
     else if (!strcmp(argv[i], "--load") && i + 1 < argc) p_target = atof(argv[++i]);
+    else if (!strcmp(argv[i], "--cost")) cost = 1;
+    else if (!strcmp(argv[i], "--repeat") && i + 1 < argc) repeats = atoi(argv[++i]);
     else {
-      fprintf(stderr, "usage: %s [--quick] [--levels n]\n", argv[0]);
+      fprintf(stderr, "usage: %s [--quick] [--levels n] [--cost [--repeat n]]\n", argv[0]);
       return 2;
     }
+  }
+  if (cost) {
+    cost_table(levels, repeats);
+    return 0;
   }
   const double a_nominal = sqrt(4 * p_target / (M_PI / (2 * (1 - NU * NU))));  /* Hertz */
   const double ratios[3] = {0.25, 0.5, 0.75};
