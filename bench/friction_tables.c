@@ -800,8 +800,8 @@ static void tresca_pad_table(void) {
   printf("\n## 4. Tresca friction (checked)\n\n### 4a. The SSNV503-like pad, bound g = %g (slip limit g x 40 = %g), 2 load steps\n\n", g,
          limit);
   printf("| method | pad cells | load / (g x 40) | status | tangential reaction (base) | load - strip's share | expected | error | "
-         "stick / slip / open positions | sticking x range | stick, open: max (abs(shear) - g)/g | slip: max abs(abs(shear) - g)/g | "
-         "stick: max abs(slip) / max abs(u) | slip with the shear's sign | iterations |\n");
+         "stick / slip / open positions | stick, open: max (abs(shear) - g)/g | slip: max abs(abs(shear) - g)/g | "
+         "stick: max abs(slip) / max abs(u) | slip with the shear's sign | sticking x range | iterations |\n");
   printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   const int sizes_full[3] = {8, 16, 32}, sizes_quick[1] = {8};
   const int *sizes = quick ? sizes_quick : sizes_full, n_sizes = quick ? 1 : 3;
