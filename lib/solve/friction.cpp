@@ -115,10 +115,10 @@ void Model::solve_condensed_friction(DualQp &qp, std::vector<double> &lambda, st
     std::string rows;
     int listed = 0;
     for (int row : result.changing_rows) {
-      if (listed++ == 4) { rows += ", ..."; break; }
+      if (listed++ == 4) { rows += "; ..."; break; }
       const bool tangential = row >= q;
       const int r = tangential ? cs.tangent_of[row - q] : row;
-      rows += (rows.empty() ? "" : ", ") + row_place(*this, cs, r) +
+      rows += (rows.empty() ? "" : "; ") + row_place(*this, cs, r) +
               (tangential ? std::string(": tangential row, ") + state_name(result.state[row - q])
                           : std::string(result.active[r] ? ": normal row, in contact" : ": normal row, open"));
     }
@@ -302,10 +302,13 @@ void Model::friction_results(const std::vector<double> &lambda, const std::vecto
       // A position's state is that of the row that weighs most on it (its own row, weight 1).
       if (std::fabs(cs.rows.weight1[p]) <= state_weight[pos]) continue;
       state_weight[pos] = std::fabs(cs.rows.weight1[p]);
+      // Open: no normal force, unless the row is a Tresca row, whose bound holds out of contact
+      // too (friction_qp.hpp, FrictionProblem::live): it sticks or slips there as well.
+      const int j = tangent_index[r];
+      const bool tresca = j >= 0 && cs.friction_law[j] == MC_FRICTION_TRESCA;
       int state = MC_STATE_OPEN;
-      if (lambda[r] > 0)
-        state = tangent_index[r] >= 0 && cs.friction_state[tangent_index[r]] == FrictionState::stick ? MC_STATE_STICK
-                                                                                                     : MC_STATE_SLIP;
+      if (lambda[r] > 0 || tresca)
+        state = j >= 0 && cs.friction_state[j] == FrictionState::stick ? MC_STATE_STICK : MC_STATE_SLIP;
       contact_state[pos] = state;
     }
   for (const ContactGroup &group : cs.groups) {
