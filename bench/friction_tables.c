@@ -782,6 +782,15 @@ static int tresca_ok(const tresca_state *t) {
   return t->stick_excess <= 1e-10 && t->slip_dev <= 1e-10 && t->stick_slip <= 1e-10 && t->wrong_sign == 0;
 }
 
+/* The same for a solve of several load steps: MC_CONTACT_SLIP is the slip of the whole solve,
+   and a position that slipped in an early step and sticks in the last one (a Tresca row out of
+   contact, which reports its stick or slip state) has slipped in this solve: only the bounds
+   and the slipping rows' signs are checked then. */
+static int tresca_ok_steps(const tresca_state *t, int steps) {
+  if (steps == 1) return tresca_ok(t);
+  return t->stick_excess <= 1e-10 && t->slip_dev <= 1e-10 && t->wrong_sign == 0;
+}
+
 static void tresca_state_cells(const tresca_state *t) {
   printf(" %d / %d / %d | %.1e | %.1e | %.1e | %d |", t->stick, t->slip, t->open, t->stick_excess > -INFINITY ? t->stick_excess : 0,
          t->slip_dev, t->stick_slip, t->wrong_sign);
@@ -928,7 +937,7 @@ static void tresca_plate_table(void) {
         char what[200];
         snprintf(what, sizeof what, "tresca ssnv128 %s g=%g %d steps: solves, the Tresca conditions (1e-10)", method_names[k], gs[i],
                  steps);
-        check(r.status == MC_OK && tresca_ok(&r.t), what);
+        check(r.status == MC_OK && tresca_ok_steps(&r.t, steps), what);
         if (r.status != MC_OK) {
           printf("| %s | %g | %d | %s: %.200s | | | | | | | | | | %ld |\n", method_names[k], gs[i], steps, status_name(r.status), r.msg,
                  (long)r.iterations);

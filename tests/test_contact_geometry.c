@@ -49,11 +49,11 @@ static void solve_checked(mc_model *m, int method, int surface, const mc_int n_n
 
 /* Symmetric point supports consistent with a radial field: u_y = 0 at the nodes on y = 0,
    u_x = 0 at the nodes on x = 0. They remove the rigid motions and carry no force. */
-static void ring_fix_axes(mc_model *m, int body, const polar_ring *g) {
+static void ring_fix_axes(mc_model *m, int body, const sc_polar_ring *g) {
   mc_int *ids = malloc(sizeof(mc_int) * 2 * (size_t)(g->nr + 1));
-  for (int j = 0; j <= g->nr; ++j) ids[2 * j] = ring_node(g, 0, j), ids[2 * j + 1] = ring_node(g, g->nt / 2, j);
+  for (int j = 0; j <= g->nr; ++j) ids[2 * j] = sc_ring_node(g, 0, j), ids[2 * j + 1] = sc_ring_node(g, g->nt / 2, j);
   OK(mc_fix(m, body, 2 * (g->nr + 1), ids, MC_Y, NULL));
-  for (int j = 0; j <= g->nr; ++j) ids[2 * j] = ring_node(g, g->nt / 4, j), ids[2 * j + 1] = ring_node(g, 3 * g->nt / 4, j);
+  for (int j = 0; j <= g->nr; ++j) ids[2 * j] = sc_ring_node(g, g->nt / 4, j), ids[2 * j + 1] = sc_ring_node(g, 3 * g->nt / 4, j);
   OK(mc_fix(m, body, 2 * (g->nr + 1), ids, MC_X, NULL));
   free(ids);
 }
@@ -90,9 +90,9 @@ static double shrink_fit_worst_of(int method, int surface, double delta_cells, i
   const int nt2 = nt1 + 16; /* multiples of 4: nodes on both axes for the symmetric supports */
   const double h = 2 * PI / nt1; /* the shaft's (the coarser) cell on the circle */
   const double a = 0.5, R = 1, c = 2, delta = delta_cells * h, b = R + delta, e1 = 1, e2 = 2, nu = 0.3;
-  polar_ring shaft, hub;
-  polar_ring_build(&shaft, nt1, 8, 4, a, b);
-  polar_ring_build(&hub, nt2, 16, 3, R, c);
+  sc_polar_ring shaft, hub;
+  sc_polar_ring_build(&shaft, nt1, 8, 4, a, b);
+  sc_polar_ring_build(&hub, nt2, 16, 3, R, c);
   mc_model *m = NULL;
   ck_assert_int_eq(mc_create(&m), MC_OK);
   OK(mc_set_mesh(m, 1, shaft.n_nodes, shaft.xy, shaft.n_cells, 4, shaft.cells));
@@ -101,7 +101,7 @@ static double shrink_fit_worst_of(int method, int surface, double delta_cells, i
   OK(mc_set_material(m, 2, e2, nu));
   ring_fix_axes(m, 1, &shaft);
   ring_fix_axes(m, 2, &hub);
-  mc_int *loop1 = ring_circle_edges(&shaft, shaft.nr), *loop2 = ring_circle_edges(&hub, 0);
+  mc_int *loop1 = sc_ring_circle_edges(&shaft, shaft.nr), *loop2 = sc_ring_circle_edges(&hub, 0);
   if (feature_angle > 0) OK(mc_set_option_real(m, MC_OPTION_FEATURE_ANGLE, feature_angle));
   OK(mc_set_contact(m, 1, nt1, loop1));
   OK(mc_set_contact(m, 2, nt2, loop2));
@@ -130,7 +130,7 @@ static double shrink_fit_worst_of(int method, int surface, double delta_cells, i
   if (p_lame_out) *p_lame_out = p_lame;
   contact_free(&cd);
   mc_destroy(m);
-  polar_ring_free(&shaft), polar_ring_free(&hub);
+  sc_polar_ring_free(&shaft), sc_polar_ring_free(&hub);
   return worst;
 }
 

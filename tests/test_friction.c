@@ -632,9 +632,9 @@ END_TEST
 START_TEST(shrink_fit_torsion) {
   const int method = methods[_i % 2];
   const double a = 0.5, R = 1, c = 2, delta = 0.02, b = R + delta, mu = 0.3;
-  polar_ring shaft, hub;
-  ck_assert_int_eq(polar_ring_build(&shaft, 128, 16, 4, a, b), 0);
-  ck_assert_int_eq(polar_ring_build(&hub, 160, 32, 3, R, c), 0);
+  sc_polar_ring shaft, hub;
+  ck_assert_int_eq(sc_polar_ring_build(&shaft, 128, 16, 4, a, b), 0);
+  ck_assert_int_eq(sc_polar_ring_build(&hub, 160, 32, 3, R, c), 0);
   mc_model *m;
   OK(mc_create(&m));
   OK(mc_set_mesh(m, 1, shaft.n_nodes, shaft.xy, shaft.n_cells, 4, shaft.cells));
@@ -642,9 +642,9 @@ START_TEST(shrink_fit_torsion) {
   OK(mc_set_material(m, 1, 1.0, 0.3));
   OK(mc_set_material(m, 2, 2.0, 0.3));
   mc_int *outer = malloc(sizeof(mc_int) * 160);
-  for (int i = 0; i < 160; ++i) outer[i] = ring_node(&hub, i, hub.nr);
+  for (int i = 0; i < 160; ++i) outer[i] = sc_ring_node(&hub, i, hub.nr);
   OK(mc_fix(m, 2, 160, outer, MC_XY, NULL));
-  mc_int *loop1 = ring_circle_edges(&shaft, shaft.nr), *loop2 = ring_circle_edges(&hub, 0), *bore = ring_circle_edges(&shaft, 0);
+  mc_int *loop1 = sc_ring_circle_edges(&shaft, shaft.nr), *loop2 = sc_ring_circle_edges(&hub, 0), *bore = sc_ring_circle_edges(&shaft, 0);
   OK(mc_set_contact(m, 1, 128, loop1));
   OK(mc_set_contact(m, 2, 160, loop2));
   OK(mc_set_option_int(m, MC_OPTION_METHOD, method));
@@ -684,7 +684,7 @@ START_TEST(shrink_fit_torsion) {
   ck_assert_msg(worst <= 0.005, "%s: shear %.4g %% off T / (2 pi r^2)", method_name[_i % 2], 100 * worst);
   free(outer), free(loop1), free(loop2), free(bore), free(pressure), free(shear), free(state), free(traction);
   mc_destroy(m);
-  polar_ring_free(&shaft), polar_ring_free(&hub);
+  sc_polar_ring_free(&shaft), sc_polar_ring_free(&hub);
 }
 END_TEST
 
