@@ -1,4 +1,5 @@
-// The error estimate every solve reports (MC_INFO_ERROR_ESTIMATE, mc_get_error_indicator):
+// The error estimate of a solve (MC_INFO_ERROR_ESTIMATE, mc_get_error_indicator; computed on demand,
+// results_on_demand.cpp):
 // Zienkiewicz-Zhu recovery in the cells of both bodies, plus the contact terms on body 1's
 // contact edges (docs/theory.md, "Error estimate").
 //
@@ -18,7 +19,6 @@
 #include "bodies/cell_shapes.hpp"
 #include "solve/model.hpp"
 #include "bodies/plane_vectors.hpp"
-#include "support/stopwatch.hpp"
 #include "bodies/stress_recovery.hpp"
 #include <cmath>
 
@@ -79,17 +79,17 @@ double contact_edge_terms(const Model &model, const ContactGeometry &g, int firs
 
 }  // namespace
 
-void Model::estimate_error() {
-  infos.error_estimate = 0;
-  for (Body &b : body) b.error_indicator.clear();
-  if (!options.error_estimate) return;
+void Model::estimate_error(double &estimate, std::vector<std::vector<double>> &indicators) const {
+  estimate = 0;
+  indicators.assign(body.size(), std::vector<double>());
   double eta2 = 0;
   std::vector<std::vector<double>> cell_eta2(body.size()), recovered(body.size());
-  // Each body on its own thread when the solve runs two (the recovery's phase does the same).
-  for_each_body([&](int b, BodyWork &work) {
+  // Each body on its own thread when the solve runs two (MC_OPTION_THREADS, as the recovery's
+  // phase does); their timings are not infos (the estimate's time is MC_INFO_TIME_RESULTS').
+  Infos ignored;
+  run_bodies(body_threads(), [&](int b, BodyWork &) {
     const Body &body_ = body[b];
     if (!body_.has_mesh || body_.host || !system_[b]) return;
-    Stopwatch watch(work.infos.t_estimate);
     const Mesh &mesh = body_.mesh;
     const int npc = mesh.nodes_per_cell();
     const bool bbar = options.q1_integration == MC_Q1_BBAR && npc == 4;
@@ -143,7 +143,7 @@ void Model::estimate_error() {
       const size_t l = laws.size() == 1 ? 0 : size_t(c);
       cell_eta2[b][c] = cell_recovery_error(p, npc, laws[l], &compliance[16 * l], measure(), bbar, ue, nodal);
     }
-  });
+  }, ignored);
   // The contact terms, on each group's non-mortar edges.
   std::vector<char> owns_row(contact_force.size(), 0);
   if (contact_)
@@ -181,13 +181,13 @@ void Model::estimate_error() {
     for (double e : cell_eta2[b]) eta2 += e;
   const double denominator = 2 * infos.energy + eta2;
   if (!(denominator > 0)) {  // no deformation, no error: every indicator 0
-    for (int b = 0; b < n_bodies(); ++b) body[b].error_indicator.assign(cell_eta2[b].size(), 0.0);
+    for (int b = 0; b < n_bodies(); ++b) indicators[b].assign(cell_eta2[b].size(), 0.0);
     return;
   }
-  infos.error_estimate = std::sqrt(eta2 / denominator);
+  estimate = std::sqrt(eta2 / denominator);
   for (int b = 0; b < n_bodies(); ++b) {
-    body[b].error_indicator.resize(cell_eta2[b].size());
-    for (size_t c = 0; c < cell_eta2[b].size(); ++c) body[b].error_indicator[c] = std::sqrt(cell_eta2[b][c] / denominator);
+    indicators[b].resize(cell_eta2[b].size());
+    for (size_t c = 0; c < cell_eta2[b].size(); ++c) indicators[b][c] = std::sqrt(cell_eta2[b][c] / denominator);
   }
 }
 
