@@ -78,7 +78,8 @@ enum class Option : int {
   threads = MC_OPTION_THREADS,
   interface_solver = MC_OPTION_INTERFACE_SOLVER,
   error_estimate = MC_OPTION_ERROR_ESTIMATE,
-  multiplier = MC_OPTION_MULTIPLIER
+  multiplier = MC_OPTION_MULTIPLIER,
+  eager_results = MC_OPTION_EAGER_RESULTS
 };
 
 /// Values of Option::method.
@@ -129,7 +130,8 @@ enum class Info : int {
   complementarity = MC_INFO_COMPLEMENTARITY,
   equilibrium = MC_INFO_EQUILIBRIUM,
   gap_residual = MC_INFO_GAP_RESIDUAL,
-  error_estimate = MC_INFO_ERROR_ESTIMATE
+  error_estimate = MC_INFO_ERROR_ESTIMATE,
+  time_results = MC_INFO_TIME_RESULTS
 };
 
 enum class LogLevel : int { phase = MC_LOG_PHASE, iteration = MC_LOG_ITERATION };
