@@ -27,15 +27,15 @@ namespace mc {
 namespace {
 
 // The contact terms of body 1's contact edge `seg` (a curve segment of the non-mortar surface),
-// added to the indicator of the cell that owns the edge.
+// added to the indicator of the cell that owns the edge. stress: 4 per edge node (the ends, then
+// the middle), the owning cell's own stress there.
 double contact_edge_terms(const Model &model, const ContactGeometry &g, int first_position, int seg, const PlaneLaw &law,
-                          const std::vector<double> &stress, const std::vector<char> &owns_row) {
+                          const double *stress, const std::vector<char> &owns_row) {
   const CurveSegment &c = g.nonmortar.segments()[seg];
   std::array<int, 3> pos = g.segment_positions[seg];  // the stacked positions (Model::contact_pressure's)
   for (int &p : pos)
     if (p >= 0) p += first_position;
   const int nodes = c.quadratic() ? 3 : 2;
-  const int node[3] = {c.a, c.b, c.mid};
   double pressure[3] = {0, 0, 0}, gap[3] = {0, 0, 0};
   bool touched = false;
   for (int a = 0; a < nodes; ++a) {
@@ -67,7 +67,7 @@ double contact_edge_terms(const Model &model, const ContactGeometry &g, int firs
     const double weight = w[q] * g.nonmortar.speed(seg, s[q]) * measure.weight(x);
     double sigma[3] = {0, 0, 0}, p = 0, gp = 0;  // recovered xx, yy, xy along the edge
     for (int a = 0; a < nodes; ++a) {
-      for (int k = 0; k < 3; ++k) sigma[k] += shape[a] * stress[4 * size_t(node[a]) + k];
+      for (int k = 0; k < 3; ++k) sigma[k] += shape[a] * stress[4 * a + k];
       p += shape[a] * pressure[a], gp += shape[a] * gap[a];
     }
     const double normal_stress = n.x * n.x * sigma[0] + n.y * n.y * sigma[1] + 2 * n.x * n.y * sigma[2];
@@ -153,7 +153,6 @@ void Model::estimate_error(double &estimate, std::vector<std::vector<double>> &i
     const int nm = group.nonmortar;
     if (body[nm].host || cell_eta2[nm].empty()) continue;
     const ContactGeometry &g = group.geometry;
-    std::vector<double> own_stress(4 * size_t(body[nm].mesh.n_nodes()), 0.0);  // per edge, its cell's
     const std::vector<PlaneLaw> &laws = system_[nm]->laws;
     for (size_t seg = 0; seg < g.nonmortar.segments().size(); ++seg) {
       const CurveSegment &c = g.nonmortar.segments()[seg];
@@ -171,9 +170,13 @@ void Model::estimate_error(double &estimate, std::vector<std::vector<double>> &i
       for (int a = 0; a < npc; ++a)
         p[a] = mesh.node(v[a]), ue[2 * a] = body[nm].u[2 * size_t(v[a])], ue[2 * a + 1] = body[nm].u[2 * size_t(v[a]) + 1];
       cell_nodal_stresses(p, npc, law, measure(), options.q1_integration == MC_Q1_BBAR && npc == 4, ue, at_nodes);
-      std::vector<double> &own = own_stress;
-      for (int a = 0; a < npc; ++a)
-        for (int k = 0; k < 4; ++k) own[4 * size_t(v[a]) + k] = at_nodes[4 * a + k];
+      // the cell's stress at the edge's nodes (ends, middle), in that order
+      double own[12] = {0};
+      const int edge_node[3] = {c.a, c.b, c.mid};
+      for (int e = 0; e < (c.quadratic() ? 3 : 2); ++e)
+        for (int a = 0; a < npc; ++a)
+          if (v[a] == edge_node[e])
+            for (int k = 0; k < 4; ++k) own[4 * e + k] = at_nodes[4 * a + k];
       cell_eta2[nm][edge->cell] += contact_edge_terms(*this, g, group.first_position, int(seg), law, own, owns_row);
     }
   }

@@ -112,8 +112,11 @@ const std::vector<double> &Model::error_indicators(int b) const {
   return derived_.error_indicator[b];
 }
 
+// (An info reads as the last solve's even after the model changed: computed before the change it
+// is kept; not computed yet, it can no longer be, and reads 0 as it does before any solve.)
 double Model::error_estimate() const {
-  if (!options.error_estimate) return 0;
+  if (derived_.has_estimate) return derived_.error_estimate;
+  if (!options.error_estimate || !solved) return 0;
   ensure_estimate();
   return derived_.error_estimate;
 }
