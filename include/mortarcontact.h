@@ -103,7 +103,8 @@ enum {
                                      MC_INTERFACE_AUTO (see below) */
   MC_OPTION_ERROR_ESTIMATE = 12, /* int: 1 (default) a solve's error is estimated (MC_INFO_ERROR_ESTIMATE,
                                     mc_get_error_indicator; when first asked for, see
-                                    MC_OPTION_EAGER_RESULTS); 0: never, both refused or 0 */
+                                    MC_OPTION_EAGER_RESULTS); 0: never (the info reads 0, the
+                                    indicators are refused) */
   MC_OPTION_MULTIPLIER = 13,     /* int: MC_MULTIPLIER_*; the contact multipliers of a body 1 with
                                     quadratic cells (MC_METHOD_MORTAR); default MC_MULTIPLIER_LINEAR */
   MC_OPTION_EAGER_RESULTS = 14   /* int: 0 (default) the stresses, nodal stresses and error estimate
@@ -504,7 +505,8 @@ typedef enum mc_log_level {
   MC_LOG_PHASE = 1,     /* a phase started or ended: assembly, factorization, contact, ... */
   MC_LOG_ITERATION = 2  /* one active-set iteration: its number, active nodes, residuals */
 } mc_log_level;
-/* Called from the thread that calls mc_solve, with a NUL-terminated one-line message that is
+/* Called from the thread that calls mc_solve (and from a call that computes results on demand,
+   for their messages: "Results on demand" above), with a NUL-terminated one-line message that is
    valid only during the call. The callback must not call back into the same model. Phase
    messages after "solve: start, ..." ("assembly: body 1, ...", "factorization: ...",
    "interface operator: ...", "active-set solve: ...", "recovery: ...", "solve: done, ...")
