@@ -80,7 +80,8 @@ enum class Option : int {
   error_estimate = MC_OPTION_ERROR_ESTIMATE,
   multiplier = MC_OPTION_MULTIPLIER,
   load_steps = MC_OPTION_LOAD_STEPS,
-  friction_ct = MC_OPTION_FRICTION_CT
+  friction_ct = MC_OPTION_FRICTION_CT,
+  eager_results = MC_OPTION_EAGER_RESULTS
 };
 
 /// Values of Option::method.
@@ -134,7 +135,8 @@ enum class Info : int {
   equilibrium = MC_INFO_EQUILIBRIUM,
   gap_residual = MC_INFO_GAP_RESIDUAL,
   error_estimate = MC_INFO_ERROR_ESTIMATE,
-  friction_complementarity = MC_INFO_FRICTION_COMPLEMENTARITY
+  friction_complementarity = MC_INFO_FRICTION_COMPLEMENTARITY,
+  time_results = MC_INFO_TIME_RESULTS
 };
 
 enum class LogLevel : int { phase = MC_LOG_PHASE, iteration = MC_LOG_ITERATION };

@@ -16,7 +16,9 @@
  *                     node), bad counts
  *   non_finite        NaN / +-inf in every real array and scalar
  *   material          the bounds of E and nu, exactly and just inside; finite numbers whose
- *                     solution overflows (MC_ERROR_ARGUMENT from mc_solve, not inf/NaN results)
+ *                     solution overflows (MC_ERROR_ARGUMENT from mc_solve, not inf/NaN results;
+ *                     stresses alone: from the getter that computes them, or from mc_solve with
+ *                     MC_OPTION_EAGER_RESULTS)
  *   options_infos     every option with values out of range, wrong type; infos of wrong type
  *   interface_solver  MC_OPTION_INTERFACE_SOLVER out of range (the message names the value and
  *                     the option) and through mc_set_option_real; MC_INFO_INTERFACE_SOLVER
@@ -649,11 +651,34 @@ START_TEST(test_material) {
     FAILS(mc_solve(m), MC_ERROR_ARGUMENT, "overflows");
     SUCCEEDS(mc_set_plane(m, MC_PLANE_STRESS, 1));
     SUCCEEDS(mc_set_body_force(m, 1, -DBL_MAX, 0));
-    FAILS(mc_solve(m), MC_ERROR_ARGUMENT, "overflows");
+    /* only the stresses overflow here (the displacements stay finite): with results
+       on demand (the default) the solve succeeds and mc_get_stress (or mc_get_nodal_stress,
+       mc_write_vtu) says so, again and again, the displacements staying readable; with eager
+       results mc_solve says so */
+    {
+      double sigma[4 * 64];
+      ck_assert_int_le(4 * s.top.n_cells, 4 * 64);
+      SUCCEEDS(mc_solve(m));
+      FAILS(mc_get_stress(m, 1, sigma), MC_ERROR_ARGUMENT, "overflow");
+      FAILS(mc_get_nodal_stress(m, 1, sigma), MC_ERROR_ARGUMENT, "sigma[");
+      FAILS(mc_write_vtu(m, "/dev/null"), MC_ERROR_ARGUMENT, "overflow");
+      SUCCEEDS(mc_get_displacement(m, 1, u));
+      SUCCEEDS(mc_set_option_int(m, MC_OPTION_EAGER_RESULTS, 1));
+      FAILS(mc_solve(m), MC_ERROR_ARGUMENT, "overflows");
+      FAILS(mc_get_displacement(m, 1, u), MC_ERROR_STATE, "mc_solve");
+      SUCCEEDS(mc_set_option_int(m, MC_OPTION_EAGER_RESULTS, 0));
+    }
     SUCCEEDS(mc_set_body_force(m, 1, 0, 0));
     SUCCEEDS(sc_traction_side(m, 1, &s.top, SC_RIGHT, 0, 1e308, 0));
-    FAILS(mc_solve(m), MC_ERROR_ARGUMENT, "overflows");
-    FAILS(mc_get_displacement(m, 1, u), MC_ERROR_STATE, "mc_solve");
+    {
+      double sigma[4 * 64];
+      SUCCEEDS(mc_solve(m)); /* the stresses overflow, as above */
+      FAILS(mc_get_stress(m, 1, sigma), MC_ERROR_ARGUMENT, "overflow");
+      SUCCEEDS(mc_set_option_int(m, MC_OPTION_EAGER_RESULTS, 1));
+      FAILS(mc_solve(m), MC_ERROR_ARGUMENT, "overflows");
+      FAILS(mc_get_displacement(m, 1, u), MC_ERROR_STATE, "mc_solve");
+      SUCCEEDS(mc_set_option_int(m, MC_OPTION_EAGER_RESULTS, 0));
+    }
     SUCCEEDS(mc_clear_loads(m, 1));
     SUCCEEDS(sc_traction_side(m, 1, &s.top, SC_RIGHT, 0, 1, 0));
     SUCCEEDS(mc_solve(m));
@@ -694,6 +719,11 @@ START_TEST(test_options_infos) {
     FAILS(mc_set_option_int(m, o, (int64_t)1 << 32), MC_ERROR_ARGUMENT, "value"); /* not truncated to 0 */
     FAILS(mc_set_option_real(m, o, 1.0), MC_ERROR_ARGUMENT, "integer-valued");
   }
+  /* MC_OPTION_EAGER_RESULTS: 0 or 1, named in the message */
+  FAILS(mc_set_option_int(m, MC_OPTION_EAGER_RESULTS, 2), MC_ERROR_ARGUMENT, "MC_OPTION_EAGER_RESULTS");
+  FAILS(mc_set_option_int(m, MC_OPTION_EAGER_RESULTS, -1), MC_ERROR_ARGUMENT, "value = -1");
+  FAILS(mc_set_option_int(m, MC_OPTION_EAGER_RESULTS, (int64_t)1 << 32), MC_ERROR_ARGUMENT, "value");
+  FAILS(mc_set_option_real(m, MC_OPTION_EAGER_RESULTS, 1.0), MC_ERROR_ARGUMENT, "integer-valued");
   FAILS(mc_set_option_int(m, MC_OPTION_TOLERANCE, 1), MC_ERROR_ARGUMENT, "real-valued");
   FAILS(mc_set_option_real(m, MC_OPTION_TOLERANCE, 0), MC_ERROR_ARGUMENT, "value");
   FAILS(mc_set_option_real(m, MC_OPTION_TOLERANCE, 1), MC_ERROR_ARGUMENT, "value");
@@ -708,11 +738,10 @@ START_TEST(test_options_infos) {
   /* infos: wrong type, unknown, NULL; the output is untouched on failure */
   FAILS(mc_get_info_int(m, MC_INFO_STRAIN_ENERGY, &iv), MC_ERROR_ARGUMENT, "real-valued");
   FAILS(mc_get_info_real(m, MC_INFO_DOFS, &rv), MC_ERROR_ARGUMENT, "integer-valued");
-  FAILS(mc_get_info_int(m, MC_INFO_FRICTION_COMPLEMENTARITY, &iv), MC_ERROR_ARGUMENT, "real-valued"); /* the last real one */
+  FAILS(mc_get_info_int(m, MC_INFO_TIME_RESULTS, &iv), MC_ERROR_ARGUMENT, "real-valued"); /* the last real one */
   FAILS(mc_get_info_real(m, MC_INFO_SLIP_NODES, &rv), MC_ERROR_ARGUMENT, "integer-valued"); /* the last integer one */
-  for (k = -1; k <= 33; ++k) {
-    if ((k >= MC_INFO_DOFS && k <= MC_INFO_SLIP_NODES) ||
-        (k >= MC_INFO_TIME_ASSEMBLY && k <= MC_INFO_FRICTION_COMPLEMENTARITY))
+  for (k = -1; k <= 34; ++k) {
+    if ((k >= MC_INFO_DOFS && k <= MC_INFO_SLIP_NODES) || (k >= MC_INFO_TIME_ASSEMBLY && k <= MC_INFO_TIME_RESULTS))
       continue;
     FAILS(mc_get_info_int(m, k, &iv), MC_ERROR_ARGUMENT, "info");
     FAILS(mc_get_info_real(m, k, &rv), MC_ERROR_ARGUMENT, "info");

@@ -227,8 +227,9 @@ START_TEST(test_infos) {
   FAILS(mc_get_info_real(m, MC_INFO_INTERFACE_SOLVER, &r), MC_ERROR_ARGUMENT, "info");
   FAILS(mc_get_info_int(m, 19, &v), MC_ERROR_ARGUMENT, "info");
   FAILS(mc_get_info_real(m, MC_INFO_DOFS, &r), MC_ERROR_ARGUMENT, "info");
-  FAILS(mc_get_info_real(m, 32, &r), MC_ERROR_ARGUMENT, "info");
+  FAILS(mc_get_info_real(m, 33, &r), MC_ERROR_ARGUMENT, "info"); /* past MC_INFO_TIME_RESULTS = 32 */
   FAILS(mc_get_info_int(m, MC_INFO_ERROR_ESTIMATE, &v), MC_ERROR_ARGUMENT, "real-valued");
+  FAILS(mc_get_info_int(m, MC_INFO_TIME_RESULTS, &v), MC_ERROR_ARGUMENT, "real-valued");
   FAILS(mc_get_info_real(m, -1, &r), MC_ERROR_ARGUMENT, "info");
   FAILS(mc_get_info_int(m, MC_INFO_DOFS, NULL), MC_ERROR_ARGUMENT, "value");
   FAILS(mc_get_info_real(m, MC_INFO_STRAIN_ENERGY, NULL), MC_ERROR_ARGUMENT, "value");

@@ -605,7 +605,7 @@ START_TEST(log_callback_reports_phases_and_iterations) {
                                        "analysis: body 1", "assembly: body 2", "analysis: body 2",
                                        "interface solver: condensed (automatic", "factorization: body 1",
                                        "factorization: body 2", "interface operator", "loads:",
-                                       "active-set solve: solved", "recovery:", "error estimate:", "solve: done"};
+                                       "active-set solve: solved", "recovery:", "solve: done"};
   const char *previous = rec.text;
   for (size_t k = 0; k < sizeof phases / sizeof *phases; ++k) {
     const char *at = strstr(rec.text, phases[k]);
@@ -614,6 +614,34 @@ START_TEST(log_callback_reports_phases_and_iterations) {
     previous = at;
   }
   ck_assert_int_eq(rec.phases, (int)(sizeof phases / sizeof *phases));
+  /* results on demand (the default): the solve computed no stresses and no estimate; the first
+     call that asks for each does, with its message after "solve: done", and only once */
+  ck_assert_msg(!strstr(rec.text, "error estimate:") && !strstr(rec.text, "stresses:") &&
+                    !strstr(rec.text, "reactions, stresses"),
+                "%s", rec.text);
+  {
+    double estimate, estimate_again, *sigma = malloc(sizeof(double) * 4 * (size_t)(s.mesh[0].n_cells + s.mesh[0].n_nodes));
+    int phases_before = rec.phases;
+    OK(mc_get_info_real(m, MC_INFO_ERROR_ESTIMATE, &estimate));
+    OK(mc_get_info_real(m, MC_INFO_ERROR_ESTIMATE, &estimate_again));
+    ck_assert(estimate == estimate_again && estimate > 0);
+    ck_assert_int_eq(rec.phases, phases_before + 1);
+    ck_assert_msg(strstr(rec.text, "solve: done") < strstr(rec.text, "error estimate:"), "%s", rec.text);
+    OK(mc_get_stress(m, 1, sigma));
+    OK(mc_get_nodal_stress(m, 1, sigma)); /* computed with the cells' */
+    ck_assert_int_eq(rec.phases, phases_before + 2);
+    ck_assert_msg(strstr(rec.text, "stresses: body 1,") != NULL, "%s", rec.text);
+    ck_assert_int_eq(rec.bad_lines, 0);
+    free(sigma);
+  }
+  /* eager results: the solve computes both, the estimate before "solve: done" */
+  log_reset(&rec);
+  SUCCEEDS(mc_set_option_int(m, MC_OPTION_EAGER_RESULTS, 1));
+  OK(mc_solve(m));
+  ck_assert_msg(strstr(rec.text, "reactions, stresses") && strstr(rec.text, "error estimate:") &&
+                    strstr(rec.text, "error estimate:") < strstr(rec.text, "solve: done"),
+                "%s", rec.text);
+  SUCCEEDS(mc_set_option_int(m, MC_OPTION_EAGER_RESULTS, 0));
 
   /* a load step: reuse is reported, and no assembly or factorization happens */
   log_reset(&rec);

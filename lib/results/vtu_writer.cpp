@@ -245,7 +245,7 @@ void write_piece(TextFile &out, const Model &model, const std::vector<int> &bodi
   out << "        <DataArray type=\"Float64\" Name=\"nodal_stress\" NumberOfComponents=\"4\" "
       << stress_component_names(model) << " format=\"ascii\">\n";
   for (int b : bodies) {
-    const std::vector<double> &s = model.body[b].nodal_stress;
+    const std::vector<double> &s = model.nodal_stresses(b);
     for (int i = 0; i < model.body[b].mesh.n_nodes(); ++i)
       out << s[4 * size_t(i)] << " " << s[4 * size_t(i) + 1] << " " << s[4 * size_t(i) + 2] << " " << s[4 * size_t(i) + 3]
           << "\n";
@@ -257,7 +257,7 @@ void write_piece(TextFile &out, const Model &model, const std::vector<int> &bodi
   out << "        <DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"4\" " << stress_component_names(model)
       << " format=\"ascii\">\n";
   for (int b : bodies) {
-    const std::vector<double> &s = model.body[b].stress;
+    const std::vector<double> &s = model.cell_stresses(b);
     for (int c = 0; c < model.body[b].mesh.n_cells(); ++c)
       out << s[4 * size_t(c)] << " " << s[4 * size_t(c) + 1] << " " << s[4 * size_t(c) + 2] << " " << s[4 * size_t(c) + 3]
           << "\n";
@@ -265,7 +265,7 @@ void write_piece(TextFile &out, const Model &model, const std::vector<int> &bodi
   close_array(out);
   open_array(out, "Float64", "von_mises", 1);
   for (int b : bodies)
-    for (int c = 0; c < model.body[b].mesh.n_cells(); ++c) out << von_mises(&model.body[b].stress[4 * size_t(c)]) << "\n";
+    for (int c = 0; c < model.body[b].mesh.n_cells(); ++c) out << von_mises(&model.cell_stresses(b)[4 * size_t(c)]) << "\n";
   close_array(out);
   open_array(out, "Int32", "body", 1);
   for (int b : bodies)
@@ -333,6 +333,9 @@ void write_vtu(const Model &model, const std::string &path) {
   for (int b = 0; b < model.n_bodies(); ++b)
     if (model.body[b].has_mesh && !model.body[b].host) bodies.push_back(b);  // a host body has no cells to draw
   if (bodies.empty()) fail(MC_ERROR_STATE, "no mesh body to write: host bodies (mc_set_host_body) have no cells");
+  // The stresses first (computed now if no getter asked for them yet): an error there (an
+  // overflow) is reported before any file is written.
+  for (int b : bodies) model.cell_stresses(b);
   if (!ends_with(path, ".pvd")) {
     write_unstructured_grid(path, model, bodies);
     return;

@@ -45,7 +45,7 @@ void keep_line(void *work, mc_log_level level, const char *line) {
 void add_body_infos(Infos &to, const Infos &from) {
   to.dofs += from.dofs, to.factor_nnz += from.factor_nnz, to.factorizations += from.factorizations;
   to.t_assembly += from.t_assembly, to.t_analysis += from.t_analysis, to.t_factor += from.t_factor;
-  to.t_solve += from.t_solve, to.t_contact += from.t_contact, to.t_estimate += from.t_estimate;
+  to.t_solve += from.t_solve, to.t_contact += from.t_contact;
 }
 
 }  // namespace
@@ -116,14 +116,14 @@ bool Model::in_contact(int b) const {
   return false;
 }
 
-void Model::for_each_body(const std::function<void(int, BodyWork &)> &task) {
+void Model::run_bodies(int threads, const std::function<void(int, BodyWork &)> &task, Infos &add_to) const {
   const int n = n_bodies();
   std::vector<BodyWork> work(n);
   std::vector<std::exception_ptr> error(n);
   // With two body threads, each one's BLAS calls get its share of the cores (blas_threads.hpp):
   // one thread with OpenBLAS's pthread build (the count solve() lowered for the whole solve),
   // half the cores with the OpenMP build (each body thread's own setting, here).
-  const bool parallel = threads_ > 1;
+  const bool parallel = threads > 1;
   const int blas_per_body = parallel ? std::max(1, available_cores() / 2) : 0;
   auto run = [&](int b) {
     try {
@@ -133,7 +133,7 @@ void Model::for_each_body(const std::function<void(int, BodyWork &)> &task) {
       error[b] = std::current_exception();
     }
   };
-  if (threads_ > 1) {
+  if (threads > 1) {
     // The odd bodies (body 2, 4, ...) on a thread of their own, the even ones on the calling
     // thread. The host's log callback is only ever called from the calling thread: each body
     // keeps its messages, sent on below.
@@ -163,7 +163,7 @@ void Model::for_each_body(const std::function<void(int, BodyWork &)> &task) {
   // What a serial solve would have shown: body 1's messages, its error if any, then body 2's...
   for (int b = 0; b < n; ++b) {
     for (const auto &line : work[b].lines) progress(line.first, "%s", line.second.c_str());
-    add_body_infos(infos, work[b].infos);
+    add_body_infos(add_to, work[b].infos);
     if (error[b]) std::rethrow_exception(error[b]);
   }
 }
@@ -343,6 +343,7 @@ void Model::solve() {
   const double start = now();
   infos = Infos{};
   solved = false;
+  derived_.reset(body.size());  // the previous solve's stresses and estimate
   bool any_mesh = false;
   for (const Body &b : body) any_mesh = any_mesh || b.has_mesh;
   if (!any_mesh) fail(MC_ERROR_STATE, "no mesh: call mc_set_mesh first");
@@ -458,7 +459,7 @@ void Model::solve() {
     }
     energy[b] = 0.5 * dot(elastic, ku);
     body_.contact_load = contact_force;
-    if (!body_.host) cell_and_nodal_stresses(b, sys.laws);
+    if (options.eager_results && !body_.host) compute_stresses(b);  // else when asked for
   };
   // Friction: the solve is a step from the last converged state (a rebuilt structure starts from
   // the unloaded one), in MC_OPTION_LOAD_STEPS increments of the loads and prescribed values;
@@ -511,15 +512,10 @@ void Model::solve() {
 
   contact_results(lambda);
   if (contact_) friction_results(lambda, solve_start);
-  progress(MC_LOG_PHASE, "recovery: displacements, reactions, stresses and contact results, %.3g s", now() - t_recovery);
-  if (options.error_estimate) {
-    const double t_estimate = now();
-    estimate_error();
-    progress(MC_LOG_PHASE, "error estimate: %.3g (relative, energy norm), %.3g s", infos.error_estimate,
-             now() - t_estimate);
-  } else {
-    estimate_error();  // clears the previous solve's
-  }
+  progress(MC_LOG_PHASE, "recovery: displacements, reactions%s and contact results, %.3g s",
+           options.eager_results ? ", stresses" : "", now() - t_recovery);
+  // The error estimate now (MC_OPTION_EAGER_RESULTS), or when a getter first asks for it.
+  if (options.eager_results) ensure_estimate();
   infos.t_total = now() - start;
   progress(MC_LOG_PHASE, "solve: done, %ld unknowns, %ld active of %ld contact nodes, %.3g s", infos.dofs, infos.active,
            infos.contact_rows, infos.t_total);

@@ -47,10 +47,9 @@ struct Body {
   std::vector<double> nodal_force;      // per DOF
   std::vector<EdgeLoad> edge_loads;
   double body_force[2] = {0, 0};
-  // results
-  std::vector<double> u, reaction, stress, nodal_stress;  // u, reaction: per DOF
+  // results (the stresses and the error estimate: Model::cell_stresses and the others, on demand)
+  std::vector<double> u, reaction;      // per DOF
   std::vector<double> contact_load;     // per DOF: the contact forces on the body (K u = f + contact_load)
-  std::vector<double> error_indicator;  // per cell, relative (mc_get_error_indicator); empty: not estimated
 };
 
 // A contact pair (mc_add_contact_pair; a two-body model's pair 1 is (0, 1)): the non-mortar
@@ -154,6 +153,7 @@ struct Options {
   int multiplier = MC_MULTIPLIER_LINEAR;     // MC_OPTION_MULTIPLIER
   int load_steps = 1;                        // MC_OPTION_LOAD_STEPS
   double friction_ct = 0;                    // MC_OPTION_FRICTION_CT (0: scaled automatically)
+  bool eager_results = false;                // MC_OPTION_EAGER_RESULTS
 };
 
 struct Infos {
@@ -163,8 +163,6 @@ struct Infos {
   double gap_residual = 0;  // MC_INFO_GAP_RESIDUAL: complementarity of the returned displacements' gaps
   int threads = 1;  // threads the last solve ran the bodies' work on (1 or 2)
   int interface_solver = 0;  // MC_INFO_INTERFACE_SOLVER: MC_INTERFACE_CONDENSED or _SPARSE; 0 without contact
-  double error_estimate = 0;  // MC_INFO_ERROR_ESTIMATE (error_estimate.cpp)
-  double t_estimate = 0;      // its time (part of MC_INFO_TIME_TOTAL)
   long stick = 0, slip = 0;   // MC_INFO_STICK_NODES, MC_INFO_SLIP_NODES (rows of pairs with friction)
   double friction_complementarity = 0;  // MC_INFO_FRICTION_COMPLEMENTARITY
 };
@@ -176,6 +174,24 @@ struct History {
   bool valid = false;
   std::vector<std::vector<double>> u, f, prescribed;
   std::vector<double> slip_total;
+};
+
+// What the solve's displacements give on demand (results/results_on_demand.cpp): the stresses
+// of the cells and at the nodes, and the error estimate, each computed when a getter first asks
+// for it (or by the solve itself with MC_OPTION_EAGER_RESULTS), at most once per solve, and
+// forgotten by the next solve. The model holds it as a mutable cache: the getters stay const.
+struct DerivedResults {
+  std::vector<char> has_stresses;                          // per body
+  std::vector<std::vector<double>> stress, nodal_stress;   // per body: 4 per cell, 4 per node
+  std::vector<double> stress_seconds;                      // per body
+  bool has_estimate = false;
+  double error_estimate = 0, estimate_seconds = 0;         // MC_INFO_ERROR_ESTIMATE, its time
+  std::vector<std::vector<double>> error_indicator;        // per body, per cell; empty: not estimated
+  void reset(size_t bodies) {
+    *this = DerivedResults{};
+    has_stresses.assign(bodies, 0), stress.resize(bodies), nodal_stress.resize(bodies);
+    stress_seconds.assign(bodies, 0.0), error_indicator.resize(bodies);
+  }
 };
 
 // The smaller body's unknowns (2 x its nodes) from which MC_OPTION_THREADS = 0 (automatic)
@@ -261,11 +277,24 @@ public:
   void reset_history();
   bool has_friction() const;
 
+  // The results computed on demand (DerivedResults), for a solved model (the caller checks
+  // `solved`): the first call computes, later ones read the cache. A failure (an overflow, out of
+  // memory) throws and caches nothing: the model and its other results stay as they were.
+  const std::vector<double> &cell_stresses(int b) const;   // 4 per cell (mc_get_stress)
+  const std::vector<double> &nodal_stresses(int b) const;  // 4 per node (mc_get_nodal_stress)
+  // Per cell, relative (mc_get_error_indicator); empty for a body not estimated (a host body,
+  // or MC_OPTION_ERROR_ESTIMATE 0).
+  const std::vector<double> &error_indicators(int b) const;
+  double error_estimate() const;  // MC_INFO_ERROR_ESTIMATE; 0 with MC_OPTION_ERROR_ESTIMATE 0
+  double results_seconds() const;  // MC_INFO_TIME_RESULTS: what computing them has cost so far
+
 private:
   int body_threads() const;
   // Runs task(b, work) for every body: one after the other, or with two threads the odd ones on
   // a std::thread joined before returning. Exceptions are rethrown here, the first body's first.
-  void for_each_body(const std::function<void(int, BodyWork &)> &task);
+  void for_each_body(const std::function<void(int, BodyWork &)> &task) { run_bodies(threads_, task, infos); }
+  // The same on `threads` threads (1 or 2), the bodies' infos added to `add_to`.
+  void run_bodies(int threads, const std::function<void(int, BodyWork &)> &task, Infos &add_to) const;
   std::unique_ptr<BodySystem> assemble_body(int b, BodyWork &work) const;
   void reduce_body(int b, BodyWork &work);
   // needed: the condensed path will use it (refused if the interface is too long for it); else
@@ -323,9 +352,13 @@ private:
   void interface_block(int b, std::vector<double> &s_b, BodyWork &work);
   void build_structure(const std::function<void(int, BodyWork &)> &then);
   void solve_loads(int b, BodyWork &work, LoadSolve &out) const;
-  void cell_and_nodal_stresses(int b, const std::vector<PlaneLaw> &laws);
-  // MC_INFO_ERROR_ESTIMATE and the cells' indicators, after the recovery (error_estimate.cpp).
-  void estimate_error();
+  // Body b's stresses into the cache (results_on_demand.cpp); ensure_stresses also checks them
+  // for overflow first (the solve's eager ones are checked by mc_solve's own check).
+  void compute_stresses(int b) const;
+  void ensure_stresses(int b) const;
+  // MC_INFO_ERROR_ESTIMATE and the cells' indicators into the cache (error_estimate.cpp), once.
+  void ensure_estimate() const;
+  void estimate_error(double &estimate, std::vector<std::vector<double>> &indicators) const;
   std::vector<double> load_vector(int b) const;
   void effective_supports();
   // The supports a solve uses: the host's (mc_fix) and, in an axisymmetric model, u_r = 0 at
@@ -337,6 +370,7 @@ private:
   std::vector<std::unique_ptr<BodySystem>> system_;
   std::unique_ptr<ContactSystem> contact_;
   History history_;
+  mutable DerivedResults derived_;
 };
 
 }  // namespace mc

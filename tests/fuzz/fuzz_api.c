@@ -254,7 +254,7 @@ static void *exact(size_t count, size_t size) {
 static void query_all(harness *h) {
   mc_model *m = h->m;
   int body, info;
-  for (info = 0; info <= 32; ++info) { /* 0 and 32 (past MC_INFO_FRICTION_COMPLEMENTARITY = 31): bad infos */
+  for (info = 0; info <= 33; ++info) { /* 0 and 33 (past MC_INFO_TIME_RESULTS = 32): bad infos */
     int64_t iv;
     double rv;
     CALL(mc_get_info_int(m, info, &iv));
@@ -718,7 +718,8 @@ static void op_contact_raw(harness *h, stream *s) {
 
 static void op_option_int(harness *h, stream *s) {
   mc_model *m = h->m;
-  int option = read_u8(s) % 16; /* 0 .. 15: every option (MC_OPTION_FRICTION_CT = 15) and bad ones (0, 5) */
+  int option = read_u8(s) % 16; /* 1 .. 15: every option (MC_OPTION_FRICTION_CT = 15) and a bad one (5); 0: MC_OPTION_EAGER_RESULTS (16) */
+  if (option == 0) option = MC_OPTION_EAGER_RESULTS;
   uint8_t kind = read_u8(s);
   /* -1 .. 4: every value of the enum options (MC_INTERFACE_AUTO .. _SPARSE = 0 .. 2) and bad ones */
   int64_t value = kind < 200 ? (int64_t)(kind % 6) - 1 : (int64_t)read_bytes(s, 8);
@@ -1132,7 +1133,8 @@ static void run(harness *h, stream *s, size_t size) {
       case OP_CONTACT_RAW: op_contact_raw(h, s); break;
       case OP_OPTION_INT: op_option_int(h, s); break;
       case OP_OPTION_REAL: {
-        int option = read_u8(s) % 16; /* 0 .. 15: every option (MC_OPTION_FRICTION_CT = 15) and bad ones (0, 5) */
+        int option = read_u8(s) % 16; /* 1 .. 15: every option (MC_OPTION_FRICTION_CT = 15) and a bad one (5); 0: MC_OPTION_EAGER_RESULTS (16) */
+        if (option == 0) option = MC_OPTION_EAGER_RESULTS;
         CALL(mc_set_option_real(m, option, read_real(s)));
         break;
       }
