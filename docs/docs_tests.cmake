@@ -1,7 +1,7 @@
 # Tests that keep the user documentation honest, included from examples/CMakeLists.txt (which
 # builds the C tutorial and registers tutorial_c) when MC_BUILD_TESTS is on. Label "docs".
 #   tutorial_python      examples/python/tutorial_hertz.py runs and passes its checks
-#   docs_tutorial_sync   the code blocks of docs/tutorial_{c,python,axisymmetric,assembly}.md are verbatim
+#   docs_tutorial_sync   the code blocks of docs/tutorial_{c,python,axisymmetric,assembly,friction}.md are verbatim
 #                        excerpts of the programs, and their "Step N" headings match the programs'
 #                        steps; the .geo, .json and Python blocks of docs/tutorial_quadratic.md are
 #                        excerpts of examples/runner/hertz_quadratic/, the .json blocks of
@@ -47,6 +47,7 @@ if(MC_DOCS_PYTHON)
             ${_mc_docs}/tutorial_python.md ${PROJECT_SOURCE_DIR}/examples/python/tutorial_hertz.py
             ${_mc_docs}/tutorial_axisymmetric.md ${PROJECT_SOURCE_DIR}/examples/tutorial_shrink_fit.c
             ${_mc_docs}/tutorial_assembly.md ${PROJECT_SOURCE_DIR}/examples/tutorial_assembly.c
+            ${_mc_docs}/tutorial_friction.md ${PROJECT_SOURCE_DIR}/examples/tutorial_push_out.c
             ${_mc_docs}/tutorial_quadratic.md ${PROJECT_SOURCE_DIR}/examples/runner/hertz_quadratic/hertz_quadratic.geo
             ${_mc_docs}/tutorial_quadratic.md ${PROJECT_SOURCE_DIR}/examples/runner/hertz_quadratic/hertz_quadratic.json
             ${_mc_docs}/tutorial_quadratic.md ${PROJECT_SOURCE_DIR}/examples/runner/hertz_quadratic/read_results.py
@@ -66,7 +67,7 @@ if(MC_DOCS_PYTHON)
     COMMAND ${MC_DOCS_PYTHON} ${_mc_check_docs} links ${_mc_docs}/README.md ${_mc_docs}/theory.md
             ${_mc_docs}/api.md ${_mc_docs}/tutorial_c.md ${_mc_docs}/tutorial_python.md
             ${_mc_docs}/tutorial_axisymmetric.md ${_mc_docs}/tutorial_quadratic.md ${_mc_docs}/tutorial_legacy.md
-            ${_mc_docs}/tutorial_adaptive.md ${_mc_docs}/tutorial_assembly.md
+            ${_mc_docs}/tutorial_adaptive.md ${_mc_docs}/tutorial_assembly.md ${_mc_docs}/tutorial_friction.md
             ${_mc_docs}/scene_format.md)
   set_tests_properties(docs_tutorial_sync docs_api docs_theory_names docs_links PROPERTIES LABELS "docs")
 else()

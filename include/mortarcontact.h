@@ -14,8 +14,9 @@
  * - Threading: a model is used by one thread at a time; distinct models are
  *   fully independent (the library keeps no global mutable state), so two
  *   threads may solve two models at once. mc_solve may run body 2's work on
- *   one thread of its own, joined before it returns (MC_OPTION_THREADS); no
- *   other call starts threads.
+ *   one thread of its own, joined before it returns (MC_OPTION_THREADS), and so
+ *   may the call that computes the error estimate on demand (results on
+ *   demand, MC_OPTION_EAGER_RESULTS); no other call starts threads.
  * - Ownership: every input array is copied before the call returns. Outputs go
  *   into caller-allocated arrays whose required size each comment states; the
  *   library never writes beyond that size.
@@ -100,11 +101,43 @@ enum {
   MC_OPTION_THREADS = 10,       /* int: threads for the two bodies' work; default 0 (see below) */
   MC_OPTION_INTERFACE_SOLVER = 11, /* int: MC_INTERFACE_*; how the contact problem is solved; default
                                      MC_INTERFACE_AUTO (see below) */
-  MC_OPTION_ERROR_ESTIMATE = 12, /* int: 1 (default) every solve estimates its error (MC_INFO_ERROR_ESTIMATE,
-                                    mc_get_error_indicator); 0 skips it */
-  MC_OPTION_MULTIPLIER = 13      /* int: MC_MULTIPLIER_*; the contact multipliers of a body 1 with
+  MC_OPTION_ERROR_ESTIMATE = 12, /* int: 1 (default) a solve's error is estimated (MC_INFO_ERROR_ESTIMATE,
+                                    mc_get_error_indicator; when first asked for, see
+                                    MC_OPTION_EAGER_RESULTS); 0: never (the info reads 0, the
+                                    indicators are refused) */
+  MC_OPTION_MULTIPLIER = 13,     /* int: MC_MULTIPLIER_*; the contact multipliers of a body 1 with
                                     quadratic cells (MC_METHOD_MORTAR); default MC_MULTIPLIER_LINEAR */
+  MC_OPTION_LOAD_STEPS = 14,     /* int >= 1: a model with friction goes from the last converged state
+                                    to the loads and prescribed values of this solve in n equal
+                                    increments; default 1. No effect without friction. */
+  MC_OPTION_FRICTION_CT = 15,    /* real >= 0: the tangential complementarity parameter c_t of the
+                                    stick/slip update (it changes the iterates, never the converged
+                                    answer); 0 (default) chooses one scaled by the interface operator */
+  MC_OPTION_EAGER_RESULTS = 16   /* int: 0 (default) the stresses, nodal stresses and error estimate
+                                    are computed by the first call that asks for them after a solve
+                                    (see "Results on demand" below); 1: every mc_solve computes them */
 };
+
+/* Results on demand (MC_OPTION_EAGER_RESULTS = 0, the default). mc_solve computes the
+   displacements, reactions, contact results and the infos; the cells' stresses, the nodal
+   stresses and the error estimate are computed by the first call after it that needs them:
+   mc_get_stress and mc_get_nodal_stress (that body's, both at once), mc_get_error_indicator and
+   mc_get_info_real(MC_INFO_ERROR_ESTIMATE) (both bodies' estimate at once), mc_write_vtu (every
+   written body's stresses). Later calls read what was computed, until the next mc_solve or any
+   change of the model (which needs a new solve anyway). The numbers are those of
+   MC_OPTION_EAGER_RESULTS = 1 bit for bit; only when they are computed differs: a re-solve
+   after a load change then pays its triangular solves, not results nobody reads. Such a call
+   takes a const model and leaves it const to the caller (what it computes is kept inside); as
+   every call, it must not run on one model from two threads at once (distinct models stay
+   independent). The error estimate may run the two bodies' share on two threads as mc_solve
+   does (MC_OPTION_THREADS), joined before the call returns. An error while computing (stresses
+   beyond double range: MC_ERROR_ARGUMENT, as mc_solve reports it with eager results; out of
+   memory) is that call's status and message; nothing is kept, the model and its other results
+   stay usable, and the next call tries again. The log callback gets the phase messages of what
+   such a call computes ("stresses: body B, ..., T s", "error estimate: E ..., T s"), after
+   "solve: done". Time: MC_INFO_TIME_TOTAL is mc_solve's own; MC_INFO_TIME_RESULTS adds up what
+   computing these results has cost since the solve, in mc_solve (eager) or in the calls that
+   asked for them. */
 
 /* Values of MC_OPTION_MULTIPLIER: the space of the contact pressure when body 1 has quadratic
    cells (T6, Q8, Q9). Bodies of linear cells always use the paper's space (theory §2b). */
@@ -142,12 +175,14 @@ enum { MC_INTERFACE_AUTO = 0, MC_INTERFACE_CONDENSED = 1, MC_INTERFACE_SPARSE = 
    "mc-body2") for body 2's share of a phase while the calling thread does body 1's, and joins
    it before that phase ends. The phases: first, everything a body needs before the interface
    problem (assembly with the rigid modes, ordering, factorization, the body's block of the
-   interface operator, its load solve); then the recovery (displacements, reactions, stresses).
-   A re-solve runs two: the load solves, and the recovery. A solve whose recovered gaps are
-   above round-off (MC_INFO_GAP_RESIDUAL > 1e-13) is refined: each refinement step (at most 3)
-   adds two phases (the residuals' forward solves, the corrections' backward solves), and the
-   recovery of reactions and stresses runs once more. No thread outlives
-   mc_solve, no other call starts one, and if none can be started the solve runs serially. The
+   interface operator, its load solve); then the recovery (displacements, reactions, and the
+   stresses with MC_OPTION_EAGER_RESULTS). A re-solve runs two: the load solves, and the
+   recovery. A solve whose recovered gaps are above round-off (MC_INFO_GAP_RESIDUAL > 1e-13) is
+   refined: each refinement step (at most 3) adds two phases (the residuals' forward solves, the
+   corrections' backward solves), and the recovery runs once more. The error estimate is one
+   more phase, in mc_solve (eager) or in the call that first asks for it. No thread outlives
+   the call that started it, no other call starts one, and if none can be started the work runs
+   serially. The
    log callback is still called only from the calling thread, with the messages in the serial
    order; an error on body 2's thread is returned as usual (body 1's first, as serially).
    BLAS: while both bodies run, each one's BLAS calls use its share of the cores. With
@@ -214,12 +249,15 @@ enum {
   MC_INFO_FACTORIZATIONS = 6,      /* int: numeric factorizations done by the last solve (0 on reuse) */
   MC_INFO_INTERFACE_SOLVER = 7,    /* int: the contact solve that ran: MC_INTERFACE_CONDENSED or
                                       MC_INTERFACE_SPARSE; 0 without contact */
+  MC_INFO_STICK_NODES = 8,         /* int: constraint rows of pairs with friction that stick */
+  MC_INFO_SLIP_NODES = 9,          /* int: constraint rows of pairs with friction that slip */
   MC_INFO_TIME_ASSEMBLY = 20,      /* real, seconds */
   MC_INFO_TIME_ANALYSIS = 21,      /* real, seconds: ordering and symbolic factorization */
   MC_INFO_TIME_FACTORIZATION = 22, /* real, seconds: numeric factorization */
   MC_INFO_TIME_SOLVE = 23,         /* real, seconds: triangular solves */
   MC_INFO_TIME_CONTACT = 24,       /* real, seconds: geometry, mortar operators, interface operator, QP */
-  MC_INFO_TIME_TOTAL = 25,         /* real, seconds: the whole mc_solve */
+  MC_INFO_TIME_TOTAL = 25,         /* real, seconds: the whole mc_solve (results computed later on
+                                      demand are not in it: MC_INFO_TIME_RESULTS) */
   MC_INFO_STRAIN_ENERGY = 26,      /* real: 1/2 u^T K u over both bodies */
   MC_INFO_COMPLEMENTARITY = 27,    /* real: largest relative violation of lambda>=0, gap>=0, lambda*gap=0 */
   MC_INFO_EQUILIBRIUM = 28,        /* real: ||K u + B^T lambda - f|| / ||f - K u_prescribed, B^T lambda||
@@ -232,14 +270,23 @@ enum {
                                       on the full problem's residuals) and reports the value after;
                                       MC_INFO_COMPLEMENTARITY, the condensed problem's, cannot show
                                       what the condensation lost (docs/robustness.md) */
-  MC_INFO_ERROR_ESTIMATE = 30      /* real: the estimated relative error of the solution in the energy norm
+  MC_INFO_ERROR_ESTIMATE = 30,     /* real: the estimated relative error of the solution in the energy norm
                                       of both bodies, eta / sqrt(||u_h||^2 + eta^2) with ||u_h||^2 =
                                       u^T K u (twice MC_INFO_STRAIN_ENERGY): Zienkiewicz-Zhu recovery in
                                       each cell plus, on body 1's contact edges, the misfit between the
                                       recovered normal stress and the contact pressure and the
                                       complementarity of pressure and gap (docs/theory.md, "Error
                                       estimate"); 0 when MC_OPTION_ERROR_ESTIMATE is 0. Host bodies
-                                      (no cells) add nothing to it. */
+                                      (no cells) add nothing to it. Computed by the first call that
+                                      reads it (or by mc_solve, MC_OPTION_EAGER_RESULTS). */
+  MC_INFO_FRICTION_COMPLEMENTARITY = 31, /* real: largest relative violation of the friction conditions
+                                      of the last solve's last step: |lambda_t| <= bound, slip 0 where
+                                      sticking, lambda_t = bound with the slip's sign where slipping;
+                                      0 without friction */
+  MC_INFO_TIME_RESULTS = 32        /* real, seconds: computing the last solve's stresses, nodal stresses and
+                                      error estimate so far: inside mc_solve with MC_OPTION_EAGER_RESULTS
+                                      (then part of MC_INFO_TIME_TOTAL), otherwise in the calls that asked
+                                      for them (not part of it); 0 if none was asked for yet */
 };
 
 /* ---- lifecycle, errors, version ---------------------------------------- */
@@ -384,9 +431,32 @@ typedef enum mc_contact_field {
   MC_CONTACT_FORCE = 2,       /* nodal contact force, as mc_get_contact_force */
   MC_CONTACT_GAP = 3,         /* gap after the solve (+infinity where the mortar side is not seen) */
   MC_CONTACT_INITIAL_GAP = 4, /* initial gap, offsets included */
-  MC_CONTACT_NORMAL = 5       /* unit outward normal of the non-mortar body, 2 per position */
+  MC_CONTACT_NORMAL = 5,      /* unit outward normal of the non-mortar body, 2 per position */
+  MC_CONTACT_SHEAR = 6,       /* tangential traction on the non-mortar side along t = (-n_y, n_x):
+                                 the friction the mortar body exerts, opposite to the slip */
+  MC_CONTACT_SLIP = 7,        /* tangential slip of the last solve, (u1 - u2) . t from the last
+                                 converged state (all load steps of the solve) */
+  MC_CONTACT_SLIP_TOTAL = 8,  /* accumulated |slip| since the unloaded state (mc_reset_history) */
+  MC_CONTACT_STATE = 9        /* MC_STATE_OPEN, _STICK or _SLIP as a double; frictionless contact slips */
 } mc_contact_field;
+/* Values of MC_CONTACT_STATE. */
+enum { MC_STATE_OPEN = 0, MC_STATE_STICK = 1, MC_STATE_SLIP = 2 };
 MC_API mc_status mc_get_pair_contact(const mc_model *m, int pair, int field, double *out);
+
+/* ---- friction (docs/api.md, "Friction") --------------------------------------------------
+   Per contact pair: MC_FRICTION_NONE (default), MC_FRICTION_TRESCA (value: the slip bound, a
+   shear traction >= 0) or MC_FRICTION_COULOMB (value: the friction coefficient mu >= 0). The
+   stick/slip/open states are found exactly (a primal-dual active-set iteration; the converged
+   step satisfies the discrete conditions to round-off, MC_INFO_FRICTION_COMPLEMENTARITY).
+   Friction remembers: each mc_solve of a model with friction is a step from the last converged
+   state (the first: the unloaded state), in MC_OPTION_LOAD_STEPS increments; mc_reset_history
+   returns to the unloaded state. A change of the model's structure (meshes, supports' set,
+   contact surfaces, method) also does. */
+enum { MC_FRICTION_NONE = 0, MC_FRICTION_TRESCA = 1, MC_FRICTION_COULOMB = 2 };
+MC_API mc_status mc_set_friction(mc_model *m, int pair, int law, double value);
+/* Forgets the converged state: the next solve starts from the unloaded state (u = 0, loads 0,
+   accumulated slip 0). */
+MC_API mc_status mc_reset_history(mc_model *m);
 
 /* ---- host bodies: a legacy program's own matrices (docs/tutorial_legacy.md) ---------------
 
@@ -470,7 +540,8 @@ typedef enum mc_log_level {
   MC_LOG_PHASE = 1,     /* a phase started or ended: assembly, factorization, contact, ... */
   MC_LOG_ITERATION = 2  /* one active-set iteration: its number, active nodes, residuals */
 } mc_log_level;
-/* Called from the thread that calls mc_solve, with a NUL-terminated one-line message that is
+/* Called from the thread that calls mc_solve (and from a call that computes results on demand,
+   for their messages: "Results on demand" above), with a NUL-terminated one-line message that is
    valid only during the call. The callback must not call back into the same model. Phase
    messages after "solve: start, ..." ("assembly: body 1, ...", "factorization: ...",
    "interface operator: ...", "active-set solve: ...", "recovery: ...", "solve: done, ...")
@@ -552,7 +623,9 @@ MC_API mc_status mc_get_contact_normal(const mc_model *m, double *n);
    included, is a point with its own values.
    MC_ERROR_STATE before a successful solve; MC_ERROR_ARGUMENT if the file cannot be written.
    Array names: point data "displacement" (3 components, z = 0), "nodal_stress" (4 components,
-   as "stress"), "pressure", "gap", "initial_gap", "active", "contact"; cell data "stress" (4
+   as "stress"), "pressure", "gap", "initial_gap", "active", "contact", and the fields of
+   friction "shear", "slip", "slip_total" and "state" (MC_CONTACT_SHEAR, ...; state an integer,
+   MC_STATE_*); cell data "stress" (4
    components), "von_mises" (with sigma_zz), "body". A corner node, a contact position in two
    faces, gets its total force over its total tributary measure as pressure, and the smaller of
    its gaps. A body-1 contact-surface node that sees no mortar surface has

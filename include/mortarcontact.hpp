@@ -78,7 +78,10 @@ enum class Option : int {
   threads = MC_OPTION_THREADS,
   interface_solver = MC_OPTION_INTERFACE_SOLVER,
   error_estimate = MC_OPTION_ERROR_ESTIMATE,
-  multiplier = MC_OPTION_MULTIPLIER
+  multiplier = MC_OPTION_MULTIPLIER,
+  load_steps = MC_OPTION_LOAD_STEPS,
+  friction_ct = MC_OPTION_FRICTION_CT,
+  eager_results = MC_OPTION_EAGER_RESULTS
 };
 
 /// Values of Option::method.
@@ -119,6 +122,8 @@ enum class Info : int {
   contact_nodes = MC_INFO_CONTACT_NODES,
   factorizations = MC_INFO_FACTORIZATIONS,
   interface_solver = MC_INFO_INTERFACE_SOLVER,
+  stick_nodes = MC_INFO_STICK_NODES,
+  slip_nodes = MC_INFO_SLIP_NODES,
   time_assembly = MC_INFO_TIME_ASSEMBLY,
   time_analysis = MC_INFO_TIME_ANALYSIS,
   time_factorization = MC_INFO_TIME_FACTORIZATION,
@@ -129,7 +134,9 @@ enum class Info : int {
   complementarity = MC_INFO_COMPLEMENTARITY,
   equilibrium = MC_INFO_EQUILIBRIUM,
   gap_residual = MC_INFO_GAP_RESIDUAL,
-  error_estimate = MC_INFO_ERROR_ESTIMATE
+  error_estimate = MC_INFO_ERROR_ESTIMATE,
+  friction_complementarity = MC_INFO_FRICTION_COMPLEMENTARITY,
+  time_results = MC_INFO_TIME_RESULTS
 };
 
 enum class LogLevel : int { phase = MC_LOG_PHASE, iteration = MC_LOG_ITERATION };
@@ -141,7 +148,21 @@ enum class ContactField : int {
   force = MC_CONTACT_FORCE,
   gap = MC_CONTACT_GAP,
   initial_gap = MC_CONTACT_INITIAL_GAP,
-  normal = MC_CONTACT_NORMAL
+  normal = MC_CONTACT_NORMAL,
+  shear = MC_CONTACT_SHEAR,              ///< tangential traction along t = (-n_y, n_x)
+  slip = MC_CONTACT_SLIP,                ///< slip of the last solve
+  slip_total = MC_CONTACT_SLIP_TOTAL,    ///< accumulated |slip| since the unloaded state
+  state = MC_CONTACT_STATE               ///< a ContactState as a double
+};
+
+/// Values of ContactField::state (read as doubles: ContactState(int(value))).
+enum class ContactState : int { open = MC_STATE_OPEN, stick = MC_STATE_STICK, slip = MC_STATE_SLIP };
+
+/// The law argument of Model::set_friction.
+enum class Friction : int {
+  none = MC_FRICTION_NONE,        ///< frictionless (default); value 0
+  tresca = MC_FRICTION_TRESCA,    ///< value: the slip bound, a shear traction >= 0
+  coulomb = MC_FRICTION_COULOMB   ///< value: the friction coefficient mu >= 0
 };
 
 /// The storage argument of Model::add_stiffness.
@@ -396,6 +417,18 @@ class Model {
     set_pair_gap_offset(pair, detail::paired_count(nodes, 1, offset, 1, "set_pair_gap_offset"),
                         detail::data_or_empty(nodes), detail::data_or_empty(offset));
   }
+
+  // ---- friction ----
+
+  /// The friction law of a contact pair (1 for the two-body model's pair): Friction::tresca
+  /// (value: the slip bound) or Friction::coulomb (value: mu); Friction::none (value 0) removes it.
+  void set_friction(int pair, Friction law, double value = 0) {
+    check(::mc_set_friction(get(), pair, static_cast<int>(law), value));
+  }
+  /// The raw law number (checked by the library: an unknown law is Status::error_argument).
+  void set_friction(int pair, int law, double value) { check(::mc_set_friction(get(), pair, law, value)); }
+  /// Forgets the converged state: the next solve starts from the unloaded state.
+  void reset_history() { check(::mc_reset_history(get())); }
 
   // ---- host bodies: a legacy program's own matrices ----
 

@@ -33,3 +33,8 @@ set_tests_properties(test_interface_solvers PROPERTIES TIMEOUT 600)
 # Assemblies: bodies 1..N and contact pairs (issue 32): patch tests of a stack and a corner,
 # invariance under renumbering and splitting, conservation, bad input (tests/test_contact_pairs.c).
 mc_add_check_test(test_contact_pairs test_contact_pairs.c host_assembly.c)
+
+# Friction (issue 33): frictional patch tests (stick and slip, every method), mu = 0 against the
+# frictionless solve, a floating body in full slip, load steps and history, bad input
+# (tests/test_friction.c).
+mc_add_check_test(test_friction test_friction.c host_assembly.c)

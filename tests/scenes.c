@@ -466,3 +466,50 @@ mc_model *sc_axisymmetric_shrink_fit(const sc_mesh *shaft, const sc_mesh *hub, d
   }
   return m;
 }
+
+/* ---- full rings (scenes.h) ---- */
+
+mc_int sc_ring_node(const sc_polar_ring *g, int i, int j) { return (mc_int)(j * g->nt + (i % g->nt)); }
+
+int sc_polar_ring_build(sc_polar_ring *g, int nt, int nr, int npc, double r0, double r1) {
+  if (nt % 4 != 0 || nt <= 0 || nr <= 0 || (npc != 3 && npc != 4)) return 1;
+  g->nt = nt, g->nr = nr, g->npc = npc, g->r0 = r0, g->r1 = r1;
+  g->n_nodes = nt * (nr + 1);
+  g->n_cells = npc == 4 ? nt * nr : 2 * nt * nr;
+  g->xy = malloc(sizeof(double) * 2 * (size_t)g->n_nodes);
+  g->cells = malloc(sizeof(mc_int) * (size_t)npc * (size_t)g->n_cells);
+  static const double axis_cos[4] = {1, 0, -1, 0}, axis_sin[4] = {0, 1, 0, -1};
+  for (int j = 0; j <= nr; ++j)
+    for (int i = 0; i < nt; ++i) {
+      const double r = j == nr ? r1 : r0 + j * (r1 - r0) / nr, t = 2 * M_PI * i / nt;
+      const int on_axis = i % (nt / 4) == 0; /* exactly on an axis: the symmetric supports need it */
+      g->xy[2 * sc_ring_node(g, i, j)] = r * (on_axis ? axis_cos[i / (nt / 4)] : cos(t));
+      g->xy[2 * sc_ring_node(g, i, j) + 1] = r * (on_axis ? axis_sin[i / (nt / 4)] : sin(t));
+    }
+  /* (i, j) -> (i, j+1) -> (i+1, j+1) -> (i+1, j) runs counter-clockwise: outwards, then around */
+  mc_int *c = g->cells;
+  for (int j = 0; j < nr; ++j)
+    for (int i = 0; i < nt; ++i) {
+      const mc_int a = sc_ring_node(g, i, j), b = sc_ring_node(g, i, j + 1), d = sc_ring_node(g, i + 1, j + 1),
+                   e = sc_ring_node(g, i + 1, j);
+      if (npc == 4) {
+        c[0] = a, c[1] = b, c[2] = d, c[3] = e, c += 4;
+      } else {
+        c[0] = a, c[1] = b, c[2] = d, c[3] = a, c[4] = d, c[5] = e, c += 6;
+      }
+    }
+  return 0;
+}
+
+void sc_polar_ring_free(sc_polar_ring *g) { free(g->xy), free(g->cells); }
+
+/* The circle j as a closed loop of nt edges, oriented as its cells (the body on the left):
+   counter-clockwise for the outer circle, clockwise for the inner one. */
+mc_int *sc_ring_circle_edges(const sc_polar_ring *g, int j) {
+  mc_int *e = malloc(sizeof(mc_int) * 2 * (size_t)g->nt);
+  for (int i = 0; i < g->nt; ++i) {
+    const mc_int a = sc_ring_node(g, i, j), b = sc_ring_node(g, i + 1, j);
+    e[2 * i] = j == 0 ? b : a, e[2 * i + 1] = j == 0 ? a : b;
+  }
+  return e;
+}

@@ -127,4 +127,23 @@ double sc_reldiff(double a, double b, double floor);
 #include <check.h>
 int sc_run_suite(Suite *suite); /* in check_runner.c (linked into every test program) */
 
+/* ---- full rings (structured polar meshes) ---- */
+/* The annulus r0 <= r <= r1: nt cells around (a multiple of 4, so that nodes lie on both axes),
+   nr across, Q1 (npc 4) or P1 (each quad split along one diagonal). Node (i, j) at angle
+   2 pi i / nt and radius r0 + j (r1 - r0) / nr has id j nt + i (i taken modulo nt). */
+typedef struct sc_polar_ring {
+  int nt, nr, npc;
+  double r0, r1;
+  mc_int n_nodes, n_cells;
+  double *xy;
+  mc_int *cells;
+} sc_polar_ring;
+mc_int sc_ring_node(const sc_polar_ring *g, int i, int j);
+/* Returns 0, or nonzero for bad arguments (nt not a positive multiple of 4, npc not 3 or 4). */
+int sc_polar_ring_build(sc_polar_ring *g, int nt, int nr, int npc, double r0, double r1);
+void sc_polar_ring_free(sc_polar_ring *g);
+/* The circle j as a closed loop of nt edges, oriented as its cells (the body on the left):
+   counter-clockwise for the outer circle, clockwise for the inner one (caller frees). */
+mc_int *sc_ring_circle_edges(const sc_polar_ring *g, int j);
+
 #endif /* MC_TESTS_SCENES_H */

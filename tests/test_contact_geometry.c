@@ -47,68 +47,13 @@ static void solve_checked(mc_model *m, int method, int surface, const mc_int n_n
 
 /* ---- full rings (structured polar meshes) ---------------------------------------------------- */
 
-/* The annulus r0 <= r <= r1: nt cells around (a multiple of 4, so that nodes lie on both axes),
-   nr across, Q1 (npc 4) or P1 (each quad split along one diagonal). Node (i, j) at angle
-   2 pi i / nt and radius r0 + j (r1 - r0) / nr has id j nt + i (i taken modulo nt). */
-typedef struct polar_ring {
-  int nt, nr, npc;
-  double r0, r1;
-  mc_int n_nodes, n_cells;
-  double *xy;
-  mc_int *cells;
-} polar_ring;
-
-static mc_int ring_node(const polar_ring *g, int i, int j) { return (mc_int)(j * g->nt + (i % g->nt)); }
-
-static void polar_ring_build(polar_ring *g, int nt, int nr, int npc, double r0, double r1) {
-  ck_assert_int_eq(nt % 4, 0);
-  g->nt = nt, g->nr = nr, g->npc = npc, g->r0 = r0, g->r1 = r1;
-  g->n_nodes = nt * (nr + 1);
-  g->n_cells = npc == 4 ? nt * nr : 2 * nt * nr;
-  g->xy = malloc(sizeof(double) * 2 * (size_t)g->n_nodes);
-  g->cells = malloc(sizeof(mc_int) * (size_t)npc * (size_t)g->n_cells);
-  static const double axis_cos[4] = {1, 0, -1, 0}, axis_sin[4] = {0, 1, 0, -1};
-  for (int j = 0; j <= nr; ++j)
-    for (int i = 0; i < nt; ++i) {
-      const double r = j == nr ? r1 : r0 + j * (r1 - r0) / nr, t = 2 * PI * i / nt;
-      const int on_axis = i % (nt / 4) == 0; /* exactly on an axis: the symmetric supports need it */
-      g->xy[2 * ring_node(g, i, j)] = r * (on_axis ? axis_cos[i / (nt / 4)] : cos(t));
-      g->xy[2 * ring_node(g, i, j) + 1] = r * (on_axis ? axis_sin[i / (nt / 4)] : sin(t));
-    }
-  /* (i, j) -> (i, j+1) -> (i+1, j+1) -> (i+1, j) runs counter-clockwise: outwards, then around */
-  mc_int *c = g->cells;
-  for (int j = 0; j < nr; ++j)
-    for (int i = 0; i < nt; ++i) {
-      const mc_int a = ring_node(g, i, j), b = ring_node(g, i, j + 1), d = ring_node(g, i + 1, j + 1),
-                   e = ring_node(g, i + 1, j);
-      if (npc == 4) {
-        c[0] = a, c[1] = b, c[2] = d, c[3] = e, c += 4;
-      } else {
-        c[0] = a, c[1] = b, c[2] = d, c[3] = a, c[4] = d, c[5] = e, c += 6;
-      }
-    }
-}
-
-static void polar_ring_free(polar_ring *g) { free(g->xy), free(g->cells); }
-
-/* The circle j as a closed loop of nt edges, oriented as its cells (the body on the left):
-   counter-clockwise for the outer circle, clockwise for the inner one. */
-static mc_int *ring_circle_edges(const polar_ring *g, int j) {
-  mc_int *e = malloc(sizeof(mc_int) * 2 * (size_t)g->nt);
-  for (int i = 0; i < g->nt; ++i) {
-    const mc_int a = ring_node(g, i, j), b = ring_node(g, i + 1, j);
-    e[2 * i] = j == 0 ? b : a, e[2 * i + 1] = j == 0 ? a : b;
-  }
-  return e;
-}
-
 /* Symmetric point supports consistent with a radial field: u_y = 0 at the nodes on y = 0,
    u_x = 0 at the nodes on x = 0. They remove the rigid motions and carry no force. */
-static void ring_fix_axes(mc_model *m, int body, const polar_ring *g) {
+static void ring_fix_axes(mc_model *m, int body, const sc_polar_ring *g) {
   mc_int *ids = malloc(sizeof(mc_int) * 2 * (size_t)(g->nr + 1));
-  for (int j = 0; j <= g->nr; ++j) ids[2 * j] = ring_node(g, 0, j), ids[2 * j + 1] = ring_node(g, g->nt / 2, j);
+  for (int j = 0; j <= g->nr; ++j) ids[2 * j] = sc_ring_node(g, 0, j), ids[2 * j + 1] = sc_ring_node(g, g->nt / 2, j);
   OK(mc_fix(m, body, 2 * (g->nr + 1), ids, MC_Y, NULL));
-  for (int j = 0; j <= g->nr; ++j) ids[2 * j] = ring_node(g, g->nt / 4, j), ids[2 * j + 1] = ring_node(g, 3 * g->nt / 4, j);
+  for (int j = 0; j <= g->nr; ++j) ids[2 * j] = sc_ring_node(g, g->nt / 4, j), ids[2 * j + 1] = sc_ring_node(g, 3 * g->nt / 4, j);
   OK(mc_fix(m, body, 2 * (g->nr + 1), ids, MC_X, NULL));
   free(ids);
 }
@@ -145,9 +90,9 @@ static double shrink_fit_worst_of(int method, int surface, double delta_cells, i
   const int nt2 = nt1 + 16; /* multiples of 4: nodes on both axes for the symmetric supports */
   const double h = 2 * PI / nt1; /* the shaft's (the coarser) cell on the circle */
   const double a = 0.5, R = 1, c = 2, delta = delta_cells * h, b = R + delta, e1 = 1, e2 = 2, nu = 0.3;
-  polar_ring shaft, hub;
-  polar_ring_build(&shaft, nt1, 8, 4, a, b);
-  polar_ring_build(&hub, nt2, 16, 3, R, c);
+  sc_polar_ring shaft, hub;
+  sc_polar_ring_build(&shaft, nt1, 8, 4, a, b);
+  sc_polar_ring_build(&hub, nt2, 16, 3, R, c);
   mc_model *m = NULL;
   ck_assert_int_eq(mc_create(&m), MC_OK);
   OK(mc_set_mesh(m, 1, shaft.n_nodes, shaft.xy, shaft.n_cells, 4, shaft.cells));
@@ -156,7 +101,7 @@ static double shrink_fit_worst_of(int method, int surface, double delta_cells, i
   OK(mc_set_material(m, 2, e2, nu));
   ring_fix_axes(m, 1, &shaft);
   ring_fix_axes(m, 2, &hub);
-  mc_int *loop1 = ring_circle_edges(&shaft, shaft.nr), *loop2 = ring_circle_edges(&hub, 0);
+  mc_int *loop1 = sc_ring_circle_edges(&shaft, shaft.nr), *loop2 = sc_ring_circle_edges(&hub, 0);
   if (feature_angle > 0) OK(mc_set_option_real(m, MC_OPTION_FEATURE_ANGLE, feature_angle));
   OK(mc_set_contact(m, 1, nt1, loop1));
   OK(mc_set_contact(m, 2, nt2, loop2));
@@ -185,7 +130,7 @@ static double shrink_fit_worst_of(int method, int surface, double delta_cells, i
   if (p_lame_out) *p_lame_out = p_lame;
   contact_free(&cd);
   mc_destroy(m);
-  polar_ring_free(&shaft), polar_ring_free(&hub);
+  sc_polar_ring_free(&shaft), sc_polar_ring_free(&hub);
   return worst;
 }
 

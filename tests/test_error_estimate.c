@@ -10,6 +10,11 @@
  * - the indicators' squares add up to the estimate's square, and the cells where they are largest
  *   hold most of the true error;
  * - MC_OPTION_ERROR_ESTIMATE = 0: no estimate, mc_get_error_indicator refuses; a host body has none.
+ * - results on demand (MC_OPTION_EAGER_RESULTS 0, the default) against eager ones (1): the cells'
+ *   stresses, the nodal stresses, the indicators and the estimate the same bit for bit (memcmp),
+ *   whatever the getters' order, on mesh bodies of linear and quadratic cells, with a host body,
+ *   axisymmetric, three bodies, one body's work on a second thread, before and after a load change;
+ *   computed once per solve, through a const handle, forgotten when the model changes.
  */
 #include "cell_kind_name.h"
 #include "check_helpers.h"
@@ -363,6 +368,202 @@ START_TEST(option_off_and_host_bodies) {
 }
 END_TEST
 
+
+/* ---- results on demand against eager results ---------------------------------------------------- */
+
+#define OK_M(call, model) ck_assert_msg((call) == MC_OK, "%s failed: %s", #call, mc_errmsg(model))
+
+/* The scenes: 0 P1 on Q1 (plane strain); 1 Q1 on a host body (element matrices of a P1 mesh,
+   its bottom without equations); 2 axisymmetric shrink fit, P1 shaft in a Q1 hub; 3 T6 on Q8, and
+   4 Q9 on T6 (plane stress); 5 three bodies (Q1 on P1 on Q8), the pairs' bodies on two threads. */
+enum { LAZY_SCENES = 6 };
+
+typedef struct lazy_scene {
+  int n_bodies, host[3];
+  sc_mesh mesh[3];
+} lazy_scene;
+
+static void lazy_scene_free(lazy_scene *s) {
+  for (int b = 0; b < s->n_bodies; ++b) sc_mesh_free(&s->mesh[b]);
+}
+
+/* Body `body` a host body of P1 element matrices on `mesh`, its bottom side's nodes without
+   equations (restrained). */
+static void host_block(mc_model *m, int body, const sc_mesh *mesh) {
+  const int npc = mesh->npc, nv = 2 * npc;
+  char *bottom = calloc((size_t)mesh->n_nodes, 1);
+  for (mc_int k = 0; k < mesh->n_side_nodes[SC_BOTTOM]; ++k) bottom[mesh->side_nodes[SC_BOTTOM][k]] = 1;
+  mc_int *equations = malloc(sizeof(mc_int) * 2 * (size_t)mesh->n_nodes), n_eq = 0;
+  for (mc_int i = 0; i < mesh->n_nodes; ++i)
+    for (int c = 0; c < 2; ++c) equations[2 * i + c] = bottom[i] ? -1 : n_eq++;
+  OK(mc_set_host_body(m, body, mesh->n_nodes, mesh->xy, equations, n_eq));
+  mc_int *eltptr = malloc(sizeof(mc_int) * ((size_t)mesh->n_cells + 1)), *eltvar = malloc(sizeof(mc_int) * (size_t)(nv * mesh->n_cells));
+  double *a = malloc(sizeof(double) * (size_t)(nv * nv * mesh->n_cells)), D[9], xy[18];
+  ha_law_plane_strain(2, 0.3, D);
+  for (mc_int c = 0; c < mesh->n_cells; ++c) {
+    eltptr[c] = c * nv;
+    for (int k = 0; k < npc; ++k) {
+      const mc_int v = mesh->cells[npc * c + k];
+      xy[2 * k] = mesh->xy[2 * v], xy[2 * k + 1] = mesh->xy[2 * v + 1];
+      eltvar[nv * c + 2 * k] = equations[2 * v], eltvar[nv * c + 2 * k + 1] = equations[2 * v + 1];
+    }
+    ck_assert_int_eq(ha_element_stiffness(npc, xy, 0, 1.0, D, a + (size_t)nv * nv * c), 0);
+  }
+  eltptr[mesh->n_cells] = nv * mesh->n_cells;
+  OK(mc_add_element_matrices(m, body, mesh->n_cells, eltptr, eltvar, a));
+  free(bottom), free(equations), free(eltptr), free(eltvar), free(a);
+}
+
+static mc_model *lazy_model(lazy_scene *s, int scene, int eager) {
+  mc_model *m = NULL;
+  memset(s, 0, sizeof *s);
+  if (scene == 2) {
+    s->n_bodies = 2;
+    ck_assert_int_eq(sc_mesh_cells(&s->mesh[0], 3, 6, 9, 0, 0, 1, 1, 1), 0);
+    ck_assert_int_eq(sc_mesh_cells(&s->mesh[1], 4, 7, 9, 1, 0, 1, 1, 0), 0);
+    m = sc_axisymmetric_shrink_fit(&s->mesh[0], &s->mesh[1], 1, 0.3, 1e-3);
+    ck_assert_ptr_nonnull(m);
+  } else {
+    static const int kinds[LAZY_SCENES][3] = {{3, 4, 0}, {4, 3, 0}, {0}, {6, 8, 0}, {9, 6, 0}, {4, 3, 8}};
+    s->n_bodies = scene == 5 ? 3 : 2;
+    ck_assert_int_eq(mc_create(&m), MC_OK);
+    if (s->n_bodies == 3) OK(mc_set_body_count(m, 3));
+    for (int b = 0; b < s->n_bodies; ++b) {
+      const int nx = kinds[scene][b] > 4 ? 4 : 7 + b, ny = kinds[scene][b] > 4 ? 3 : 4;
+      ck_assert_int_eq(sc_mesh_cells(&s->mesh[b], kinds[scene][b], nx, ny, 0, -0.5 * b, 1, 0.5, b % 2), 0);
+      s->host[b] = scene == 1 && b == 1;
+      if (s->host[b]) {
+        host_block(m, b + 1, &s->mesh[b]);
+        continue;
+      }
+      OK(sc_set_mesh(m, b + 1, &s->mesh[b], 0));
+      OK(mc_set_material(m, b + 1, 1 + b, 0.3));
+      OK(sc_fix_side(m, b + 1, &s->mesh[b], SC_LEFT, MC_X, 0));
+    }
+    if (!s->host[s->n_bodies - 1]) OK(sc_fix_side(m, s->n_bodies, &s->mesh[s->n_bodies - 1], SC_BOTTOM, MC_Y, 0));
+    if (scene == 3 || scene == 4) OK(mc_set_plane(m, MC_PLANE_STRESS, 0.5));
+    OK(sc_traction_side(m, 1, &s->mesh[0], SC_TOP, 0.05, -0.2, 0));
+    for (int b = 0; b + 1 < s->n_bodies; ++b) {
+      int pair = 1;
+      if (s->n_bodies == 2) {
+        OK(mc_set_contact(m, 1, s->mesh[0].n_side_edges[SC_BOTTOM], s->mesh[0].side_edges[SC_BOTTOM]));
+        OK(mc_set_contact(m, 2, s->mesh[1].n_side_edges[SC_TOP], s->mesh[1].side_edges[SC_TOP]));
+        continue;
+      }
+      OK(mc_add_contact_pair(m, b + 1, b + 2, &pair));
+      OK(mc_set_pair_surface(m, pair, b + 1, s->mesh[b].n_side_edges[SC_BOTTOM], s->mesh[b].side_edges[SC_BOTTOM]));
+      OK(mc_set_pair_surface(m, pair, b + 2, s->mesh[b + 1].n_side_edges[SC_TOP], s->mesh[b + 1].side_edges[SC_TOP]));
+    }
+    if (scene == 5) OK(mc_set_option_int(m, MC_OPTION_THREADS, 2)); /* the estimate's bodies on two threads too */
+  }
+  if (eager) OK(mc_set_option_int(m, MC_OPTION_EAGER_RESULTS, 1));
+  return m;
+}
+
+typedef struct derived {
+  double *stress[3], *nodal[3], *eta[3], estimate;
+} derived;
+
+static void derived_free(derived *d) {
+  for (int b = 0; b < 3; ++b) free(d->stress[b]), free(d->nodal[b]), free(d->eta[b]);
+  memset(d, 0, sizeof *d);
+}
+
+/* Every derived result of a solved model, through a const handle; `reverse`: the estimate first,
+   the nodal stresses before the cells', the bodies last to first (a different computing order). */
+static void read_derived(const mc_model *m, const lazy_scene *s, int reverse, derived *d) {
+  memset(d, 0, sizeof *d);
+  double v = -1;
+  if (reverse) ck_assert_int_eq(mc_get_info_real(m, MC_INFO_ERROR_ESTIMATE, &d->estimate), MC_OK);
+  for (int k = 0; k < s->n_bodies; ++k) {
+    const int b = reverse ? s->n_bodies - 1 - k : k;
+    const sc_mesh *mesh = &s->mesh[b];
+    d->stress[b] = malloc(sizeof(double) * 4 * (size_t)mesh->n_cells);
+    d->nodal[b] = malloc(sizeof(double) * 4 * (size_t)mesh->n_nodes);
+    d->eta[b] = malloc(sizeof(double) * (size_t)mesh->n_cells);
+    if (s->host[b]) {
+      ck_assert_int_eq(mc_get_stress(m, b + 1, d->stress[b]), MC_ERROR_STATE);
+      ck_assert_int_eq(mc_get_nodal_stress(m, b + 1, d->nodal[b]), MC_ERROR_STATE);
+      ck_assert_int_eq(mc_get_error_indicator(m, b + 1, d->eta[b]), MC_ERROR_STATE);
+      memset(d->stress[b], 0, sizeof(double) * 4 * (size_t)mesh->n_cells);
+      memset(d->nodal[b], 0, sizeof(double) * 4 * (size_t)mesh->n_nodes);
+      memset(d->eta[b], 0, sizeof(double) * (size_t)mesh->n_cells);
+      continue;
+    }
+    if (reverse) {
+      ck_assert_int_eq(mc_get_error_indicator(m, b + 1, d->eta[b]), MC_OK);
+      ck_assert_int_eq(mc_get_nodal_stress(m, b + 1, d->nodal[b]), MC_OK);
+      ck_assert_int_eq(mc_get_stress(m, b + 1, d->stress[b]), MC_OK);
+    } else {
+      ck_assert_int_eq(mc_get_stress(m, b + 1, d->stress[b]), MC_OK);
+      ck_assert_int_eq(mc_get_nodal_stress(m, b + 1, d->nodal[b]), MC_OK);
+      ck_assert_int_eq(mc_get_error_indicator(m, b + 1, d->eta[b]), MC_OK);
+    }
+  }
+  if (!reverse) ck_assert_int_eq(mc_get_info_real(m, MC_INFO_ERROR_ESTIMATE, &d->estimate), MC_OK);
+  ck_assert_int_eq(mc_get_info_real(m, MC_INFO_TIME_RESULTS, &v), MC_OK);
+  ck_assert_msg(v > 0, "MC_INFO_TIME_RESULTS %g after the results were read", v);
+}
+
+static void assert_same_derived(const derived *a, const derived *b, const lazy_scene *s, const char *what) {
+  for (int k = 0; k < s->n_bodies; ++k) {
+    const sc_mesh *mesh = &s->mesh[k];
+    ck_assert_msg(memcmp(a->stress[k], b->stress[k], sizeof(double) * 4 * (size_t)mesh->n_cells) == 0, "%s: body %d stress", what, k + 1);
+    ck_assert_msg(memcmp(a->nodal[k], b->nodal[k], sizeof(double) * 4 * (size_t)mesh->n_nodes) == 0, "%s: body %d nodal stress", what, k + 1);
+    ck_assert_msg(memcmp(a->eta[k], b->eta[k], sizeof(double) * (size_t)mesh->n_cells) == 0, "%s: body %d indicators", what, k + 1);
+  }
+  ck_assert_msg(memcmp(&a->estimate, &b->estimate, sizeof(double)) == 0, "%s: estimate %.17g and %.17g", what, a->estimate,
+                b->estimate);
+}
+
+START_TEST(results_on_demand_same_as_eager) {
+  const int scene = _i;
+  static const char *const names[LAZY_SCENES] = {"P1 on Q1", "Q1 on a host body", "axisymmetric P1 in Q1",
+                                                 "T6 on Q8", "Q9 on T6", "three bodies, two threads"};
+  lazy_scene se, sl;
+  mc_model *eager = lazy_model(&se, scene, 1), *lazy = lazy_model(&sl, scene, 0);
+  derived de, dl, dl_again, first;
+  double t = -1, t_again = -1, sigma[4];
+  for (int step = 0; step < 2; ++step) {
+    if (step == 1) { /* a load change: a re-solve, the factorizations reused */
+      OK_M(mc_set_body_force(eager, 1, 0.01, -0.02), eager);
+      OK_M(mc_set_body_force(lazy, 1, 0.01, -0.02), lazy);
+      ck_assert_int_eq(mc_get_stress(lazy, 1, sigma), MC_ERROR_STATE); /* changed: no results to give */
+    }
+    OK_M(mc_solve(eager), eager);
+    OK_M(mc_solve(lazy), lazy);
+    ck_assert_int_eq(mc_get_info_real(lazy, MC_INFO_TIME_RESULTS, &t), MC_OK);
+    ck_assert_msg(t == 0, "%s: results computed by the solve (%g s)", names[scene], t);
+    if (step == 1) {
+      int64_t factorizations = -1;
+      ck_assert_int_eq(mc_get_info_int(lazy, MC_INFO_FACTORIZATIONS, &factorizations), MC_OK);
+      ck_assert_int_eq(factorizations, 0);
+    }
+    read_derived(eager, &se, 0, &de);
+    read_derived(lazy, &sl, 1, &dl);
+    ck_assert_msg(de.estimate > 0 && de.estimate < 1, "%s: estimate %g", names[scene], de.estimate);
+    assert_same_derived(&de, &dl, &se, names[scene]);
+    /* read again: the same numbers, nothing computed twice */
+    ck_assert_int_eq(mc_get_info_real(lazy, MC_INFO_TIME_RESULTS, &t), MC_OK);
+    read_derived(lazy, &sl, 0, &dl_again);
+    assert_same_derived(&dl, &dl_again, &sl, names[scene]);
+    ck_assert_int_eq(mc_get_info_real(lazy, MC_INFO_TIME_RESULTS, &t_again), MC_OK);
+    ck_assert_msg(t_again == t, "%s: computed again (%g s, then %g s)", names[scene], t, t_again);
+    printf("results on demand, %s, %s: estimate %.6g, bit for bit the eager results\n", names[scene],
+           step ? "re-solve" : "first solve", de.estimate);
+    derived_free(&de), derived_free(&dl_again);
+    if (step == 0) first = dl;
+  }
+  /* the re-solve's results are its own, not the first solve's kept */
+  ck_assert_msg(memcmp(first.stress[0], dl.stress[0], sizeof(double) * 4 * (size_t)sl.mesh[0].n_cells) != 0 &&
+                    first.estimate != dl.estimate,
+                "%s: the re-solve gave the first solve's results", names[scene]);
+  derived_free(&first), derived_free(&dl);
+  mc_destroy(eager), mc_destroy(lazy);
+  lazy_scene_free(&se), lazy_scene_free(&sl);
+}
+END_TEST
+
 int main(void) {
   Suite *s = suite_create("error_estimate");
   TCase *tc = tcase_create("estimate");
@@ -371,6 +572,7 @@ int main(void) {
   tcase_add_test(tc, effectivity_axisymmetric_shrink_fit);
   tcase_add_test(tc, effectivity_plane_strain_shrink_fit);
   tcase_add_test(tc, option_off_and_host_bodies);
+  tcase_add_loop_test(tc, results_on_demand_same_as_eager, 0, LAZY_SCENES);
   suite_add_tcase(s, tc);
   return sc_run_suite(s);
 }

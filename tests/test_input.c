@@ -16,7 +16,9 @@
  *                     node), bad counts
  *   non_finite        NaN / +-inf in every real array and scalar
  *   material          the bounds of E and nu, exactly and just inside; finite numbers whose
- *                     solution overflows (MC_ERROR_ARGUMENT from mc_solve, not inf/NaN results)
+ *                     solution overflows (MC_ERROR_ARGUMENT from mc_solve, not inf/NaN results;
+ *                     stresses alone: from the getter that computes them, or from mc_solve with
+ *                     MC_OPTION_EAGER_RESULTS)
  *   options_infos     every option with values out of range, wrong type; infos of wrong type
  *   interface_solver  MC_OPTION_INTERFACE_SOLVER out of range (the message names the value and
  *                     the option) and through mc_set_option_real; MC_INFO_INTERFACE_SOLVER
@@ -649,11 +651,34 @@ START_TEST(test_material) {
     FAILS(mc_solve(m), MC_ERROR_ARGUMENT, "overflows");
     SUCCEEDS(mc_set_plane(m, MC_PLANE_STRESS, 1));
     SUCCEEDS(mc_set_body_force(m, 1, -DBL_MAX, 0));
-    FAILS(mc_solve(m), MC_ERROR_ARGUMENT, "overflows");
+    /* only the stresses overflow here (the displacements stay finite): with results
+       on demand (the default) the solve succeeds and mc_get_stress (or mc_get_nodal_stress,
+       mc_write_vtu) says so, again and again, the displacements staying readable; with eager
+       results mc_solve says so */
+    {
+      double sigma[4 * 64];
+      ck_assert_int_le(4 * s.top.n_cells, 4 * 64);
+      SUCCEEDS(mc_solve(m));
+      FAILS(mc_get_stress(m, 1, sigma), MC_ERROR_ARGUMENT, "overflow");
+      FAILS(mc_get_nodal_stress(m, 1, sigma), MC_ERROR_ARGUMENT, "sigma[");
+      FAILS(mc_write_vtu(m, "/dev/null"), MC_ERROR_ARGUMENT, "overflow");
+      SUCCEEDS(mc_get_displacement(m, 1, u));
+      SUCCEEDS(mc_set_option_int(m, MC_OPTION_EAGER_RESULTS, 1));
+      FAILS(mc_solve(m), MC_ERROR_ARGUMENT, "overflows");
+      FAILS(mc_get_displacement(m, 1, u), MC_ERROR_STATE, "mc_solve");
+      SUCCEEDS(mc_set_option_int(m, MC_OPTION_EAGER_RESULTS, 0));
+    }
     SUCCEEDS(mc_set_body_force(m, 1, 0, 0));
     SUCCEEDS(sc_traction_side(m, 1, &s.top, SC_RIGHT, 0, 1e308, 0));
-    FAILS(mc_solve(m), MC_ERROR_ARGUMENT, "overflows");
-    FAILS(mc_get_displacement(m, 1, u), MC_ERROR_STATE, "mc_solve");
+    {
+      double sigma[4 * 64];
+      SUCCEEDS(mc_solve(m)); /* the stresses overflow, as above */
+      FAILS(mc_get_stress(m, 1, sigma), MC_ERROR_ARGUMENT, "overflow");
+      SUCCEEDS(mc_set_option_int(m, MC_OPTION_EAGER_RESULTS, 1));
+      FAILS(mc_solve(m), MC_ERROR_ARGUMENT, "overflows");
+      FAILS(mc_get_displacement(m, 1, u), MC_ERROR_STATE, "mc_solve");
+      SUCCEEDS(mc_set_option_int(m, MC_OPTION_EAGER_RESULTS, 0));
+    }
     SUCCEEDS(mc_clear_loads(m, 1));
     SUCCEEDS(sc_traction_side(m, 1, &s.top, SC_RIGHT, 0, 1, 0));
     SUCCEEDS(mc_solve(m));
@@ -675,17 +700,17 @@ END_TEST
 START_TEST(test_options_infos) {
   scene s;
   mc_model *m;
-  static const int int_options[5] = {MC_OPTION_METHOD, MC_OPTION_MAX_ITERATIONS, MC_OPTION_ORDERING,
-                                     MC_OPTION_Q1_INTEGRATION, MC_OPTION_CONTACT_NORMAL};
-  static const int64_t too_big[5] = {MC_METHOD_NODE_TO_SEGMENT + 1, 1000001, MC_ORDERING_METIS + 1, MC_Q1_BBAR + 1,
-                                     MC_NORMAL_MORTAR + 1};
-  static const int64_t too_small[5] = {-1, 0, -1, -1, -1};
+  static const int int_options[6] = {MC_OPTION_METHOD, MC_OPTION_MAX_ITERATIONS, MC_OPTION_ORDERING,
+                                     MC_OPTION_Q1_INTEGRATION, MC_OPTION_CONTACT_NORMAL, MC_OPTION_LOAD_STEPS};
+  static const int64_t too_big[6] = {MC_METHOD_NODE_TO_SEGMENT + 1, 1000001, MC_ORDERING_METIS + 1, MC_Q1_BBAR + 1,
+                                     MC_NORMAL_MORTAR + 1, 1000001};
+  static const int64_t too_small[6] = {-1, 0, -1, -1, -1, 0};
   int k;
   int64_t iv = -7;
   double rv = -7;
   scene_make(&s, 0);
   m = s.m;
-  for (k = 0; k < 5; ++k) {
+  for (k = 0; k < 6; ++k) {
     int o = int_options[k];
     FAILS(mc_set_option_int(m, o, too_big[k]), MC_ERROR_ARGUMENT, "value");
     FAILS(mc_set_option_int(m, o, too_small[k]), MC_ERROR_ARGUMENT, "value");
@@ -694,19 +719,29 @@ START_TEST(test_options_infos) {
     FAILS(mc_set_option_int(m, o, (int64_t)1 << 32), MC_ERROR_ARGUMENT, "value"); /* not truncated to 0 */
     FAILS(mc_set_option_real(m, o, 1.0), MC_ERROR_ARGUMENT, "integer-valued");
   }
+  /* MC_OPTION_EAGER_RESULTS: 0 or 1, named in the message */
+  FAILS(mc_set_option_int(m, MC_OPTION_EAGER_RESULTS, 2), MC_ERROR_ARGUMENT, "MC_OPTION_EAGER_RESULTS");
+  FAILS(mc_set_option_int(m, MC_OPTION_EAGER_RESULTS, -1), MC_ERROR_ARGUMENT, "value = -1");
+  FAILS(mc_set_option_int(m, MC_OPTION_EAGER_RESULTS, (int64_t)1 << 32), MC_ERROR_ARGUMENT, "value");
+  FAILS(mc_set_option_real(m, MC_OPTION_EAGER_RESULTS, 1.0), MC_ERROR_ARGUMENT, "integer-valued");
   FAILS(mc_set_option_int(m, MC_OPTION_TOLERANCE, 1), MC_ERROR_ARGUMENT, "real-valued");
   FAILS(mc_set_option_real(m, MC_OPTION_TOLERANCE, 0), MC_ERROR_ARGUMENT, "value");
   FAILS(mc_set_option_real(m, MC_OPTION_TOLERANCE, 1), MC_ERROR_ARGUMENT, "value");
   FAILS(mc_set_option_real(m, MC_OPTION_TOLERANCE, -1e-8), MC_ERROR_ARGUMENT, "value");
+  FAILS(mc_set_option_int(m, MC_OPTION_FRICTION_CT, 1), MC_ERROR_ARGUMENT, "real-valued");
+  FAILS(mc_set_option_real(m, MC_OPTION_FRICTION_CT, -1e-8), MC_ERROR_ARGUMENT, "MC_OPTION_FRICTION_CT");
+  FAILS(mc_set_option_real(m, MC_OPTION_FRICTION_CT, NAN), MC_ERROR_ARGUMENT, "MC_OPTION_FRICTION_CT");
+  FAILS(mc_set_option_real(m, MC_OPTION_FRICTION_CT, INFINITY), MC_ERROR_ARGUMENT, "MC_OPTION_FRICTION_CT");
   FAILS(mc_set_option_int(m, 0, 0), MC_ERROR_ARGUMENT, "option = 0");
   FAILS(mc_set_option_int(m, 5, 0), MC_ERROR_ARGUMENT, "option = 5"); /* a gap in the values */
   FAILS(mc_set_option_real(m, -1, 0.5), MC_ERROR_ARGUMENT, "option = -1");
   /* infos: wrong type, unknown, NULL; the output is untouched on failure */
   FAILS(mc_get_info_int(m, MC_INFO_STRAIN_ENERGY, &iv), MC_ERROR_ARGUMENT, "real-valued");
   FAILS(mc_get_info_real(m, MC_INFO_DOFS, &rv), MC_ERROR_ARGUMENT, "integer-valued");
-  FAILS(mc_get_info_int(m, MC_INFO_ERROR_ESTIMATE, &iv), MC_ERROR_ARGUMENT, "real-valued"); /* the last real one */
-  for (k = -1; k <= 32; ++k) {
-    if ((k >= MC_INFO_DOFS && k <= MC_INFO_INTERFACE_SOLVER) || (k >= MC_INFO_TIME_ASSEMBLY && k <= MC_INFO_ERROR_ESTIMATE))
+  FAILS(mc_get_info_int(m, MC_INFO_TIME_RESULTS, &iv), MC_ERROR_ARGUMENT, "real-valued"); /* the last real one */
+  FAILS(mc_get_info_real(m, MC_INFO_SLIP_NODES, &rv), MC_ERROR_ARGUMENT, "integer-valued"); /* the last integer one */
+  for (k = -1; k <= 34; ++k) {
+    if ((k >= MC_INFO_DOFS && k <= MC_INFO_SLIP_NODES) || (k >= MC_INFO_TIME_ASSEMBLY && k <= MC_INFO_TIME_RESULTS))
       continue;
     FAILS(mc_get_info_int(m, k, &iv), MC_ERROR_ARGUMENT, "info");
     FAILS(mc_get_info_real(m, k, &rv), MC_ERROR_ARGUMENT, "info");

@@ -213,16 +213,23 @@ START_TEST(test_infos) {
   ck_assert(r == 0); /* no contact */
   OK(mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &v));
   ck_assert_int_eq(v, 0); /* no contact: no interface solver ran */
+  OK(mc_get_info_int(m, MC_INFO_STICK_NODES, &v));
+  ck_assert_int_eq(v, 0); /* no friction */
+  OK(mc_get_info_int(m, MC_INFO_SLIP_NODES, &v));
+  ck_assert_int_eq(v, 0);
+  OK(mc_get_info_real(m, MC_INFO_FRICTION_COMPLEMENTARITY, &r));
+  ck_assert(r == 0);
 
   /* wrong kinds and unknown infos */
   FAILS(mc_get_info_int(m, MC_INFO_STRAIN_ENERGY, &v), MC_ERROR_ARGUMENT, "info");
   FAILS(mc_get_info_int(m, 0, &v), MC_ERROR_ARGUMENT, "info");
-  FAILS(mc_get_info_int(m, 8, &v), MC_ERROR_ARGUMENT, "info");
+  FAILS(mc_get_info_int(m, 10, &v), MC_ERROR_ARGUMENT, "info");
   FAILS(mc_get_info_real(m, MC_INFO_INTERFACE_SOLVER, &r), MC_ERROR_ARGUMENT, "info");
   FAILS(mc_get_info_int(m, 19, &v), MC_ERROR_ARGUMENT, "info");
   FAILS(mc_get_info_real(m, MC_INFO_DOFS, &r), MC_ERROR_ARGUMENT, "info");
-  FAILS(mc_get_info_real(m, 31, &r), MC_ERROR_ARGUMENT, "info");
+  FAILS(mc_get_info_real(m, 33, &r), MC_ERROR_ARGUMENT, "info"); /* past MC_INFO_TIME_RESULTS = 32 */
   FAILS(mc_get_info_int(m, MC_INFO_ERROR_ESTIMATE, &v), MC_ERROR_ARGUMENT, "real-valued");
+  FAILS(mc_get_info_int(m, MC_INFO_TIME_RESULTS, &v), MC_ERROR_ARGUMENT, "real-valued");
   FAILS(mc_get_info_real(m, -1, &r), MC_ERROR_ARGUMENT, "info");
   FAILS(mc_get_info_int(m, MC_INFO_DOFS, NULL), MC_ERROR_ARGUMENT, "value");
   FAILS(mc_get_info_real(m, MC_INFO_STRAIN_ENERGY, NULL), MC_ERROR_ARGUMENT, "value");

@@ -5,7 +5,10 @@
  *   reader: balanced tags, declared counts, exact number of values per array) and hold exactly
  *   the values the result getters return (numbers are written with 17 digits: bit-exact);
  *   the .pvd variant writes a collection and one file per body; no inf/nan reaches a file;
- *   errors: before a solve, after the scene changed, unwritable path, NULL arguments.
+ *   errors: before a solve, after the scene changed, unwritable path, NULL arguments; the
+ *   friction fields (shear, slip, slip_total, state) of every non-mortar contact node, frictionless
+ *   (no shear; contact slips or is open) and in a frictional slip patch test (every
+ *   node slips with shear -mu p; slip and accumulated slip after one and after two solves).
  * - mc_set_log_callback: phase and iteration messages reach the callback with its user_data,
  *   one line each, with the phase times; the iteration messages match MC_INFO_ITERATIONS and
  *   MC_INFO_COMPLEMENTARITY; a load step reports reuse and no factorization; removing the
@@ -72,6 +75,7 @@ typedef struct results {
   double *u[2], *stress[2], *nodal_stress[2];
   mc_int n_contact, *contact_nodes;
   double *pressure, *force, *gap, *gap0;
+  double *shear, *slip, *slip_total, *state; /* mc_get_pair_contact of pair 1 */
 } results;
 
 static results results_get(const scene *s) {
@@ -96,12 +100,19 @@ static results results_get(const scene *s) {
   OK(mc_get_contact_force(m, r.force));
   OK(mc_get_contact_gap(m, r.gap));
   OK(mc_get_contact_initial_gap(m, r.gap0));
+  double **friction[4] = {&r.shear, &r.slip, &r.slip_total, &r.state};
+  const int field[4] = {MC_CONTACT_SHEAR, MC_CONTACT_SLIP, MC_CONTACT_SLIP_TOTAL, MC_CONTACT_STATE};
+  for (int k = 0; k < 4; ++k) {
+    *friction[k] = malloc(sizeof(double) * r.n_contact);
+    OK(mc_get_pair_contact(m, 1, field[k], *friction[k]));
+  }
   return r;
 }
 
 static void results_free(results *r) {
   for (int b = 0; b < 2; ++b) free(r->u[b]), free(r->stress[b]), free(r->nodal_stress[b]);
   free(r->contact_nodes), free(r->pressure), free(r->force), free(r->gap), free(r->gap0);
+  free(r->shear), free(r->slip), free(r->slip_total), free(r->state);
 }
 
 /* ---- a small structural reader of the VTK XML files ------------------------------------- */
@@ -213,7 +224,7 @@ static double *data_array(const char *xml, const char *name, const char *type, i
 static void check_piece(const char *xml, const scene *s, const results *r, int first, int last) {
   long n_points = 0, n_cells = 0;
   for (int b = first; b <= last; ++b) n_points += s->mesh[b].n_nodes, n_cells += s->mesh[b].n_cells;
-  check_structure(xml, 14);
+  check_structure(xml, 18);
   ck_assert_int_eq(attribute(xml, "NumberOfPoints"), n_points);
   ck_assert_int_eq(attribute(xml, "NumberOfCells"), n_cells);
 
@@ -225,6 +236,10 @@ static void check_piece(const char *xml, const scene *s, const results *r, int f
   double *g0 = data_array(xml, "initial_gap", "Float64", 1, n_points);
   double *active = data_array(xml, "active", "Int32", 1, n_points);
   double *contact = data_array(xml, "contact", "Int32", 1, n_points);
+  double *shear = data_array(xml, "shear", "Float64", 1, n_points);
+  double *slip = data_array(xml, "slip", "Float64", 1, n_points);
+  double *slip_total = data_array(xml, "slip_total", "Float64", 1, n_points);
+  double *state = data_array(xml, "state", "Int32", 1, n_points);
   double *stress = data_array(xml, "stress", "Float64", 4, 4 * n_cells);
   double *vm = data_array(xml, "von_mises", "Float64", 1, n_cells);
   double *body = data_array(xml, "body", "Int32", 1, n_cells);
@@ -247,7 +262,8 @@ static void check_piece(const char *xml, const scene *s, const results *r, int f
         ck_assert_msg(ns[4 * point + k] == r->nodal_stress[b][4 * i + k], "body %d node %d: nodal stress %d", b + 1,
                       (int)i, k);
       if (b == 1) /* body 2 carries no contact fields */
-        ck_assert(p[point] == 0 && g[point] == 0 && g0[point] == 0 && active[point] == 0 && contact[point] == 0);
+        ck_assert(p[point] == 0 && g[point] == 0 && g0[point] == 0 && active[point] == 0 && contact[point] == 0 &&
+                  shear[point] == 0 && slip[point] == 0 && slip_total[point] == 0 && state[point] == MC_STATE_OPEN);
     }
     for (mc_int c = 0; c < mesh->n_cells; ++c, ++cell) {
       const double *sa = &r->stress[b][4 * c], *sf = &stress[4 * cell];
@@ -267,13 +283,21 @@ static void check_piece(const char *xml, const scene *s, const results *r, int f
 
   if (first == 0) { /* body 1: the contact fields at its contact nodes, zero elsewhere */
     char *on_surface = calloc((size_t)s->mesh[0].n_nodes, 1);
-    int unseen = 0, seen = 0, n_active = 0, n_inactive = 0;
+    int unseen = 0, seen = 0, n_active = 0, n_inactive = 0, n_slip = 0;
     for (mc_int j = 0; j < r->n_contact; ++j) {
       mc_int node = r->contact_nodes[j];
       on_surface[node] = 1;
       ck_assert_msg(p[node] == r->pressure[j], "contact node %d: pressure %.17g, API %.17g", (int)j, p[node],
                     r->pressure[j]);
       ck_assert(active[node] == (r->force[j] > 0));
+      ck_assert_msg(shear[node] == r->shear[j] && slip[node] == r->slip[j] && slip_total[node] == r->slip_total[j] &&
+                        state[node] == r->state[j],
+                    "contact node %d: shear %.17g, slip %.17g, slip_total %.17g, state %g in the file; API %.17g, "
+                    "%.17g, %.17g, %g", (int)j, shear[node], slip[node], slip_total[node], state[node], r->shear[j],
+                    r->slip[j], r->slip_total[j], r->state[j]);
+      /* frictionless: no shear; contact slips (or is open), never sticks */
+      ck_assert(r->shear[j] == 0 && (r->state[j] == MC_STATE_SLIP || r->state[j] == MC_STATE_OPEN));
+      n_slip += r->state[j] == MC_STATE_SLIP;
       n_active += r->force[j] > 0, n_inactive += r->force[j] == 0 && isfinite(r->gap[j]);
       if (isfinite(r->gap[j])) {
         ++seen;
@@ -284,13 +308,16 @@ static void check_piece(const char *xml, const scene *s, const results *r, int f
       }
     }
     for (mc_int i = 0; i < s->mesh[0].n_nodes; ++i)
-      if (!on_surface[i]) ck_assert(p[i] == 0 && g[i] == 0 && g0[i] == 0 && active[i] == 0 && contact[i] == 0);
+      if (!on_surface[i])
+        ck_assert(p[i] == 0 && g[i] == 0 && g0[i] == 0 && active[i] == 0 && contact[i] == 0 && shear[i] == 0 &&
+                  slip[i] == 0 && slip_total[i] == 0 && state[i] == MC_STATE_OPEN);
     /* the scene exercises every case */
-    ck_assert_msg(unseen >= 2 && seen >= 4 && n_active >= 2 && n_inactive >= 2,
-                  "unseen %d, seen %d, active %d, inactive %d", unseen, seen, n_active, n_inactive);
+    ck_assert_msg(unseen >= 2 && seen >= 4 && n_active >= 2 && n_inactive >= 2 && n_slip >= 2,
+                  "unseen %d, seen %d, active %d, inactive %d, slipping %d", unseen, seen, n_active, n_inactive, n_slip);
     free(on_surface);
   }
   free(u), free(ns), free(x), free(p), free(g), free(g0), free(active), free(contact);
+  free(shear), free(slip), free(slip_total), free(state);
   free(stress), free(vm), free(body), free(types), free(offsets), free(conn);
 }
 
@@ -347,6 +374,98 @@ START_TEST(pvd_writes_a_collection_and_one_file_per_body) {
 }
 END_TEST
 
+/* Friction: the slip patch test on two blocks (nu = 0, non-matching meshes) in the uniform stress
+   sigma_yy = -p, sigma_xy = mu p: the upper block's top moved along x by the exact field plus
+   delta, Coulomb friction: every contact node slips with shear -mu p and slip delta. Solved
+   again with the same loads nothing moves: slip 0, accumulated slip still delta. Both files hold
+   the API's values bit for bit at body 1's contact nodes (the collection's body-1 file), zero
+   and MC_STATE_OPEN elsewhere and on body 2. */
+static void check_friction_file(const char *path, const sc_mesh *upper, mc_model *m, double shear_expected,
+                                double slip_expected, double slip_total_expected) {
+  mc_int n;
+  OK(mc_get_pair_contact_count(m, 1, &n));
+  ck_assert_int_eq(n, upper->n_side_nodes[SC_BOTTOM]);
+  mc_int *nodes = malloc(sizeof(mc_int) * (size_t)n);
+  double *api[4];
+  const int field[4] = {MC_CONTACT_SHEAR, MC_CONTACT_SLIP, MC_CONTACT_SLIP_TOTAL, MC_CONTACT_STATE};
+  OK(mc_get_pair_contact_nodes(m, 1, nodes));
+  for (int k = 0; k < 4; ++k) {
+    api[k] = malloc(sizeof(double) * (size_t)n);
+    OK(mc_get_pair_contact(m, 1, field[k], api[k]));
+  }
+  char *xml = slurp(path);
+  check_structure(xml, 18);
+  const long n_points = upper->n_nodes;
+  const char *name[4] = {"shear", "slip", "slip_total", "state"};
+  double *file[4];
+  for (int k = 0; k < 4; ++k) file[k] = data_array(xml, name[k], k == 3 ? "Int32" : "Float64", 1, n_points);
+  char *on_surface = calloc((size_t)n_points, 1);
+  const double P = 0.01;
+  for (mc_int j = 0; j < n; ++j) {
+    on_surface[nodes[j]] = 1;
+    /* a node of one contact position: its values bit for bit (17 digits) */
+    for (int k = 0; k < 4; ++k)
+      ck_assert_msg(file[k][nodes[j]] == api[k][j], "%s: contact node %d: %s %.17g in the file, %.17g from the API",
+                    path, (int)j, name[k], file[k][nodes[j]], api[k][j]);
+    ck_assert_msg(api[3][j] == MC_STATE_SLIP, "node %d: state %g", (int)j, api[3][j]);
+    ck_assert_msg(fabs(api[0][j] - shear_expected) <= 1e-10 * P, "node %d: shear %.17g", (int)j, api[0][j]);
+    ck_assert_msg(fabs(api[1][j] - slip_expected) <= 1e-10 * 0.05, "node %d: slip %.17g", (int)j, api[1][j]);
+    ck_assert_msg(fabs(api[2][j] - slip_total_expected) <= 1e-10 * 0.05, "node %d: slip total %.17g", (int)j, api[2][j]);
+  }
+  for (long i = 0; i < n_points; ++i)
+    if (!on_surface[i])
+      ck_assert(file[0][i] == 0 && file[1][i] == 0 && file[2][i] == 0 && file[3][i] == MC_STATE_OPEN);
+  for (int k = 0; k < 4; ++k) free(file[k]), free(api[k]);
+  free(on_surface), free(nodes), free(xml);
+}
+
+START_TEST(vtu_friction_fields) {
+  const double P = 0.01, mu = 0.3, delta = 0.05, tau = mu * P, E = 1;
+  sc_mesh upper, lower;
+  ck_assert_int_eq(sc_mesh_rect(&upper, 3, 3, 2, 0, 1, 1, 1, 0.1, 3), 0);
+  ck_assert_int_eq(sc_mesh_rect(&lower, 4, 4, 3, 0, 0, 1, 1, 0.1, 5), 0);
+  mc_model *m = NULL;
+  ck_assert_int_eq(mc_create(&m), MC_OK);
+  OK(sc_set_mesh(m, 1, &upper, 0));
+  OK(sc_set_mesh(m, 2, &lower, 0));
+  for (int b = 1; b <= 2; ++b) {
+    const sc_mesh *mesh = b == 1 ? &upper : &lower;
+    OK(mc_set_material(m, b, E, 0.0));
+    OK(sc_traction_side(m, b, mesh, SC_LEFT, 0, -tau, 0));
+    OK(sc_traction_side(m, b, mesh, SC_RIGHT, 0, tau, 0));
+  }
+  OK(sc_fix_side(m, 2, &lower, SC_BOTTOM, MC_XY, 0)); /* the exact field is 0 at y = 0 with nu = 0 */
+  OK(sc_traction_side(m, 1, &upper, SC_TOP, 0, -P, 0));
+  const mc_int n_top = upper.n_side_nodes[SC_TOP];
+  double *top = malloc(sizeof(double) * 2 * (size_t)n_top);
+  for (mc_int k = 0; k < n_top; ++k) top[2 * k] = 2 * tau / E * 2 + delta, top[2 * k + 1] = 0; /* gamma y + delta at y = 2 */
+  OK(mc_fix(m, 1, n_top, upper.side_nodes[SC_TOP], MC_X, top));
+  free(top);
+  OK(mc_set_contact(m, 1, upper.n_side_edges[SC_BOTTOM], upper.side_edges[SC_BOTTOM]));
+  OK(mc_set_contact(m, 2, lower.n_side_edges[SC_TOP], lower.side_edges[SC_TOP]));
+  OK(mc_set_friction(m, 1, MC_FRICTION_COULOMB, mu));
+  OK(mc_solve(m));
+  remove("test_output_friction.vtu");
+  SUCCEEDS(mc_write_vtu(m, "test_output_friction.vtu"));
+  /* one file holds both bodies: body 2's points follow body 1's and carry nothing */
+  char *both = slurp("test_output_friction.vtu");
+  double *state = data_array(both, "state", "Int32", 1, upper.n_nodes + lower.n_nodes);
+  double *shear = data_array(both, "shear", "Float64", 1, upper.n_nodes + lower.n_nodes);
+  for (mc_int i = upper.n_nodes; i < upper.n_nodes + lower.n_nodes; ++i) ck_assert(state[i] == MC_STATE_OPEN && shear[i] == 0);
+  free(state), free(shear), free(both);
+  SUCCEEDS(mc_write_vtu(m, "test_output_friction.pvd"));
+  check_friction_file("test_output_friction_body1.vtu", &upper, m, -tau, delta, delta);
+  /* the same loads again: a step of nothing; the accumulated slip stays */
+  OK(mc_solve(m));
+  SUCCEEDS(mc_write_vtu(m, "test_output_friction.pvd"));
+  check_friction_file("test_output_friction_body1.vtu", &upper, m, -tau, 0, delta);
+  remove("test_output_friction.vtu"), remove("test_output_friction.pvd");
+  remove("test_output_friction_body1.vtu"), remove("test_output_friction_body2.vtu");
+  mc_destroy(m);
+  sc_mesh_free(&upper), sc_mesh_free(&lower);
+}
+END_TEST
+
 START_TEST(single_body_solve_writes_that_body) {
   /* no contact, only body 2 meshed: the file has body 2 alone, contact fields zero */
   mc_model *m = NULL;
@@ -360,7 +479,7 @@ START_TEST(single_body_solve_writes_that_body) {
   OK(mc_solve(m));
   SUCCEEDS(mc_write_vtu(m, "test_output_single.vtu"));
   char *xml = slurp("test_output_single.vtu");
-  check_structure(xml, 14);
+  check_structure(xml, 18);
   ck_assert_int_eq(attribute(xml, "NumberOfPoints"), mesh.n_nodes);
   ck_assert_int_eq(attribute(xml, "NumberOfCells"), mesh.n_cells);
   double *u_api = malloc(sizeof(double) * 2 * mesh.n_nodes);
@@ -486,7 +605,7 @@ START_TEST(log_callback_reports_phases_and_iterations) {
                                        "analysis: body 1", "assembly: body 2", "analysis: body 2",
                                        "interface solver: condensed (automatic", "factorization: body 1",
                                        "factorization: body 2", "interface operator", "loads:",
-                                       "active-set solve: solved", "recovery:", "error estimate:", "solve: done"};
+                                       "active-set solve: solved", "recovery:", "solve: done"};
   const char *previous = rec.text;
   for (size_t k = 0; k < sizeof phases / sizeof *phases; ++k) {
     const char *at = strstr(rec.text, phases[k]);
@@ -495,6 +614,34 @@ START_TEST(log_callback_reports_phases_and_iterations) {
     previous = at;
   }
   ck_assert_int_eq(rec.phases, (int)(sizeof phases / sizeof *phases));
+  /* results on demand (the default): the solve computed no stresses and no estimate; the first
+     call that asks for each does, with its message after "solve: done", and only once */
+  ck_assert_msg(!strstr(rec.text, "error estimate:") && !strstr(rec.text, "stresses:") &&
+                    !strstr(rec.text, "reactions, stresses"),
+                "%s", rec.text);
+  {
+    double estimate, estimate_again, *sigma = malloc(sizeof(double) * 4 * (size_t)(s.mesh[0].n_cells + s.mesh[0].n_nodes));
+    int phases_before = rec.phases;
+    OK(mc_get_info_real(m, MC_INFO_ERROR_ESTIMATE, &estimate));
+    OK(mc_get_info_real(m, MC_INFO_ERROR_ESTIMATE, &estimate_again));
+    ck_assert(estimate == estimate_again && estimate > 0);
+    ck_assert_int_eq(rec.phases, phases_before + 1);
+    ck_assert_msg(strstr(rec.text, "solve: done") < strstr(rec.text, "error estimate:"), "%s", rec.text);
+    OK(mc_get_stress(m, 1, sigma));
+    OK(mc_get_nodal_stress(m, 1, sigma)); /* computed with the cells' */
+    ck_assert_int_eq(rec.phases, phases_before + 2);
+    ck_assert_msg(strstr(rec.text, "stresses: body 1,") != NULL, "%s", rec.text);
+    ck_assert_int_eq(rec.bad_lines, 0);
+    free(sigma);
+  }
+  /* eager results: the solve computes both, the estimate before "solve: done" */
+  log_reset(&rec);
+  SUCCEEDS(mc_set_option_int(m, MC_OPTION_EAGER_RESULTS, 1));
+  OK(mc_solve(m));
+  ck_assert_msg(strstr(rec.text, "reactions, stresses") && strstr(rec.text, "error estimate:") &&
+                    strstr(rec.text, "error estimate:") < strstr(rec.text, "solve: done"),
+                "%s", rec.text);
+  SUCCEEDS(mc_set_option_int(m, MC_OPTION_EAGER_RESULTS, 0));
 
   /* a load step: reuse is reported, and no assembly or factorization happens */
   log_reset(&rec);
@@ -543,6 +690,7 @@ static Suite *output_suite(void) {
   tcase_add_test(vtu, vtu_holds_both_bodies_exactly);
   tcase_add_test(vtu, pvd_writes_a_collection_and_one_file_per_body);
   tcase_add_test(vtu, single_body_solve_writes_that_body);
+  tcase_add_test(vtu, vtu_friction_fields);
   tcase_add_test(vtu, write_errors_name_the_cause);
   suite_add_tcase(s, vtu);
   TCase *logging = tcase_create("log_callback");

@@ -109,6 +109,9 @@ class TestWriteVtu(unittest.TestCase):
         cls.force = m.get_contact_force()
         cls.gap = m.get_contact_gap()
         cls.gap0 = m.get_contact_initial_gap()
+        cls.friction = {name: m.get_pair_contact(1, field) for name, field in (
+            ("shear", mc.MC_CONTACT_SHEAR), ("slip", mc.MC_CONTACT_SLIP), ("slip_total", mc.MC_CONTACT_SLIP_TOTAL),
+            ("state", mc.MC_CONTACT_STATE))}
 
     @classmethod
     def tearDownClass(cls):
@@ -128,6 +131,9 @@ class TestWriteVtu(unittest.TestCase):
         f["initial_gap"][self.nodes] = np.where(seen, self.gap0, -1.0)
         f["active"][self.nodes] = self.force > 0
         f["contact"][self.nodes] = seen
+        for name, values in self.friction.items():  # frictionless: no shear, contact slips or is open
+            f[name] = np.zeros(n)
+            f[name][self.nodes] = values
         return f
 
     def check_body(self, mesh, b, points, cells, point_data, cell_data):
@@ -145,7 +151,7 @@ class TestWriteVtu(unittest.TestCase):
             for name, values in self.expected_contact_fields().items():
                 np.testing.assert_array_equal(point_data[name][p], values, err_msg=name)
         else:
-            for name in ("pressure", "gap", "initial_gap", "active", "contact"):
+            for name in ("pressure", "gap", "initial_gap", "active", "contact", "shear", "slip", "slip_total", "state"):
                 np.testing.assert_array_equal(point_data[name][p], 0.0, err_msg=name)
         kind = MESHIO_TYPE[conn.shape[1]]
         block = [i for i, c in enumerate(mesh.cells) if c.type == kind]
@@ -276,7 +282,7 @@ class TestWriteVtuQuadratic(unittest.TestCase):
         np.testing.assert_array_equal(mesh.point_data["nodal_stress"][p], nodal[b])
         np.testing.assert_array_equal(mesh.cell_data["stress"][k], stress[b])
         np.testing.assert_array_equal(mesh.cell_data["body"][k], b + 1)
-        for field in ("pressure", "gap", "initial_gap", "active", "contact"):
+        for field in ("pressure", "gap", "initial_gap", "active", "contact", "shear", "slip", "slip_total", "state"):
             np.testing.assert_array_equal(mesh.point_data[field][p], 0.0, err_msg=field)
 
     def test_scenes_are_loaded(self):

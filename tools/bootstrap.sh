@@ -83,7 +83,7 @@ case "$mode" in
     cmake --build "$fuzz" -j"$(nproc)" --target fuzz_api fuzz_replay
     # First the corpus replayed with the fuzz build's own flags and static link (fuzz_replay): the
     # same scenes as the plain builds' fuzz_corpus_replay, host bodies included.
-    "$fuzz/tests/fuzz/fuzz_replay" --min-solves 20 --min-contact-solves 12 --min-host-solves 6 --min-pair-solves 4 tests/fuzz/corpus/*
+    "$fuzz/tests/fuzz/fuzz_replay" --min-solves 20 --min-contact-solves 12 --min-host-solves 6 --min-pair-solves 4 --min-friction-solves 4 tests/fuzz/corpus/*
     mkdir -p "$fuzz/fuzz-work"
     if ! "$fuzz/tests/fuzz/fuzz_api" -max_total_time="${MC_FUZZ_SECONDS:-60}" -timeout=10 -rss_limit_mb=2048 \
          -print_final_stats=1 -artifact_prefix="$fuzz/" "$fuzz/fuzz-work" tests/fuzz/corpus >"$fuzz/fuzz.log" 2>&1; then

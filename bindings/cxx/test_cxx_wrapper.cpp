@@ -5,7 +5,11 @@
 // callback, a contact solve (the README's scene: uniform pressure 0.1 transmitted exactly), and
 // the same scene with body 1 a host body (its stiffness assembled here, given as coordinate
 // entries in both storages and as element matrices); assemblies: three stacked blocks as three
-// bodies in two contact pairs (a patch test: every pressure of both pairs is p), bad bodies and pairs.
+// bodies in two contact pairs (a patch test: every pressure of both pairs is p), bad bodies and pairs;
+// friction: the stick patch test (Coulomb and Tresca: every position sticks, shear -tau, no slip;
+// load steps, a repeated solve, reset_history, the complementarity parameter; the law removed:
+// MC_ERROR_SINGULAR naming body 1) and
+// bad input for set_friction and the friction options.
 // Whether every C function and constant has its wrapper: check_cxx_wrapper.py (cxx_wrapper_coverage).
 #include <mortarcontact.hpp>
 
@@ -669,6 +673,104 @@ void test_pair_errors() {
   EXPECT_ERROR(mc::Status::error_state, m.set_body_count(2));  // pair 2 uses body 3
   EXPECT_ERROR(mc::Status::error_state, m.get_stress(3));  // still body 3's mesh: no solution yet
 }
+
+// ---- friction ----
+
+/// The frictional patch test (stick): an upper block [0, 1] x [1, 2] (3 cells across) on a lower
+/// one [0, 1] x [0, 1] (4 cells: non-matching), nu = 0, in the uniform stress sigma_yy = -p,
+/// sigma_xy = tau, sigma_xx = 0: tractions on every free side, the lower block's base held (the
+/// exact field is 0 there with nu = 0). The upper block is held along x by friction alone.
+constexpr double kFricP = 0.01, kFricE = 1.0;
+
+void set_friction_scene(mc::Model &m, double tau) {
+  const Block upper = make_block(3, 1.0, 0), lower = make_block(4, 0.0, 0);
+  m.set_mesh(1, upper.xy, upper.cells, 3);
+  m.set_mesh(2, lower.xy, lower.cells, 3);
+  for (int body = 1; body <= 2; ++body) {
+    const Block &b = body == 1 ? upper : lower;
+    m.set_material(body, kFricE, 0.0);
+    const mc_int nx = static_cast<mc_int>(b.bottom_nodes.size()) - 1;
+    m.add_traction(body, b.left, {0.0, -tau});                            // n = (-1, 0)
+    m.add_traction(body, {nx, 2 * nx + 1}, {0.0, tau});                   // the right side, n = (1, 0)
+  }
+  m.add_traction(1, upper.top, [&] {
+    std::vector<double> t;
+    for (std::size_t e = 0; e < upper.top.size() / 2; ++e) t.insert(t.end(), {tau, -kFricP});
+    return t;
+  }());
+  m.fix(2, lower.bottom_nodes, mc::Components::xy);
+  m.set_contact(1, upper.bottom);
+  m.set_contact(2, lower.top);
+}
+
+void test_friction_stick_patch() {
+  const double mu = 0.5, tau = 0.4 * mu * kFricP;
+  for (mc::Friction law : {mc::Friction::coulomb, mc::Friction::tresca}) {
+    mc::Model m;
+    set_friction_scene(m, tau);
+    // Tresca: a bound above tau (mu p, as Coulomb's), so both stick
+    m.set_friction(1, law, law == mc::Friction::coulomb ? mu : mu * kFricP);
+    m.set_option_int(mc::Option::load_steps, 2);
+    m.solve();
+    const mc_int n = m.get_pair_contact_count(1);
+    EXPECT(n == 4);  // the upper block's bottom nodes
+    const std::vector<double> p = m.get_pair_contact(1, mc::ContactField::pressure),
+                              shear = m.get_pair_contact(1, mc::ContactField::shear),
+                              slip = m.get_pair_contact(1, mc::ContactField::slip),
+                              slip_total = m.get_pair_contact(1, mc::ContactField::slip_total),
+                              state = m.get_pair_contact(1, mc::ContactField::state);
+    EXPECT(shear.size() == static_cast<std::size_t>(n) && state.size() == static_cast<std::size_t>(n));
+    for (std::size_t j = 0; j < shear.size(); ++j) {
+      expect(static_cast<mc::ContactState>(static_cast<int>(state[j])) == mc::ContactState::stick,
+             ("state " + std::to_string(state[j])).c_str(), __LINE__);
+      expect(std::fabs(shear[j] + tau) <= 1e-10 * kFricP, ("shear " + std::to_string(shear[j])).c_str(), __LINE__);
+      EXPECT(std::fabs(p[j] - kFricP) <= 1e-10 * kFricP);
+      EXPECT(std::fabs(slip[j]) <= 1e-10 * kFricP && std::fabs(slip_total[j]) <= 1e-10 * kFricP);
+    }
+    EXPECT(m.get_info_int(mc::Info::stick_nodes) > 0);
+    EXPECT(m.get_info_int(mc::Info::slip_nodes) == 0);
+    EXPECT(m.get_info_real(mc::Info::friction_complementarity) <= 1e-10);
+    // the upper block's top moves along x by the shear strain, gamma = 2 (1 + nu) tau / E = 2 tau / E
+    const std::vector<double> u = m.get_displacement(1);
+    EXPECT(std::fabs(u[u.size() - 2] - 2 * 2 * tau / kFricE) <= 1e-10 * tau);  // node (3, 1) at y = 2
+    // the same loads again: a step of zero from the converged state, still stuck, no slip
+    m.solve();
+    for (double s : m.get_pair_contact(1, mc::ContactField::slip)) EXPECT(std::fabs(s) <= 1e-10 * kFricP);
+    m.reset_history();
+    m.set_option_real(mc::Option::friction_ct, 10.0);  // changes the iterates, not the answer
+    m.solve();
+    for (double s : m.get_pair_contact(1, mc::ContactField::shear)) EXPECT(std::fabs(s + tau) <= 1e-10 * kFricP);
+    // removed: nothing holds the upper block along x against tau any more
+    m.set_friction(1, mc::Friction::none);
+    EXPECT(EXPECT_ERROR(mc::Status::error_singular, m.solve()).find("body 1") != std::string::npos);
+  }
+  static_assert(static_cast<int>(mc::ContactState::open) == MC_STATE_OPEN);
+}
+
+void test_friction_errors() {
+  mc::Model m;
+  // before any contact pair
+  EXPECT(EXPECT_ERROR(mc::Status::error_state, m.set_friction(1, mc::Friction::coulomb, 0.3)).find("contact pair") !=
+         std::string::npos);
+  set_friction_scene(m, 0.0);
+  EXPECT(EXPECT_ERROR(mc::Status::error_argument, m.set_friction(1, mc::Friction::coulomb, -0.1)).find("mu") !=
+         std::string::npos);
+  EXPECT(EXPECT_ERROR(mc::Status::error_argument, m.set_friction(1, mc::Friction::tresca, -1.0)).find("bound") !=
+         std::string::npos);
+  EXPECT_ERROR(mc::Status::error_argument, m.set_friction(1, mc::Friction::coulomb, std::nan("")));
+  EXPECT(EXPECT_ERROR(mc::Status::error_argument, m.set_friction(1, 7, 0.3)).find("law") != std::string::npos);
+  EXPECT(EXPECT_ERROR(mc::Status::error_argument, m.set_friction(2, mc::Friction::coulomb, 0.3)).find("pair") !=
+         std::string::npos);
+  EXPECT(EXPECT_ERROR(mc::Status::error_argument, m.set_option_int(mc::Option::load_steps, 0)).find("MC_OPTION_LOAD_STEPS") !=
+         std::string::npos);
+  EXPECT_ERROR(mc::Status::error_argument, m.set_option_real(mc::Option::friction_ct, -1.0));
+  // the model stays usable: a frictional solve after the refusals
+  m.set_friction(1, mc::Friction::coulomb, 0.3);
+  m.solve();
+  EXPECT(m.get_pair_contact(1, mc::ContactField::state).size() == 4);
+  m.set_option_int(mc::Option::interface_solver, mc::InterfaceSolver::sparse);  // friction: condensed only
+  EXPECT_ERROR(mc::Status::error_state, m.solve());
+}
 }  // namespace
 
 int main() {
@@ -689,6 +791,8 @@ int main() {
   test_host_body_errors();
   test_three_blocks_two_pairs();
   test_pair_errors();
+  test_friction_stick_patch();
+  test_friction_errors();
   if (failures) {
     std::fprintf(stderr, "%d check(s) failed\n", failures);
     return 1;

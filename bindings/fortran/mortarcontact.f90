@@ -52,7 +52,8 @@ module mortarcontact
        MC_OPTION_MAX_ITERATIONS = 3, MC_OPTION_ORDERING = 4, MC_OPTION_Q1_INTEGRATION = 6, &
        MC_OPTION_CONTACT_NORMAL = 7, MC_OPTION_CONTACT_SURFACE = 8, MC_OPTION_FEATURE_ANGLE = 9, &
        MC_OPTION_THREADS = 10, MC_OPTION_INTERFACE_SOLVER = 11, MC_OPTION_ERROR_ESTIMATE = 12, &
-       MC_OPTION_MULTIPLIER = 13
+       MC_OPTION_MULTIPLIER = 13, MC_OPTION_LOAD_STEPS = 14, MC_OPTION_FRICTION_CT = 15, &
+       MC_OPTION_EAGER_RESULTS = 16
   integer, parameter, public :: MC_METHOD_MORTAR = 0, MC_METHOD_DUAL_MORTAR = 1, &
        MC_METHOD_NODE_TO_SEGMENT = 2
   integer, parameter, public :: MC_NORMAL_NONMORTAR = 0, MC_NORMAL_MORTAR = 1
@@ -63,16 +64,20 @@ module mortarcontact
        MC_INTERFACE_SPARSE = 2
   integer, parameter, public :: MC_MULTIPLIER_LINEAR = 0, MC_MULTIPLIER_QUADRATIC = 1
   integer, parameter, public :: MC_CONTACT_PRESSURE = 1, MC_CONTACT_FORCE = 2, MC_CONTACT_GAP = 3, &
-       MC_CONTACT_INITIAL_GAP = 4, MC_CONTACT_NORMAL = 5
+       MC_CONTACT_INITIAL_GAP = 4, MC_CONTACT_NORMAL = 5, MC_CONTACT_SHEAR = 6, MC_CONTACT_SLIP = 7, &
+       MC_CONTACT_SLIP_TOTAL = 8, MC_CONTACT_STATE = 9
+  integer, parameter, public :: MC_STATE_OPEN = 0, MC_STATE_STICK = 1, MC_STATE_SLIP = 2
+  integer, parameter, public :: MC_FRICTION_NONE = 0, MC_FRICTION_TRESCA = 1, MC_FRICTION_COULOMB = 2
   integer, parameter, public :: MC_MATRIX_FULL = 1, MC_MATRIX_TRIANGLE = 2
   integer, parameter, public :: MC_LOG_PHASE = 1, MC_LOG_ITERATION = 2
   integer, parameter, public :: MC_INFO_DOFS = 1, MC_INFO_FACTOR_NNZ = 2, MC_INFO_ITERATIONS = 3, &
        MC_INFO_ACTIVE_NODES = 4, MC_INFO_CONTACT_NODES = 5, MC_INFO_FACTORIZATIONS = 6, &
-       MC_INFO_INTERFACE_SOLVER = 7, &
+       MC_INFO_INTERFACE_SOLVER = 7, MC_INFO_STICK_NODES = 8, MC_INFO_SLIP_NODES = 9, &
        MC_INFO_TIME_ASSEMBLY = 20, MC_INFO_TIME_ANALYSIS = 21, MC_INFO_TIME_FACTORIZATION = 22, &
        MC_INFO_TIME_SOLVE = 23, MC_INFO_TIME_CONTACT = 24, MC_INFO_TIME_TOTAL = 25, &
        MC_INFO_STRAIN_ENERGY = 26, MC_INFO_COMPLEMENTARITY = 27, MC_INFO_EQUILIBRIUM = 28, &
-       MC_INFO_GAP_RESIDUAL = 29, MC_INFO_ERROR_ESTIMATE = 30
+       MC_INFO_GAP_RESIDUAL = 29, MC_INFO_ERROR_ESTIMATE = 30, MC_INFO_FRICTION_COMPLEMENTARITY = 31, &
+       MC_INFO_TIME_RESULTS = 32
 
   !> One scene (mc_model). Create with mc_create, free with mc_destroy.
   type, public :: mc_model
@@ -100,6 +105,7 @@ module mortarcontact
   public :: mc_set_load_vector, mc_get_equation_solution, mc_get_contact_load, mc_set_contact_curved
   public :: mc_set_body_count, mc_add_contact_pair, mc_set_pair_surface, mc_set_pair_surface_curved
   public :: mc_set_pair_gap_offset, mc_get_pair_contact_count, mc_get_pair_contact_nodes, mc_get_pair_contact
+  public :: mc_set_friction, mc_reset_history
 
   !> The log callback (mc_set_log_callback): a bind(C) subroutine of this interface, e.g.
   !>   subroutine my_log(user_data, level, message) bind(C)
@@ -298,6 +304,16 @@ module mortarcontact
        type(c_ptr), value :: m
        integer(c_int), value :: pair, field
        real(c_double), intent(out) :: out(*)
+     end function
+     integer(c_int) function c_mc_set_friction(m, pair, law, value) bind(C, name="mc_set_friction")
+       import :: c_ptr, c_int, c_double
+       type(c_ptr), value :: m
+       integer(c_int), value :: pair, law
+       real(c_double), value :: value
+     end function
+     integer(c_int) function c_mc_reset_history(m) bind(C, name="mc_reset_history")
+       import :: c_ptr, c_int
+       type(c_ptr), value :: m
      end function
      integer(c_int) function c_mc_set_host_body(m, body, n_nodes, xy, equations, n_equations) &
           bind(C, name="mc_set_host_body")
@@ -863,6 +879,26 @@ contains
     status = finish(model, c_mc_set_pair_gap_offset(model%ptr, int(pair, c_int), int(size(nodes), mc_int), &
          nodes, offset))
   end function mc_set_pair_gap_offset
+
+  ! ---- friction ---------------------------------------------------------------------------------
+
+  !> The friction law of a contact pair (1 for the two-body model's pair): MC_FRICTION_COULOMB
+  !> (value: mu >= 0), MC_FRICTION_TRESCA (value: the slip bound, a shear traction >= 0) or
+  !> MC_FRICTION_NONE (the default). Each mc_solve of a model with friction is a step from the last
+  !> converged state, in MC_OPTION_LOAD_STEPS increments; mc_reset_history returns to the unloaded state.
+  integer function mc_set_friction(model, pair, law, value) result(status)
+    type(mc_model), intent(inout) :: model
+    integer, intent(in) :: pair, law
+    real(mc_real), intent(in) :: value
+    status = finish(model, c_mc_set_friction(model%ptr, int(pair, c_int), int(law, c_int), value))
+  end function mc_set_friction
+
+  !> Forgets the converged state: the next solve starts from the unloaded state (u = 0, loads 0,
+  !> accumulated slip 0).
+  integer function mc_reset_history(model) result(status)
+    type(mc_model), intent(inout) :: model
+    status = finish(model, c_mc_reset_history(model%ptr))
+  end function mc_reset_history
 
   ! ---- host bodies: a legacy program's own matrices -------------------------------------------
 

@@ -5,7 +5,9 @@
 ! MC_OPTION_MULTIPLIER's values, and that scene with body 1 a host body held as a Smith and
 ! Griffiths program holds it (nf, g_g, storkm, loads(0:neq)), given through each of the host-body
 ! calls, index bases 1 and 0; assemblies: three stacked blocks as three bodies in two contact pairs
-! (a patch test: every contact pressure of both pairs is p), bad bodies and pairs.
+! (a patch test: every contact pressure of both pairs is p), bad bodies and pairs; friction: the
+! stick patch test (Tresca and Coulomb: every position sticks with shear -tau, no slip; load steps,
+! mc_reset_history, the infos) and bad input for mc_set_friction and the friction options.
 ! The contact patch test is examples/fortran/patch_test.f90 (also run by ctest).
 
 !> The log callback of the test: counts messages by level and keeps the phase messages.
@@ -74,6 +76,12 @@ program test_mortarcontact
   integer(mc_int) :: npos
   real(mc_real), allocatable :: bxy(:, :), pvals(:), pnormal(:, :), sig(:, :), ustack(:, :)
   integer(mc_int), allocatable :: bcells(:, :), bbottom(:, :), btop(:, :), bleft(:), pnodes(:)
+  ! friction: the stick patch test, an upper block of 3 P1 cells across on a lower one of 4
+  real(mc_real), parameter :: fric_p = 0.01d0, fric_mu = 0.5d0, fric_tau = 0.4d0 * fric_mu * fric_p
+  integer, parameter :: fric_nx(2) = [3, 4]
+  integer :: law, stick, slip
+  real(mc_real) :: fric_value, fcompl
+  real(mc_real), allocatable :: shear(:), fslip(:), fstate(:), utop(:, :)
 
   call check(mc_version_number() == MC_HEADER_VERSION_NUMBER, 'mc_version_number')
   call check(mc_version_string() == MC_HEADER_VERSION_STRING, 'mc_version_string = ' // mc_version_string())
@@ -442,6 +450,83 @@ program test_mortarcontact
   call expect(mc_set_body_count(m, 2), MC_ERROR_STATE, 'dropping body 3, which pair 2 uses')
   call expect(mc_get_displacement(m, 3, ustack), MC_OK, 'body 3 kept')
   call mc_destroy(m)
+
+  ! Friction: the stick patch test. Body 1 the block [0, 1] x [1, 2] (3 P1 cells across) on body 2,
+  ! [0, 1] x [0, 1] (4 cells: non-matching), nu = 0, in the uniform stress sigma_yy = -p,
+  ! sigma_xy = tau = 0.4 mu p, sigma_xx = 0: tractions on every free side, body 2's base held (the
+  ! exact field is 0 there with nu = 0). Body 1 is held along x by friction alone: every position
+  ! sticks with shear -tau, and its top moves by gamma y = 2 tau / E * 2 along x.
+  do law = MC_FRICTION_TRESCA, MC_FRICTION_COULOMB
+     call expect(mc_create(m), MC_OK, 'mc_create (friction)')
+     call expect(mc_set_friction(m, 1, law, 0.3d0), MC_ERROR_STATE, 'friction before any contact pair')
+     call check(index(mc_errmsg(m), 'contact pair') > 0, 'message: ' // mc_errmsg(m))
+     do k = 1, 2
+        call make_block(fric_nx(k), 2d0 - k)
+        call expect(mc_set_mesh(m, k, bxy, bcells), MC_OK, 'mc_set_mesh (friction)')
+        call expect(mc_set_material(m, k, 1d0, 0d0), MC_OK, 'mc_set_material (friction)')
+        call expect(mc_add_traction(m, k, reshape(bleft, [2, 1]), reshape([0d0, -fric_tau], [2, 1])), MC_OK, &
+             'traction on the left side')
+        call expect(mc_add_traction(m, k, reshape(bleft + int(fric_nx(k), mc_int), [2, 1]), &
+             reshape([0d0, fric_tau], [2, 1])), MC_OK, 'traction on the right side')
+        if (k == 1) then
+           call expect(mc_add_traction(m, 1, btop, spread([fric_tau, -fric_p], 2, size(btop, 2))), MC_OK, &
+                'traction on the top')
+           call expect(mc_set_contact(m, 1, bbottom), MC_OK, 'contact 1 (friction)')
+        else
+           call expect(mc_fix(m, 2, [(int(i, mc_int), i = 1, fric_nx(2) + 1)], MC_XY), MC_OK, 'base (friction)')
+           call expect(mc_set_contact(m, 2, btop), MC_OK, 'contact 2 (friction)')
+        end if
+     end do
+     ! bad input: the library's status and message; the model stays usable
+     call expect(mc_set_friction(m, 1, MC_FRICTION_COULOMB, -0.1d0), MC_ERROR_ARGUMENT, 'a negative mu')
+     call check(index(mc_errmsg(m), 'mu') > 0, 'message: ' // mc_errmsg(m))
+     call expect(mc_set_friction(m, 1, MC_FRICTION_TRESCA, -1d0), MC_ERROR_ARGUMENT, 'a negative bound')
+     call check(index(mc_errmsg(m), 'bound') > 0, 'message: ' // mc_errmsg(m))
+     call expect(mc_set_friction(m, 1, 3, 0.3d0), MC_ERROR_ARGUMENT, 'law 3')
+     call check(index(mc_errmsg(m), 'law = 3') > 0, 'message: ' // mc_errmsg(m))
+     call expect(mc_set_friction(m, 2, law, 0.3d0), MC_ERROR_ARGUMENT, 'pair 2 of 1')
+     call check(index(mc_errmsg(m), 'pair = 2') > 0, 'message: ' // mc_errmsg(m))
+     call expect(mc_set_option_int(m, MC_OPTION_LOAD_STEPS, 0), MC_ERROR_ARGUMENT, 'load steps 0')
+     call check(index(mc_errmsg(m), 'MC_OPTION_LOAD_STEPS') > 0, 'message: ' // mc_errmsg(m))
+     call expect(mc_set_option_real(m, MC_OPTION_FRICTION_CT, -1d0), MC_ERROR_ARGUMENT, 'a negative c_t')
+     ! Tresca: a bound above tau (mu p, as Coulomb's), so both stick
+     fric_value = fric_mu
+     if (law == MC_FRICTION_TRESCA) fric_value = fric_mu * fric_p
+     call expect(mc_set_friction(m, 1, law, fric_value), MC_OK, 'mc_set_friction')
+     call expect(mc_set_option_int(m, MC_OPTION_LOAD_STEPS, 2), MC_OK, 'MC_OPTION_LOAD_STEPS')
+     call expect(mc_set_option_real(m, MC_OPTION_FRICTION_CT, 0d0), MC_OK, 'MC_OPTION_FRICTION_CT')
+     call expect(mc_solve(m), MC_OK, 'mc_solve (friction)')
+     call expect(mc_get_pair_contact_count(m, 1, npos), MC_OK, 'mc_get_pair_contact_count (friction)')
+     call check(npos == fric_nx(1) + 1, 'a position per node of body 1''s bottom')
+     allocate(pvals(npos), shear(npos), fslip(npos), fstate(npos), utop(2, 2 * (fric_nx(1) + 1)))
+     call expect(mc_get_pair_contact(m, 1, MC_CONTACT_STATE, fstate), MC_OK, 'MC_CONTACT_STATE')
+     call check(all(fstate == MC_STATE_STICK), 'every position sticks')
+     call expect(mc_get_pair_contact(m, 1, MC_CONTACT_SHEAR, shear), MC_OK, 'MC_CONTACT_SHEAR')
+     call check(all(abs(shear + fric_tau) <= 1d-10 * fric_p), 'shear -tau everywhere')
+     call expect(mc_get_pair_contact(m, 1, MC_CONTACT_PRESSURE, pvals), MC_OK, 'MC_CONTACT_PRESSURE (friction)')
+     call check(all(abs(pvals - fric_p) <= 1d-10 * fric_p), 'pressure p everywhere')
+     call expect(mc_get_pair_contact(m, 1, MC_CONTACT_SLIP, fslip), MC_OK, 'MC_CONTACT_SLIP')
+     call check(all(abs(fslip) <= 1d-10 * fric_p), 'no slip')
+     call expect(mc_get_pair_contact(m, 1, MC_CONTACT_SLIP_TOTAL, fslip), MC_OK, 'MC_CONTACT_SLIP_TOTAL')
+     call check(all(abs(fslip) <= 1d-10 * fric_p), 'no accumulated slip')
+     call expect(mc_get_pair_contact(m, 1, MC_CONTACT_SHEAR, shear(2:)), MC_ERROR_ARGUMENT, 'shear of size n - 1')
+     call expect(mc_get_info_int(m, MC_INFO_STICK_NODES, stick), MC_OK, 'MC_INFO_STICK_NODES')
+     call expect(mc_get_info_int(m, MC_INFO_SLIP_NODES, slip), MC_OK, 'MC_INFO_SLIP_NODES')
+     call check(stick > 0 .and. slip == 0, 'stick rows only')
+     call expect(mc_get_info_real(m, MC_INFO_FRICTION_COMPLEMENTARITY, fcompl), MC_OK, &
+          'MC_INFO_FRICTION_COMPLEMENTARITY')
+     call check(fcompl <= 1d-10, 'friction complementarity: round-off')
+     call expect(mc_get_displacement(m, 1, utop), MC_OK, 'mc_get_displacement (friction)')
+     call check(abs(utop(1, 2 * (fric_nx(1) + 1)) - 4 * fric_tau) <= 1d-10 * fric_tau, &
+          'the top-right corner moves by gamma y = 4 tau along x')
+     ! forgotten, then solved again from the unloaded state: the same answer
+     call expect(mc_reset_history(m), MC_OK, 'mc_reset_history')
+     call expect(mc_solve(m), MC_OK, 'mc_solve after mc_reset_history')
+     call expect(mc_get_pair_contact(m, 1, MC_CONTACT_SHEAR, shear), MC_OK, 'MC_CONTACT_SHEAR after the reset')
+     call check(all(abs(shear + fric_tau) <= 1d-10 * fric_p), 'shear -tau after the reset')
+     deallocate(pvals, shear, fslip, fstate, utop)
+     call mc_destroy(m)
+  end do
 
   if (failures > 0) then
      print '(i0, a)', failures, ' check(s) failed'

@@ -52,7 +52,7 @@ struct SolveError : std::runtime_error {
 void usage(FILE *to) {
   std::fprintf(to,
                "usage: mortarcontact-run [--quiet | --verbose] [--gmsh PATH] scene.json\n"
-               "  Solves the frictionless contact of elastic bodies described by scene.json\n"
+               "  Solves the contact of elastic bodies, frictionless or with friction, described by scene.json\n"
                "  (format: docs/scene_format.md) with mortarcontact %s.\n"
                "  --quiet      no progress messages on stderr\n"
                "  --verbose    also each active-set iteration\n"
@@ -277,6 +277,15 @@ void set_options(mc_model *m, const Scene &scene) {
   setup(m, mc_set_option_int(m, MC_OPTION_ERROR_ESTIMATE, s.error_estimate ? 1 : 0), scene, "solver.error_estimate",
         "mc_set_option_int");
   setup(m, mc_set_option_int(m, MC_OPTION_MULTIPLIER, s.multiplier), scene, "solver.multiplier", "mc_set_option_int");
+  setup(m, mc_set_option_int(m, MC_OPTION_LOAD_STEPS, scene.load_steps), scene, "load_steps", "mc_set_option_int");
+  setup(m, mc_set_option_real(m, MC_OPTION_FRICTION_CT, s.friction_ct), scene, "solver.friction_ct", "mc_set_option_real");
+}
+
+// Each pair's friction law (after the pairs exist: mc_set_friction needs its pair).
+void set_friction(mc_model *m, const Scene &scene) {
+  for (const Pair &p : scene.pairs)
+    if (!p.friction_key.empty())
+      setup(m, mc_set_friction(m, p.number, p.friction_law, p.friction_value), scene, p.friction_key, "mc_set_friction");
 }
 
 // ---- results ------------------------------------------------------------------------------
@@ -290,7 +299,27 @@ struct ContactResults {
   int pair = 1, nonmortar = 1, mortar = 2;
   std::vector<int> nodes;
   std::vector<double> pressure, force, gap, normal;  // normal: 2 per node
+  // With friction in the scene (any pair), per position: MC_CONTACT_SHEAR, _SLIP, _SLIP_TOTAL, _STATE.
+  std::vector<double> shear, slip, slip_total, state;
 };
+
+// The friction fields of pair `number` (the pair getters: the same positions, in the same order,
+// as the two-body getters give pair 1's).
+void friction_results(const mc_model *m, int number, ContactResults &r) {
+  const size_t n = r.nodes.size();
+  std::vector<double> *fields[4] = {&r.shear, &r.slip, &r.slip_total, &r.state};
+  const int ids[4] = {MC_CONTACT_SHEAR, MC_CONTACT_SLIP, MC_CONTACT_SLIP_TOTAL, MC_CONTACT_STATE};
+  for (int k = 0; k < 4; ++k) {
+    fields[k]->resize(n);
+    if (n > 0) check(m, mc_get_pair_contact(m, number, ids[k], fields[k]->data()), "mc_get_pair_contact");
+  }
+}
+
+const char *state_name(double state) {
+  if (state == MC_STATE_STICK) return "stick";
+  if (state == MC_STATE_SLIP) return "slip";
+  return "open";
+}
 
 // A pair of the scene's "pairs" list, through the pair getters.
 ContactResults pair_results(const mc_model *m, const Pair &p) {
@@ -333,9 +362,13 @@ ContactResults contact_results(const mc_model *m) {
 
 // Every pair's results, in the pairs' order.
 std::vector<ContactResults> all_contact_results(const mc_model *m, const Scene &scene) {
-  if (!scene.has_pairs) return {contact_results(m)};
   std::vector<ContactResults> all;
-  for (const Pair &p : scene.pairs) all.push_back(pair_results(m, p));
+  if (!scene.has_pairs)
+    all.push_back(contact_results(m));
+  else
+    for (const Pair &p : scene.pairs) all.push_back(pair_results(m, p));
+  if (has_friction(scene))
+    for (ContactResults &r : all) friction_results(m, r.pair, r);
   return all;
 }
 
@@ -379,6 +412,20 @@ void print_solve_summary(const mc_model *m, const Scene &scene, const std::vecto
     std::printf("  error estimate: %.3g %% (relative, energy norm of %s)\n", 100 * estimate,
                 scene.bodies.size() == 2 ? "both bodies" : "all bodies");
   }
+  if (has_friction(scene)) {
+    int64_t stick = 0, slip = 0;
+    double friction = 0;
+    check(m, mc_get_info_int(m, MC_INFO_STICK_NODES, &stick), "mc_get_info_int");
+    check(m, mc_get_info_int(m, MC_INFO_SLIP_NODES, &slip), "mc_get_info_int");
+    check(m, mc_get_info_real(m, MC_INFO_FRICTION_COMPLEMENTARITY, &friction), "mc_get_info_real");
+    std::printf("  friction: %lld stick, %lld slip (constraint rows), complementarity %.2e, %d load step%s\n",
+                (long long)stick, (long long)slip, friction, scene.load_steps, scene.load_steps == 1 ? "" : "s");
+    for (const ContactResults &r : all) {
+      size_t count[3] = {0, 0, 0};  // open, stick, slip positions
+      for (double st : r.state) ++count[st == MC_STATE_STICK ? 1 : st == MC_STATE_SLIP ? 2 : 0];
+      std::printf("  pair %d friction: %zu open, %zu stick, %zu slip positions\n", r.pair, count[0], count[1], count[2]);
+    }
+  }
   double resultant[2];
   if (!scene.has_pairs) {
     contact_resultant(all[0], resultant);
@@ -396,18 +443,23 @@ void print_solve_summary(const mc_model *m, const Scene &scene, const std::vecto
 }
 
 // x,y,pressure,gap per contact node of body 1; with "pairs", a first column pair and the rows
-// of every pair, pair by pair (x, y on the pair's non-mortar body).
+// of every pair, pair by pair (x, y on the pair's non-mortar body); with friction in the scene,
+// the columns shear,slip,slip_total,state after them (state: open, stick or slip).
 void write_pressure_csv(const std::string &path, const std::vector<BodyMesh> &bodies,
-                        const std::vector<ContactResults> &all, bool pair_column) {
+                        const std::vector<ContactResults> &all, bool pair_column, bool friction) {
   FILE *f = std::fopen(path.c_str(), "w");
   if (!f) throw SolveError("cannot write the pressure CSV " + path + ": " + std::strerror(errno));
-  std::fprintf(f, pair_column ? "pair,x,y,pressure,gap\n" : "x,y,pressure,gap\n");
+  std::fprintf(f, "%s%s\n", pair_column ? "pair,x,y,pressure,gap" : "x,y,pressure,gap",
+               friction ? ",shear,slip,slip_total,state" : "");
   for (const ContactResults &r : all) {
     const BodyMesh &body = bodies[size_t(r.nonmortar - 1)];
     for (size_t j = 0; j < r.nodes.size(); ++j) {
       const size_t i = size_t(r.nodes[j]);
       if (pair_column) std::fprintf(f, "%d,", r.pair);
-      std::fprintf(f, "%.17g,%.17g,%.17g,%.17g\n", body.xy[2 * i], body.xy[2 * i + 1], r.pressure[j], r.gap[j]);
+      std::fprintf(f, "%.17g,%.17g,%.17g,%.17g", body.xy[2 * i], body.xy[2 * i + 1], r.pressure[j], r.gap[j]);
+      if (friction)
+        std::fprintf(f, ",%.17g,%.17g,%.17g,%s", r.shear[j], r.slip[j], r.slip_total[j], state_name(r.state[j]));
+      std::fputc('\n', f);
     }
   }
   if (std::fclose(f) != 0) throw SolveError("cannot write the pressure CSV " + path);
@@ -567,6 +619,7 @@ void set_up(mc_model *m, const Scene &scene, const std::vector<BodyMesh> &bodies
     if (!scene.has_pairs) set_contact(m, b, bodies[size_t(b - 1)], scene);
   }
   if (scene.has_pairs) set_pairs(m, bodies, scene);
+  set_friction(m, scene);
 }
 
 // One solve of the scene on its meshes: the whole of a plain run, one step of an adaptive one.
@@ -663,7 +716,7 @@ void write_outputs(const Solution &s, const Scene &scene, const std::string &las
   }
   if (!scene.output.pressure_csv.empty()) {
     make_parent_directory(scene.output.pressure_csv);
-    write_pressure_csv(scene.output.pressure_csv, s.bodies, s.results, scene.has_pairs);
+    write_pressure_csv(scene.output.pressure_csv, s.bodies, s.results, scene.has_pairs, has_friction(scene));
     std::printf("wrote %s\n", scene.output.pressure_csv.c_str());
   }
 }

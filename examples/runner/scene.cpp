@@ -288,9 +288,32 @@ Body parse_body(const Value &v, int index, const std::string &base_dir, bool wit
   return b;
 }
 
+// A pair's "friction": {"law": "coulomb", "mu": 0.3}, {"law": "tresca", "bound": 0.01} or
+// {"law": "none"}; the value must be finite and >= 0 (the library checks it again).
+void parse_friction(const Value &f, Pair &p) {
+  p.friction_key = f.key();
+  if (!f.has("law")) f.expect_object({"law", "mu", "bound"});  // a typo of "law" first
+  p.friction_law = f.at("law").choice({{"none", MC_FRICTION_NONE}, {"tresca", MC_FRICTION_TRESCA},
+                                       {"coulomb", MC_FRICTION_COULOMB}});
+  const char *value_key = p.friction_law == MC_FRICTION_COULOMB ? "mu" : "bound";
+  if (p.friction_law == MC_FRICTION_NONE) {
+    f.expect_object({"law"});
+    return;
+  }
+  if (p.friction_law == MC_FRICTION_COULOMB)
+    f.expect_object({"law", "mu"});
+  else
+    f.expect_object({"law", "bound"});
+  const Value value = f.at(value_key);
+  p.friction_value = value.number();
+  if (!(p.friction_value >= 0))
+    value.fail(std::string(p.friction_law == MC_FRICTION_COULOMB ? "the friction coefficient" : "the Tresca slip bound") +
+               " must be >= 0, got " + value.describe());
+}
+
 // pairs[k]: its bodies must exist and differ; both surfaces are required.
 Pair parse_pair(const Value &v, int number, int n_bodies) {
-  v.expect_object({"nonmortar", "mortar", "nonmortar_surface", "mortar_surface", "gap_offset"});
+  v.expect_object({"nonmortar", "mortar", "nonmortar_surface", "mortar_surface", "gap_offset", "friction"});
   Pair p;
   p.key = v.key();
   p.number = number;
@@ -317,18 +340,19 @@ Pair parse_pair(const Value &v, int number, int n_bodies) {
     p.gap_offset = v.child("gap_offset").number();
     p.gap_offset_key = v.key() + ".gap_offset";
   }
+  if (v.has("friction")) parse_friction(v.child("friction"), p);
   return p;
 }
 
 Solver parse_solver(const Value &v) {
   // Defaults: the library's (mortarcontact.h).
   Solver s{MC_METHOD_MORTAR, 1e-10, 200, MC_NORMAL_NONMORTAR, MC_Q1_FULL, MC_ORDERING_AUTO, MC_SURFACE_SMOOTH, 40, 0,
-           MC_INTERFACE_AUTO, true, MC_MULTIPLIER_LINEAR};
+           MC_INTERFACE_AUTO, true, MC_MULTIPLIER_LINEAR, 0.0};
   if (!v.has("solver")) return s;
   Value o = v.child("solver");
   o.expect_object({"method", "tolerance", "max_iterations", "contact_normal", "q1_integration", "ordering",
                    "contact_surface", "feature_angle", "threads", "interface_solver", "error_estimate",
-                   "multiplier"});
+                   "multiplier", "friction_ct"});
   if (o.has("method"))
     s.method = o.child("method").choice({{"mortar", MC_METHOD_MORTAR},
                                          {"dual_mortar", MC_METHOD_DUAL_MORTAR},
@@ -352,6 +376,11 @@ Solver parse_solver(const Value &v) {
   if (o.has("error_estimate")) s.error_estimate = o.child("error_estimate").boolean();
   if (o.has("multiplier"))
     s.multiplier = o.child("multiplier").choice({{"linear", MC_MULTIPLIER_LINEAR}, {"quadratic", MC_MULTIPLIER_QUADRATIC}});
+  if (o.has("friction_ct")) {
+    s.friction_ct = o.child("friction_ct").number();
+    if (!(s.friction_ct >= 0))
+      o.child("friction_ct").fail("must be >= 0 (0: scaled automatically), got " + o.child("friction_ct").describe());
+  }
   return s;
 }
 
@@ -429,7 +458,8 @@ Adaptive parse_adaptive(const Value &v, const std::string &base_dir) {
 Scene parse_scene(const std::string &text, const std::string &path) {
   const json root = parse_json(text, path);
   const Value v(root, "", path);
-  v.expect_object({"description", "plane", "thickness", "bodies", "pairs", "solver", "output", "analytic", "adaptive"});
+  v.expect_object({"description", "plane", "thickness", "bodies", "pairs", "friction", "load_steps", "solver", "output",
+                   "analytic", "adaptive"});
   const std::string base_dir = std::filesystem::path(path).parent_path().string();
   Scene s;
   s.path = path;
@@ -474,8 +504,12 @@ Scene parse_scene(const std::string &text, const std::string &path) {
     p.gap_offset = s.bodies[0].gap_offset;
     p.gap_offset_key = "bodies[0].gap_offset";
     p.implied = true;
+    if (v.has("friction")) parse_friction(v.child("friction"), p);
     s.pairs.push_back(p);
   }
+  if (s.has_pairs && v.has("friction"))
+    v.child("friction").fail("the scene lists \"pairs\": give each pair its friction (pairs[].friction)");
+  if (v.has("load_steps")) s.load_steps = v.child("load_steps").integer_in(1, 1000000);
   s.solver = parse_solver(v);
   s.output = parse_output(v, base_dir);
   s.hertz = parse_analytic(v);
@@ -496,6 +530,12 @@ Scene parse_scene(const std::string &text, const std::string &path) {
       v.child("solver.error_estimate").fail("adaptive refinement needs the error estimate: leave it true");
   }
   return s;
+}
+
+bool has_friction(const Scene &scene) {
+  for (const Pair &p : scene.pairs)
+    if (p.friction_law != MC_FRICTION_NONE) return true;
+  return false;
 }
 
 Scene load_scene(const std::string &path) {

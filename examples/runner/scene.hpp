@@ -5,6 +5,8 @@
 #ifndef MC_RUNNER_SCENE_HPP
 #define MC_RUNNER_SCENE_HPP
 
+#include "mortarcontact.h"
+
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -57,6 +59,11 @@ struct Pair {
   double gap_offset = 0;       // on every node of the non-mortar surface
   std::string gap_offset_key;
   bool implied = false;
+  // Friction (docs/scene_format.md, "friction"): pairs[k].friction, or the top-level "friction"
+  // of a scene without "pairs" (the implied pair 1). mc_set_friction(law, friction_value).
+  int friction_law = MC_FRICTION_NONE;  // MC_FRICTION_*
+  double friction_value = 0;            // Coulomb: mu; Tresca: the slip bound
+  std::string friction_key;             // "pairs[0].friction" or "friction", for messages
 };
 
 struct Solver {
@@ -72,6 +79,7 @@ struct Solver {
   int interface_solver;  // MC_INTERFACE_*: MC_OPTION_INTERFACE_SOLVER
   bool error_estimate;   // MC_OPTION_ERROR_ESTIMATE: estimate the error (and write the indicators)
   int multiplier;        // MC_MULTIPLIER_*: MC_OPTION_MULTIPLIER (a body 1 of second-order cells)
+  double friction_ct;    // MC_OPTION_FRICTION_CT: 0 = scaled automatically
 };
 
 struct Output {
@@ -104,6 +112,10 @@ struct Adaptive {
   long long max_dofs = 0;      // stop before a mesh predicted larger than this; 0 = no limit
 };
 
+// Whether any pair of the scene has friction (law Tresca or Coulomb).
+struct Scene;
+bool has_friction(const Scene &scene);
+
 struct Scene {
   std::string path;  // the scene file, for messages
   std::string description;
@@ -112,6 +124,7 @@ struct Scene {
   std::vector<Body> bodies;  // bodies[0] = body 1 (the non-mortar side of a two-body scene)
   std::vector<Pair> pairs;   // at least one; without "pairs" in the file, the implied pair 1
   bool has_pairs = false;    // the file lists "pairs"
+  int load_steps = 1;        // MC_OPTION_LOAD_STEPS: the loads ramped in this many increments (friction)
   Solver solver;
   Output output;
   HertzCheck hertz;

@@ -71,8 +71,11 @@ void require_finite_results(mc::Model &model) {
     const mc::Body &body = model.body[b];
     if (!body.has_mesh) continue;
     for (size_t i = 0; i < body.u.size(); ++i) if (!std::isfinite(body.u[i])) overflow("u", i, b + 1, body.u[i]);
-    for (size_t i = 0; i < body.stress.size(); ++i)
-      if (!std::isfinite(body.stress[i])) overflow("sigma", i, b + 1, body.stress[i]);
+    if (model.options.eager_results && !body.host) {  // (else checked when first asked for)
+      const std::vector<double> &stress = model.cell_stresses(b);
+      for (size_t i = 0; i < stress.size(); ++i)
+        if (!std::isfinite(stress[i])) overflow("sigma", i, b + 1, stress[i]);
+    }
     for (size_t i = 0; i < body.reaction.size(); ++i)
       if (!std::isfinite(body.reaction[i])) overflow("r", i, b + 1, body.reaction[i]);
   }
@@ -376,6 +379,12 @@ mc_status mc_set_option_int(mc_model *m, int option, int64_t value) {
         model.options.error_estimate = value == 1;
         model.values_changed();
         break;
+      case MC_OPTION_EAGER_RESULTS:
+        if (value != 0 && value != 1)
+          fail(MC_ERROR_ARGUMENT, "value = %lld: MC_OPTION_EAGER_RESULTS is 0 (results when asked for) or 1 (every solve "
+               "computes them)", (long long)value);
+        model.options.eager_results = value == 1;  // when, not what: the results stay valid
+        break;
       case MC_OPTION_INTERFACE_SOLVER:
         if (value < MC_INTERFACE_AUTO || value > MC_INTERFACE_SPARSE)
           fail(MC_ERROR_ARGUMENT, "value = %lld: MC_OPTION_INTERFACE_SOLVER takes MC_INTERFACE_AUTO (0), "
@@ -383,8 +392,15 @@ mc_status mc_set_option_int(mc_model *m, int option, int64_t value) {
         model.options.interface_solver = int(value);
         model.structure_changed();  // the two paths factorize different matrices
         break;
+      case MC_OPTION_LOAD_STEPS:
+        if (value < 1 || value > 1000000)
+          fail(MC_ERROR_ARGUMENT, "value = %lld: MC_OPTION_LOAD_STEPS takes 1 to 1000000", (long long)value);
+        model.options.load_steps = int(value);
+        model.values_changed();
+        break;
       case MC_OPTION_TOLERANCE:
       case MC_OPTION_FEATURE_ANGLE:
+      case MC_OPTION_FRICTION_CT:
         fail(MC_ERROR_ARGUMENT, "option = %d is real-valued: use mc_set_option_real", option);
       default:
         fail(MC_ERROR_ARGUMENT, "option = %d: not an integer option", option);
@@ -401,11 +417,20 @@ mc_status mc_set_option_real(mc_model *m, int option, double value) {
       model.structure_changed();
       return;
     }
+    if (option == MC_OPTION_FRICTION_CT) {
+      if (!(value >= 0 && std::isfinite(value)))
+        fail(MC_ERROR_ARGUMENT, "value = %g: MC_OPTION_FRICTION_CT must be finite and >= 0 (0: scaled automatically)",
+             value);
+      model.options.friction_ct = value;
+      model.values_changed();
+      return;
+    }
     if (option != MC_OPTION_TOLERANCE) {
       if (option == MC_OPTION_METHOD || option == MC_OPTION_MAX_ITERATIONS || option == MC_OPTION_ORDERING ||
           option == MC_OPTION_Q1_INTEGRATION || option == MC_OPTION_CONTACT_NORMAL ||
           option == MC_OPTION_CONTACT_SURFACE || option == MC_OPTION_THREADS || option == MC_OPTION_INTERFACE_SOLVER ||
-          option == MC_OPTION_ERROR_ESTIMATE || option == MC_OPTION_MULTIPLIER)
+          option == MC_OPTION_ERROR_ESTIMATE || option == MC_OPTION_MULTIPLIER || option == MC_OPTION_LOAD_STEPS ||
+          option == MC_OPTION_EAGER_RESULTS)
         fail(MC_ERROR_ARGUMENT, "option = %d is integer-valued: use mc_set_option_int", option);
       fail(MC_ERROR_ARGUMENT, "option = %d: not a real option", option);
     }
@@ -442,8 +467,10 @@ mc_status mc_get_info_int(const mc_model *m, int info, int64_t *value) {
       case MC_INFO_CONTACT_NODES: *value = i.contact_rows; break;
       case MC_INFO_FACTORIZATIONS: *value = i.factorizations; break;
       case MC_INFO_INTERFACE_SOLVER: *value = i.interface_solver; break;
+      case MC_INFO_STICK_NODES: *value = i.stick; break;
+      case MC_INFO_SLIP_NODES: *value = i.slip; break;
       default:
-        if (info >= MC_INFO_TIME_ASSEMBLY && info <= MC_INFO_ERROR_ESTIMATE)
+        if (info >= MC_INFO_TIME_ASSEMBLY && info <= MC_INFO_TIME_RESULTS)
           fail(MC_ERROR_ARGUMENT, "info = %d is real-valued: use mc_get_info_real", info);
         fail(MC_ERROR_ARGUMENT, "info = %d: not an info", info);
     }
@@ -465,9 +492,11 @@ mc_status mc_get_info_real(const mc_model *m, int info, double *value) {
       case MC_INFO_COMPLEMENTARITY: *value = i.complementarity; break;
       case MC_INFO_EQUILIBRIUM: *value = i.equilibrium; break;
       case MC_INFO_GAP_RESIDUAL: *value = i.gap_residual; break;
-      case MC_INFO_ERROR_ESTIMATE: *value = i.error_estimate; break;
+      case MC_INFO_ERROR_ESTIMATE: *value = model.error_estimate(); break;  // (computed if not yet)
+      case MC_INFO_TIME_RESULTS: *value = model.results_seconds(); break;
+      case MC_INFO_FRICTION_COMPLEMENTARITY: *value = i.friction_complementarity; break;
       default:
-        if (info >= MC_INFO_DOFS && info <= MC_INFO_INTERFACE_SOLVER)
+        if (info >= MC_INFO_DOFS && info <= MC_INFO_SLIP_NODES)
           fail(MC_ERROR_ARGUMENT, "info = %d is integer-valued: use mc_get_info_int", info);
         fail(MC_ERROR_ARGUMENT, "info = %d: not an info", info);
     }
@@ -488,7 +517,8 @@ mc_status mc_get_stress(const mc_model *m, int body, double *sigma) {
     const mc::Body &b = solved_body(model, body);
     refuse_host(b, body, "mc_get_stress", "a host body has no cells: the host computes its stresses from mc_get_equation_solution");
     require_pointer(sigma, "sigma");
-    std::memcpy(sigma, b.stress.data(), b.stress.size() * sizeof(double));
+    const std::vector<double> &stress = model.cell_stresses(body - 1);  // (computed if not yet)
+    std::memcpy(sigma, stress.data(), stress.size() * sizeof(double));
   });
 }
 
@@ -497,7 +527,8 @@ mc_status mc_get_nodal_stress(const mc_model *m, int body, double *sigma) {
     const mc::Body &b = solved_body(model, body);
     refuse_host(b, body, "mc_get_nodal_stress", "a host body has no cells: the host computes its stresses from mc_get_equation_solution");
     require_pointer(sigma, "sigma");
-    std::memcpy(sigma, b.nodal_stress.data(), b.nodal_stress.size() * sizeof(double));
+    const std::vector<double> &stress = model.nodal_stresses(body - 1);  // (computed if not yet)
+    std::memcpy(sigma, stress.data(), stress.size() * sizeof(double));
   });
 }
 
@@ -508,8 +539,9 @@ mc_status mc_get_error_indicator(const mc_model *m, int body, double *eta) {
     if (!model.options.error_estimate)
       fail(MC_ERROR_STATE, "no error estimate: MC_OPTION_ERROR_ESTIMATE is 0 (set it to 1 and solve again)");
     require_pointer(eta, "eta");
+    const std::vector<double> &indicators = model.error_indicators(body - 1);  // (computed if not yet)
     std::fill(eta, eta + b.mesh.n_cells(), 0.0);  // (a body the estimate did not reach: 0)
-    if (!b.error_indicator.empty()) std::memcpy(eta, b.error_indicator.data(), b.error_indicator.size() * sizeof(double));
+    if (!indicators.empty()) std::memcpy(eta, indicators.data(), indicators.size() * sizeof(double));
   });
 }
 

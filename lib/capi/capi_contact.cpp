@@ -293,6 +293,12 @@ const std::vector<int> &legacy_positions(const mc::Model &model) {
   return solved_pair_positions(model, 0);
 }
 
+void check_field(int field) {
+  if (field < MC_CONTACT_PRESSURE || field > MC_CONTACT_STATE)
+    fail(MC_ERROR_ARGUMENT, "field = %d: must be MC_CONTACT_PRESSURE (1), _FORCE (2), _GAP (3), _INITIAL_GAP (4), "
+         "_NORMAL (5), _SHEAR (6), _SLIP (7), _SLIP_TOTAL (8) or _STATE (9)", field);
+}
+
 // One field at the given positions (MC_CONTACT_NORMAL: 2 per position).
 void copy_field(const mc::Model &model, const std::vector<int> &positions, int field, double *out) {
   for (size_t j = 0; j < positions.size(); ++j) {
@@ -308,18 +314,16 @@ void copy_field(const mc::Model &model, const std::vector<int> &positions, int f
         out[2 * j] = n.x, out[2 * j + 1] = n.y;
         break;
       }
+      case MC_CONTACT_SHEAR: out[j] = model.contact_shear[pos]; break;
+      case MC_CONTACT_SLIP: out[j] = model.contact_slip[pos]; break;
+      case MC_CONTACT_SLIP_TOTAL: out[j] = model.contact_slip_total[pos]; break;
+      case MC_CONTACT_STATE: out[j] = double(model.contact_state[pos]); break;
       default:
-        fail(MC_ERROR_ARGUMENT, "field = %d: must be MC_CONTACT_PRESSURE (1), _FORCE (2), _GAP (3), _INITIAL_GAP (4) or "
-             "_NORMAL (5)", field);
+        check_field(field);
     }
   }
 }
 
-void check_field(int field) {
-  if (field < MC_CONTACT_PRESSURE || field > MC_CONTACT_NORMAL)
-    fail(MC_ERROR_ARGUMENT, "field = %d: must be MC_CONTACT_PRESSURE (1), _FORCE (2), _GAP (3), _INITIAL_GAP (4) or "
-         "_NORMAL (5)", field);
-}
 
 template <class F>
 mc_status legacy_array(const mc_model *m, void *out, const char *name, F &&copy) {
@@ -371,6 +375,33 @@ mc_status mc_get_contact_initial_gap(const mc_model *m, double *g0) {
 mc_status mc_get_contact_normal(const mc_model *m, double *n) {
   return legacy_array(m, n, "n", [&](const mc::Model &model, const std::vector<int> &pos) {
     copy_field(model, pos, MC_CONTACT_NORMAL, n);
+  });
+}
+
+mc_status mc_set_friction(mc_model *m, int pair, int law, double value) {
+  return guard(m, [&](mc::Model &model) {
+    if (model.pairs.empty())
+      fail(MC_ERROR_STATE, "the model has no contact pair: make one (mc_set_contact or mc_add_contact_pair) before "
+           "setting its friction");
+    const int p = pair_index(model, pair);
+    if (law != MC_FRICTION_NONE && law != MC_FRICTION_TRESCA && law != MC_FRICTION_COULOMB)
+      fail(MC_ERROR_ARGUMENT, "law = %d: must be MC_FRICTION_NONE (0), MC_FRICTION_TRESCA (1) or MC_FRICTION_COULOMB (2)",
+           law);
+    if (!(value >= 0 && std::isfinite(value)))
+      fail(MC_ERROR_ARGUMENT, "value = %g: %s must be finite and >= 0", value,
+           law == MC_FRICTION_TRESCA ? "the Tresca slip bound" : law == MC_FRICTION_COULOMB ? "mu" : "the value");
+    mc::ContactPair &c = model.pairs[p];
+    const bool had = c.friction_law != MC_FRICTION_NONE, has = law != MC_FRICTION_NONE;
+    c.friction_law = law, c.friction_value = has ? value : 0;
+    if (had != has) model.structure_changed();  // tangential rows come or go
+    else model.values_changed();
+  });
+}
+
+mc_status mc_reset_history(mc_model *m) {
+  return guard(m, [&](mc::Model &model) {
+    model.reset_history();
+    model.values_changed();
   });
 }
 

@@ -272,6 +272,16 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, co
   rows.aux_count += last - first + 1;
 }
 
+// ConstraintRows::measure of a run's rows (one per trace point, in order): the integrals of the
+// trace points' hats over the run's elements (their quadrature weights hold the line measure).
+void append_trace_hat_measures(const ContactRun &run, ConstraintRows &rows) {
+  const int n = int(run.trace.size());
+  std::vector<double> hat(n, 0.0);
+  for (int e = 0; e < int(run.elements.size()); ++e)
+    for (const QuadraturePoint &q : run.elements[e]) hat[e] += q.weight * (1 - q.s), hat[(e + 1) % n] += q.weight * q.s;
+  rows.measure.insert(rows.measure.end(), hat.begin(), hat.end());
+}
+
 }  // namespace
 
 ConstraintRows build_constraint_rows(const ContactGeometry &g, int method, int multiplier, const LineMeasure &measure) {
@@ -283,6 +293,7 @@ ConstraintRows build_constraint_rows(const ContactGeometry &g, int method, int m
         TracePoint t;
         t.a = int(pos), t.normal = g.normals[pos], t.gap0 = g.gap0[pos], t.projection = g.projection[pos];
         append_pointwise_row(g, rows, t);
+        rows.measure.push_back(g.tributary[pos]);
       }
     return rows;
   }
@@ -297,6 +308,7 @@ ConstraintRows build_constraint_rows(const ContactGeometry &g, int method, int m
     } else {
       mortar_rows(g, run, method, measure, rows);
     }
+    append_trace_hat_measures(run, rows);
   }
   return rows;
 }

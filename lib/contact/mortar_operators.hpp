@@ -32,6 +32,11 @@ struct ConstraintRows {
   // sum_l vector2 . u2 <= g0). Empty: every entry's direction is its row's normal.
   std::vector<Point> vector1, vector2;
   std::vector<double> gap0;
+  // Per row, the integral of its multiplier's function over Gamma_c (the line measure included): a
+  // traction t acting on the row's multiplier is the force t * measure[r] (friction's Tresca
+  // bound). The trace point's hat for the paper's rows, the position's tributary measure for
+  // node-to-segment, the multiplier's integral for the weak rows.
+  std::vector<double> measure;
   // The contact pressure of a weak row's method (a quadratic body 1): the multiplier field
   // mu = sum_i (lambda_i / int psi_i) psi_i itself, continuous piecewise linear on Gamma_c, at each
   // contact position: pressure[pos] = sum over (row, c) in pressure_of_position[pos] of

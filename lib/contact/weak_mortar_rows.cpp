@@ -267,6 +267,7 @@ void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, bool quad
     rows.normal.push_back(middle ? g.normals[mid]
                           : k >= 0 ? run.trace[k].normal : unit(plus(run.trace.front().normal, run.trace.back().normal)));
     rows.gap0.push_back(gap[r] / total[r]);
+    rows.measure.push_back(total[r]);
     rows.own_position.push_back(middle ? mid : k >= 0 && run.trace[k].is_position() ? run.trace[k].a : -1);
     rows.aux.push_back(-1);
   }

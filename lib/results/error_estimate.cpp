@@ -1,4 +1,5 @@
-// The error estimate every solve reports (MC_INFO_ERROR_ESTIMATE, mc_get_error_indicator):
+// The error estimate of a solve (MC_INFO_ERROR_ESTIMATE, mc_get_error_indicator; computed on demand,
+// results_on_demand.cpp):
 // Zienkiewicz-Zhu recovery in the cells of both bodies, plus the contact terms on body 1's
 // contact edges (docs/theory.md, "Error estimate").
 //
@@ -18,7 +19,6 @@
 #include "bodies/cell_shapes.hpp"
 #include "solve/model.hpp"
 #include "bodies/plane_vectors.hpp"
-#include "support/stopwatch.hpp"
 #include "bodies/stress_recovery.hpp"
 #include <cmath>
 
@@ -27,15 +27,15 @@ namespace mc {
 namespace {
 
 // The contact terms of body 1's contact edge `seg` (a curve segment of the non-mortar surface),
-// added to the indicator of the cell that owns the edge.
+// added to the indicator of the cell that owns the edge. stress: 4 per edge node (the ends, then
+// the middle), the owning cell's own stress there.
 double contact_edge_terms(const Model &model, const ContactGeometry &g, int first_position, int seg, const PlaneLaw &law,
-                          const std::vector<double> &stress, const std::vector<char> &owns_row) {
+                          const double *stress, const std::vector<char> &owns_row) {
   const CurveSegment &c = g.nonmortar.segments()[seg];
   std::array<int, 3> pos = g.segment_positions[seg];  // the stacked positions (Model::contact_pressure's)
   for (int &p : pos)
     if (p >= 0) p += first_position;
   const int nodes = c.quadratic() ? 3 : 2;
-  const int node[3] = {c.a, c.b, c.mid};
   double pressure[3] = {0, 0, 0}, gap[3] = {0, 0, 0};
   bool touched = false;
   for (int a = 0; a < nodes; ++a) {
@@ -67,7 +67,7 @@ double contact_edge_terms(const Model &model, const ContactGeometry &g, int firs
     const double weight = w[q] * g.nonmortar.speed(seg, s[q]) * measure.weight(x);
     double sigma[3] = {0, 0, 0}, p = 0, gp = 0;  // recovered xx, yy, xy along the edge
     for (int a = 0; a < nodes; ++a) {
-      for (int k = 0; k < 3; ++k) sigma[k] += shape[a] * stress[4 * size_t(node[a]) + k];
+      for (int k = 0; k < 3; ++k) sigma[k] += shape[a] * stress[4 * a + k];
       p += shape[a] * pressure[a], gp += shape[a] * gap[a];
     }
     const double normal_stress = n.x * n.x * sigma[0] + n.y * n.y * sigma[1] + 2 * n.x * n.y * sigma[2];
@@ -79,17 +79,17 @@ double contact_edge_terms(const Model &model, const ContactGeometry &g, int firs
 
 }  // namespace
 
-void Model::estimate_error() {
-  infos.error_estimate = 0;
-  for (Body &b : body) b.error_indicator.clear();
-  if (!options.error_estimate) return;
+void Model::estimate_error(double &estimate, std::vector<std::vector<double>> &indicators) const {
+  estimate = 0;
+  indicators.assign(body.size(), std::vector<double>());
   double eta2 = 0;
   std::vector<std::vector<double>> cell_eta2(body.size()), recovered(body.size());
-  // Each body on its own thread when the solve runs two (the recovery's phase does the same).
-  for_each_body([&](int b, BodyWork &work) {
+  // Each body on its own thread when the solve runs two (MC_OPTION_THREADS, as the recovery's
+  // phase does); their timings are not infos (the estimate's time is MC_INFO_TIME_RESULTS').
+  Infos ignored;
+  run_bodies(body_threads(), [&](int b, BodyWork &) {
     const Body &body_ = body[b];
     if (!body_.has_mesh || body_.host || !system_[b]) return;
-    Stopwatch watch(work.infos.t_estimate);
     const Mesh &mesh = body_.mesh;
     const int npc = mesh.nodes_per_cell();
     const bool bbar = options.q1_integration == MC_Q1_BBAR && npc == 4;
@@ -143,7 +143,7 @@ void Model::estimate_error() {
       const size_t l = laws.size() == 1 ? 0 : size_t(c);
       cell_eta2[b][c] = cell_recovery_error(p, npc, laws[l], &compliance[16 * l], measure(), bbar, ue, nodal);
     }
-  });
+  }, ignored);
   // The contact terms, on each group's non-mortar edges.
   std::vector<char> owns_row(contact_force.size(), 0);
   if (contact_)
@@ -153,7 +153,6 @@ void Model::estimate_error() {
     const int nm = group.nonmortar;
     if (body[nm].host || cell_eta2[nm].empty()) continue;
     const ContactGeometry &g = group.geometry;
-    std::vector<double> own_stress(4 * size_t(body[nm].mesh.n_nodes()), 0.0);  // per edge, its cell's
     const std::vector<PlaneLaw> &laws = system_[nm]->laws;
     for (size_t seg = 0; seg < g.nonmortar.segments().size(); ++seg) {
       const CurveSegment &c = g.nonmortar.segments()[seg];
@@ -171,9 +170,13 @@ void Model::estimate_error() {
       for (int a = 0; a < npc; ++a)
         p[a] = mesh.node(v[a]), ue[2 * a] = body[nm].u[2 * size_t(v[a])], ue[2 * a + 1] = body[nm].u[2 * size_t(v[a]) + 1];
       cell_nodal_stresses(p, npc, law, measure(), options.q1_integration == MC_Q1_BBAR && npc == 4, ue, at_nodes);
-      std::vector<double> &own = own_stress;
-      for (int a = 0; a < npc; ++a)
-        for (int k = 0; k < 4; ++k) own[4 * size_t(v[a]) + k] = at_nodes[4 * a + k];
+      // the cell's stress at the edge's nodes (ends, middle), in that order
+      double own[12] = {0};
+      const int edge_node[3] = {c.a, c.b, c.mid};
+      for (int e = 0; e < (c.quadratic() ? 3 : 2); ++e)
+        for (int a = 0; a < npc; ++a)
+          if (v[a] == edge_node[e])
+            for (int k = 0; k < 4; ++k) own[4 * e + k] = at_nodes[4 * a + k];
       cell_eta2[nm][edge->cell] += contact_edge_terms(*this, g, group.first_position, int(seg), law, own, owns_row);
     }
   }
@@ -181,13 +184,13 @@ void Model::estimate_error() {
     for (double e : cell_eta2[b]) eta2 += e;
   const double denominator = 2 * infos.energy + eta2;
   if (!(denominator > 0)) {  // no deformation, no error: every indicator 0
-    for (int b = 0; b < n_bodies(); ++b) body[b].error_indicator.assign(cell_eta2[b].size(), 0.0);
+    for (int b = 0; b < n_bodies(); ++b) indicators[b].assign(cell_eta2[b].size(), 0.0);
     return;
   }
-  infos.error_estimate = std::sqrt(eta2 / denominator);
+  estimate = std::sqrt(eta2 / denominator);
   for (int b = 0; b < n_bodies(); ++b) {
-    body[b].error_indicator.resize(cell_eta2[b].size());
-    for (size_t c = 0; c < cell_eta2[b].size(); ++c) body[b].error_indicator[c] = std::sqrt(cell_eta2[b][c] / denominator);
+    indicators[b].resize(cell_eta2[b].size());
+    for (size_t c = 0; c < cell_eta2[b].size(); ++c) indicators[b][c] = std::sqrt(cell_eta2[b][c] / denominator);
   }
 }
 

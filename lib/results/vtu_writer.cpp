@@ -122,6 +122,12 @@ std::string xml_escaped(const std::string &text) {
 struct NodalContact {
   std::vector<double> pressure, gap, initial_gap;
   std::vector<int> active, constrained;
+  // MC_CONTACT_SHEAR, _SLIP (a node at one position: that position's values, bit for bit; a
+  // corner in two faces or pairs: their means weighted by the tributary measures, as the
+  // pressure's), _SLIP_TOTAL (the larger) and _STATE (that of the position weighing most, as the
+  // library's own rule for a position in several rows).
+  std::vector<double> shear, slip, slip_total;
+  std::vector<int> state;
 };
 
 NodalContact nodal_contact(const Model &model, int b) {
@@ -129,14 +135,18 @@ NodalContact nodal_contact(const Model &model, int b) {
   NodalContact c;
   c.pressure.assign(n, 0.0), c.gap.assign(n, 0.0), c.initial_gap.assign(n, 0.0);
   c.active.assign(n, 0), c.constrained.assign(n, 0);
+  c.shear.assign(n, 0.0), c.slip.assign(n, 0.0), c.slip_total.assign(n, 0.0);
+  c.state.assign(n, MC_STATE_OPEN);
   if (!model.contact()) return c;
   // A corner node is a contact position in each of its two faces (or of two pairs): its pressure
   // is its total normal force over its total tributary measure, its gaps the smaller one.
   // (With the weak rows of a quadratic non-mortar side the pressure is the multiplier field, not
   // the lumped force: there a corner in two faces gets the mean of its two pressures, weighted by
   // their tributary measures.)
-  std::vector<double> force(n, 0.0), tributary(n, 0.0);
+  std::vector<double> force(n, 0.0), tributary(n, 0.0), state_weight(n, -1.0), shear_sum(n, 0.0), slip_sum(n, 0.0);
+  std::vector<int> positions_at(n, 0);
   std::vector<char> on_surface(n, 0);
+  const auto at = [](const std::vector<double> &field, size_t pos) { return pos < field.size() ? field[pos] : 0.0; };
   for (const ContactGroup &group : model.contact()->groups) {
     if (group.nonmortar != b) continue;
     const ContactGeometry &g = group.geometry;
@@ -155,12 +165,22 @@ NodalContact nodal_contact(const Model &model, int b) {
         c.constrained[node] = 1;
       }
       c.active[node] = c.active[node] || model.contact_force[pos] > 0;
+      c.shear[node] = at(model.contact_shear, pos), c.slip[node] = at(model.contact_slip, pos);
+      shear_sum[node] += c.shear[node] * g.tributary[local], slip_sum[node] += c.slip[node] * g.tributary[local];
+      ++positions_at[node];
+      c.slip_total[node] = std::max(c.slip_total[node], at(model.contact_slip_total, pos));
+      if (g.tributary[local] > state_weight[node] && pos < model.contact_state.size())
+        state_weight[node] = g.tributary[local], c.state[node] = model.contact_state[pos];
     }
   }
   for (int node = 0; node < n; ++node) {
     if (!on_surface[node]) continue;
     if (!c.constrained[node]) c.gap[node] = c.initial_gap[node] = kUnseenGap;
     c.pressure[node] = tributary[node] > 0 ? force[node] / tributary[node] : 0.0;
+    if (positions_at[node] > 1) {
+      c.shear[node] = tributary[node] > 0 ? shear_sum[node] / tributary[node] : 0.0;
+      c.slip[node] = tributary[node] > 0 ? slip_sum[node] / tributary[node] : 0.0;
+    }
   }
   return c;
 }
@@ -216,11 +236,16 @@ void write_piece(TextFile &out, const Model &model, const std::vector<int> &bodi
   contact_field("Float64", "initial_gap", [&](const NodalContact &c, int i) { return c.initial_gap[i]; });
   contact_field("Int32", "active", [&](const NodalContact &c, int i) { return c.active[i]; });
   contact_field("Int32", "contact", [&](const NodalContact &c, int i) { return c.constrained[i]; });
+  // Friction (MC_CONTACT_SHEAR, _SLIP, _SLIP_TOTAL, _STATE; frictionless contact slips with no shear).
+  contact_field("Float64", "shear", [&](const NodalContact &c, int i) { return c.shear[i]; });
+  contact_field("Float64", "slip", [&](const NodalContact &c, int i) { return c.slip[i]; });
+  contact_field("Float64", "slip_total", [&](const NodalContact &c, int i) { return c.slip_total[i]; });
+  contact_field("Int32", "state", [&](const NodalContact &c, int i) { return c.state[i]; });
   // Each cell's stress at its nodes, averaged over the cells sharing a node (mc_get_nodal_stress).
   out << "        <DataArray type=\"Float64\" Name=\"nodal_stress\" NumberOfComponents=\"4\" "
       << stress_component_names(model) << " format=\"ascii\">\n";
   for (int b : bodies) {
-    const std::vector<double> &s = model.body[b].nodal_stress;
+    const std::vector<double> &s = model.nodal_stresses(b);
     for (int i = 0; i < model.body[b].mesh.n_nodes(); ++i)
       out << s[4 * size_t(i)] << " " << s[4 * size_t(i) + 1] << " " << s[4 * size_t(i) + 2] << " " << s[4 * size_t(i) + 3]
           << "\n";
@@ -232,7 +257,7 @@ void write_piece(TextFile &out, const Model &model, const std::vector<int> &bodi
   out << "        <DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"4\" " << stress_component_names(model)
       << " format=\"ascii\">\n";
   for (int b : bodies) {
-    const std::vector<double> &s = model.body[b].stress;
+    const std::vector<double> &s = model.cell_stresses(b);
     for (int c = 0; c < model.body[b].mesh.n_cells(); ++c)
       out << s[4 * size_t(c)] << " " << s[4 * size_t(c) + 1] << " " << s[4 * size_t(c) + 2] << " " << s[4 * size_t(c) + 3]
           << "\n";
@@ -240,7 +265,7 @@ void write_piece(TextFile &out, const Model &model, const std::vector<int> &bodi
   close_array(out);
   open_array(out, "Float64", "von_mises", 1);
   for (int b : bodies)
-    for (int c = 0; c < model.body[b].mesh.n_cells(); ++c) out << von_mises(&model.body[b].stress[4 * size_t(c)]) << "\n";
+    for (int c = 0; c < model.body[b].mesh.n_cells(); ++c) out << von_mises(&model.cell_stresses(b)[4 * size_t(c)]) << "\n";
   close_array(out);
   open_array(out, "Int32", "body", 1);
   for (int b : bodies)
@@ -308,6 +333,9 @@ void write_vtu(const Model &model, const std::string &path) {
   for (int b = 0; b < model.n_bodies(); ++b)
     if (model.body[b].has_mesh && !model.body[b].host) bodies.push_back(b);  // a host body has no cells to draw
   if (bodies.empty()) fail(MC_ERROR_STATE, "no mesh body to write: host bodies (mc_set_host_body) have no cells");
+  // The stresses first (computed now if no getter asked for them yet): an error there (an
+  // overflow) is reported before any file is written.
+  for (int b : bodies) model.cell_stresses(b);
   if (!ends_with(path, ".pvd")) {
     write_unstructured_grid(path, model, bodies);
     return;

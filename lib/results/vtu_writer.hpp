@@ -4,7 +4,7 @@
 // ("<stem>_body1.vtu", "<stem>_body2.vtu" next to it); any other path one .vtu with both bodies.
 //
 // Arrays. Points: x y 0. Point data: "displacement" (ux uy 0: ParaView wants 3-vectors for
-// Warp By Vector); "nodal_stress" (the components of "stress" at each node, Body::nodal_stress,
+// Warp By Vector); "nodal_stress" (the components of "stress" at each node, Model::nodal_stresses,
 // as mc_get_nodal_stress); the contact fields, nonzero only at body 1's contact-surface nodes:
 // "pressure", "gap", "initial_gap" (Float64), "active" (force > 0) and "contact" (Int32: 1 at
 // the nodes that carry a constraint, i.e. see body 2). A contact-surface node that sees no

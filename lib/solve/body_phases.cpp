@@ -1,6 +1,6 @@
 // The bodies' own phases of a solve, each run for both bodies (Model::for_each_body): their
 // load vectors, stiffness and rigid modes (assembled from cells, or the host's), the reduced
-// matrices, their analyses and factorizations, and after the solve their stresses.
+// matrices, their analyses and factorizations (their stresses: results/results_on_demand.cpp).
 #include "bodies/cell_shapes.hpp"
 #include "support/error.hpp"
 #include "support/lapack.hpp"
@@ -52,33 +52,6 @@ std::vector<double> Model::load_vector(int b) const {
     }
   }
   return f;
-}
-
-// Stresses averaged over each cell, and at the nodes: each cell's stress at its own nodes,
-// averaged over the cells sharing a node.
-void Model::cell_and_nodal_stresses(int b, const std::vector<PlaneLaw> &laws) {
-  Body &body_ = body[b];
-  const Mesh &mesh = body_.mesh;
-  const int npc = mesh.nodes_per_cell();
-  const bool bbar = options.q1_integration == MC_Q1_BBAR && npc == 4;
-  body_.stress.assign(4 * size_t(mesh.n_cells()), 0.0);
-  body_.nodal_stress.assign(4 * size_t(mesh.n_nodes()), 0.0);
-  std::vector<int> cells_at(mesh.n_nodes(), 0);
-  Point p[kMaxCellNodes];
-  double ue[2 * kMaxCellNodes], at_nodes[4 * kMaxCellNodes];
-  for (int c = 0; c < mesh.n_cells(); ++c) {
-    const int *cv = mesh.cell(c);
-    for (int a = 0; a < npc; ++a) p[a] = mesh.node(cv[a]), ue[2 * a] = body_.u[2 * cv[a]], ue[2 * a + 1] = body_.u[2 * cv[a] + 1];
-    const PlaneLaw &law = laws.size() == 1 ? laws[0] : laws[c];
-    cell_stress(p, npc, law, measure(), bbar, ue, &body_.stress[4 * size_t(c)]);
-    cell_nodal_stresses(p, npc, law, measure(), bbar, ue, at_nodes);
-    for (int a = 0; a < npc; ++a) {
-      cells_at[cv[a]]++;
-      for (int k = 0; k < 4; ++k) body_.nodal_stress[4 * size_t(cv[a]) + k] += at_nodes[4 * a + k];
-    }
-  }
-  for (int i = 0; i < mesh.n_nodes(); ++i)
-    for (int k = 0; k < 4; ++k) body_.nodal_stress[4 * size_t(i) + k] /= cells_at[i];
 }
 
 // Stiffness and rigid modes of one body (the first half of its structure).

@@ -88,7 +88,7 @@ void Model::build_condensed(const std::function<void(int, BodyWork &)> &then) {
     Stopwatch watch(infos.t_contact);
     const double start = now();
     ContactSystem &cs = *contact_;
-    const size_t q = size_t(cs.rows.size());
+    const size_t q = size_t(cs.b_rows());  // with friction the tangential rows too
     cs.s.assign(q * q, 0.0);
     double t_blocks = 0;
     for (int b = 0; b < n_bodies(); ++b) {
@@ -128,19 +128,19 @@ void Model::fall_back_to_condensed(std::vector<LoadSolve> &loads) {
 // motion; qp keeps S and G for the refinement.
 void Model::solve_condensed(std::vector<LoadSolve> &loads, DualQp &qp, std::vector<double> &lambda, std::vector<double> &alpha) {
   ContactSystem &cs = *contact_;
-  const int q = cs.rows.size();
+  const int q = cs.b_rows(), q_normal = cs.rows.size();
   qp.q = q;
   {
     Stopwatch watch(infos.t_contact);
     qp.s = cs.s;
     // d = B K^+ f_eff - g0 (with the prescribed values' share of the gap): B K^+ f_eff is
-    // sum W_b^T y_G.
+    // sum W_b^T y_G. A tangential row's g0 is where its slip starts, B_t u0 (friction.cpp).
     std::vector<double> bv(q, 0.0);
     for (int b = 0; b < n_bodies(); ++b)
       if (system_[b] && cs.w_rows[b] > 0)
         add_interface_product(cs, b, loads[b].y.data() + system_[b]->cholesky.interface_start(), bv);
     qp.d.assign(q, 0.0);
-    for (int r = 0; r < q; ++r) {
+    for (int r = 0; r < q_normal; ++r) {
       double g = row_initial_gap(r);
       for (int b = 0; b < n_bodies(); ++b)
         for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) {
@@ -149,10 +149,12 @@ void Model::solve_condensed(std::vector<LoadSolve> &loads, DualQp &qp, std::vect
         }
       qp.d[r] = bv[r] - g;
     }
+    for (int r = q_normal; r < q; ++r) qp.d[r] = bv[r] - tangential_reference(r);
     qp.g = rigid_mode_rows();
     qp.e = rigid_mode_loads(loads);
     qp.k = int(qp.e.size());
   }
+  if (q > q_normal) return solve_condensed_friction(qp, lambda, alpha);
   DualQpResult result;
   const double t_active_set = now();
   const DualQpObserver observe = iteration_log(q);

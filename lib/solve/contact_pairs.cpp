@@ -42,6 +42,7 @@ void stack_rows(ConstraintRows &all, const ConstraintRows &rows, int first_posit
     all.start1.push_back(int(all.position1.size()));
     all.normal.push_back(rows.normal[r]);
     all.gap0.push_back(rows.gap0[r]);
+    all.measure.push_back(rows.measure[r]);
     all.own_position.push_back(rows.own_position[r] >= 0 ? rows.own_position[r] + first_position : -1);
     all.aux.push_back(rows.aux[r] >= 0 ? rows.aux[r] + first_aux : -1);
   }
@@ -172,13 +173,26 @@ std::unique_ptr<ContactSystem> Model::build_contact_system() {
   }
   // 3. The stacked rows and B per body: a row's non-mortar part acts on its group's non-mortar
   //    body, its mortar part (-weights) on the mortar body.
+  //    With friction, each row of a pair with friction also gets its tangential row (the same
+  //    weights along t = (-n_y, n_x)), kept aside and stacked after all normal rows.
   const int n = n_bodies();
   cs->b_start.assign(n, std::vector<int>{0});
   cs->b_dof.assign(n, {}), cs->b_value.assign(n, {});
   cs->body_rows.assign(n, {});
+  std::vector<std::vector<int>> t_start(n, std::vector<int>{0}), t_dof(n);
+  std::vector<std::vector<double>> t_value(n);
+  std::vector<std::pair<int, int>> t_bodies;  // per tangential row: (non-mortar, mortar) body
   for (size_t k = 0; k < cs->groups.size(); ++k) {
     ContactGroup &group = cs->groups[k];
     const ConstraintRows &rows = group.rows;
+    const ContactPair &lead = pairs[group.pairs.front()];
+    for (int p : group.pairs)
+      if (pairs[p].friction_law != lead.friction_law || pairs[p].friction_value != lead.friction_value)
+        fail(MC_ERROR_CONTACT,
+             "pairs %d and %d join one surface (non-mortar body %d, mortar body %d) but have different friction "
+             "(mc_set_friction): give them the same law and value",
+             group.pairs.front() + 1, p + 1, group.nonmortar + 1, group.mortar + 1);
+    const bool friction = lead.friction_law != MC_FRICTION_NONE;
     stack_rows(cs->rows, rows, group.first_position);
     for (int j = 0; j < group.positions(); ++j) cs->position_group.push_back(int(k));
     for (int a = 0; a < rows.aux_count; ++a) cs->aux_group.push_back(int(k));
@@ -202,12 +216,43 @@ std::unique_ptr<ContactSystem> Model::build_contact_system() {
       for (int b = 0; b < n; ++b) cs->b_start[b].push_back(int(cs->b_dof[b].size()));
       cs->body_rows[group.nonmortar].push_back(row);
       if (group.mortar != group.nonmortar) cs->body_rows[group.mortar].push_back(row);
+      if (!friction) continue;
+      auto add_t = [&](int b, int node, Point v) {
+        const Point t{-v.y, v.x};
+        for (int c = 0; c < 2; ++c) {
+          const int dof = dof_of(b, node, c);
+          if (dof >= 0) t_dof[b].push_back(dof), t_value[b].push_back(c == 0 ? t.x : t.y);
+        }
+      };
+      for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p)
+        add_t(group.nonmortar, group.geometry.nodes[rows.position1[p]],
+              vectors ? rows.vector1[p] : scaled(normal, rows.weight1[p]));
+      for (int p = rows.start2[r]; p < rows.start2[r + 1]; ++p)
+        add_t(group.mortar, rows.body2_node[p], scaled(vectors ? rows.vector2[p] : scaled(normal, rows.weight2[p]), -1));
+      for (int b = 0; b < n; ++b) t_start[b].push_back(int(t_dof[b].size()));
+      cs->tangent_of.push_back(row);
+      cs->friction_law.push_back(lead.friction_law);
+      cs->friction_bound.push_back(lead.friction_law == MC_FRICTION_COULOMB ? lead.friction_value
+                                                                             : lead.friction_value * rows.measure[r]);
+      t_bodies.emplace_back(group.nonmortar, group.mortar);
     }
     // B holds the mortar weights from here on: the group's copy goes (on a long interface each
     // mortar row has some 60 of them); the stacked rows never had them.
     std::vector<int>().swap(group.rows.body2_node);
     std::vector<double>().swap(group.rows.weight2);
     std::vector<Point>().swap(group.rows.vector2);
+  }
+  // The tangential rows after the normal ones: row q + j.
+  const int q_normal = cs->rows.size();
+  for (size_t j = 0; j < cs->tangent_of.size(); ++j) {
+    for (int b = 0; b < n; ++b) {
+      for (int p = t_start[b][j]; p < t_start[b][j + 1]; ++p)
+        cs->b_dof[b].push_back(t_dof[b][p]), cs->b_value[b].push_back(t_value[b][p]);
+      cs->b_start[b].push_back(int(cs->b_dof[b].size()));
+    }
+    const int row = q_normal + int(j);
+    cs->body_rows[t_bodies[j].first].push_back(row);
+    if (t_bodies[j].second != t_bodies[j].first) cs->body_rows[t_bodies[j].second].push_back(row);
   }
   // Stacked vectors exist for every entry or for none (a group without them: its normal times
   // its weight).
@@ -250,14 +295,15 @@ std::unique_ptr<ContactSystem> Model::build_contact_system() {
 // and each body's share fitted to (translation x, translation y, rotation about its centroid)
 // and named ("body 2: translation in x"). Empty if every row together holds every mode (the
 // active set at hand did not: the caller then names the free modes).
-std::string Model::unheld_modes_description() const {
+std::string Model::unheld_modes_description(const std::vector<char> &holding) const {
   const std::vector<double> g = rigid_mode_rows();
-  const int q = contact_->rows.size(), k = q > 0 ? int(g.size()) / q : 0;
+  const int q = contact_->b_rows(), k = q > 0 ? int(g.size()) / q : 0;
   if (k == 0) return "";
   std::vector<double> gram(size_t(k) * k, 0.0), eig(k);
   for (int a = 0; a < k; ++a)
     for (int b = 0; b < k; ++b)
-      for (int r = 0; r < q; ++r) gram[size_t(b) * k + a] += g[size_t(a) * q + r] * g[size_t(b) * q + r];
+      for (int r = 0; r < q; ++r)
+        if (holding.empty() || holding[r]) gram[size_t(b) * k + a] += g[size_t(a) * q + r] * g[size_t(b) * q + r];
   int n = k, lwork = 64 + 3 * k, info = 0;
   std::vector<double> work(lwork);
   dsyev_("V", "U", &n, gram.data(), &n, eig.data(), work.data(), &lwork, &info);

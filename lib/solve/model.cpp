@@ -45,7 +45,7 @@ void keep_line(void *work, mc_log_level level, const char *line) {
 void add_body_infos(Infos &to, const Infos &from) {
   to.dofs += from.dofs, to.factor_nnz += from.factor_nnz, to.factorizations += from.factorizations;
   to.t_assembly += from.t_assembly, to.t_analysis += from.t_analysis, to.t_factor += from.t_factor;
-  to.t_solve += from.t_solve, to.t_contact += from.t_contact, to.t_estimate += from.t_estimate;
+  to.t_solve += from.t_solve, to.t_contact += from.t_contact;
 }
 
 }  // namespace
@@ -116,14 +116,14 @@ bool Model::in_contact(int b) const {
   return false;
 }
 
-void Model::for_each_body(const std::function<void(int, BodyWork &)> &task) {
+void Model::run_bodies(int threads, const std::function<void(int, BodyWork &)> &task, Infos &add_to) const {
   const int n = n_bodies();
   std::vector<BodyWork> work(n);
   std::vector<std::exception_ptr> error(n);
   // With two body threads, each one's BLAS calls get its share of the cores (blas_threads.hpp):
   // one thread with OpenBLAS's pthread build (the count solve() lowered for the whole solve),
   // half the cores with the OpenMP build (each body thread's own setting, here).
-  const bool parallel = threads_ > 1;
+  const bool parallel = threads > 1;
   const int blas_per_body = parallel ? std::max(1, available_cores() / 2) : 0;
   auto run = [&](int b) {
     try {
@@ -133,7 +133,7 @@ void Model::for_each_body(const std::function<void(int, BodyWork &)> &task) {
       error[b] = std::current_exception();
     }
   };
-  if (threads_ > 1) {
+  if (threads > 1) {
     // The odd bodies (body 2, 4, ...) on a thread of their own, the even ones on the calling
     // thread. The host's log callback is only ever called from the calling thread: each body
     // keeps its messages, sent on below.
@@ -163,7 +163,7 @@ void Model::for_each_body(const std::function<void(int, BodyWork &)> &task) {
   // What a serial solve would have shown: body 1's messages, its error if any, then body 2's...
   for (int b = 0; b < n; ++b) {
     for (const auto &line : work[b].lines) progress(line.first, "%s", line.second.c_str());
-    add_body_infos(infos, work[b].infos);
+    add_body_infos(add_to, work[b].infos);
     if (error[b]) std::rethrow_exception(error[b]);
   }
 }
@@ -186,6 +186,9 @@ void Model::build_structure(const std::function<void(int, BodyWork &)> &then) {
   // The sparse path when it is forced; otherwise each body is analysed for the condensed path
   // first, and the automatic choice reads those analyses (choose_interface_solver).
   const bool forced_sparse = contact_ && options.interface_solver == MC_INTERFACE_SPARSE;
+  if (forced_sparse && !contact_->tangent_of.empty())  // (docs/api.md, "Friction")
+    fail(MC_ERROR_STATE, "friction (mc_set_friction) is solved on the condensed interface path only: set "
+         "MC_OPTION_INTERFACE_SOLVER to MC_INTERFACE_AUTO or MC_INTERFACE_CONDENSED");
   for_each_body([&](int b, BodyWork &work) {
     system_[b] = assemble_body(b, work);
     reduce_body(b, work);
@@ -340,6 +343,7 @@ void Model::solve() {
   const double start = now();
   infos = Infos{};
   solved = false;
+  derived_.reset(body.size());  // the previous solve's stresses and estimate
   bool any_mesh = false;
   for (const Body &b : body) any_mesh = any_mesh || b.has_mesh;
   if (!any_mesh) fail(MC_ERROR_STATE, "no mesh: call mc_set_mesh first");
@@ -399,15 +403,6 @@ void Model::solve() {
   // displacements_known: loads[b].v already holds K^+ (f_eff - B^T lambda) (the sparse path, or
   // after a refinement).
   bool displacements_known = false;
-  if (contact_ && contact_->sparse) {
-    // The sparse path, or (if its active-set iteration cycles) the condensed one, whose QP
-    // solver has a fallback for that (fall_back_to_condensed).
-    if (solve_sparse(loads, lambda, alpha)) displacements_known = true;
-    else fall_back_to_condensed(loads);
-  }
-  if (contact_ && !contact_->sparse) solve_condensed(loads, qp, lambda, alpha);
-  if (contact_) infos.interface_solver = contact_->sparse ? MC_INTERFACE_SPARSE : MC_INTERFACE_CONDENSED;
-
   // u = K^+ (f_eff - B^T lambda) + R alpha, then the prescribed values.
   const double t_recovery = now();
   std::vector<double> f_norm2(body.size(), 0.0), residual_norm2(body.size(), 0.0), energy(body.size(), 0.0);
@@ -417,7 +412,7 @@ void Model::solve() {
     const int ndof = sys.stiffness.n;
     std::vector<double> contact_force(ndof, 0.0), rigid_motion(ndof, 0.0);  // rigid_motion: R alpha
     if (contact_) {
-      for (int r = 0; r < contact_->rows.size(); ++r)
+      for (int r = 0; r < contact_->b_rows(); ++r)  // normal rows, then friction's tangential ones
         for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
           contact_force[contact_->b_dof[b][p]] -= contact_->b_value[b][p] * lambda[r];
       add_rigid_motion(b, alpha, rigid_motion);
@@ -464,16 +459,49 @@ void Model::solve() {
     }
     energy[b] = 0.5 * dot(elastic, ku);
     body_.contact_load = contact_force;
-    if (!body_.host) cell_and_nodal_stresses(b, sys.laws);
+    if (options.eager_results && !body_.host) compute_stresses(b);  // else when asked for
   };
-  for_each_body(recover);
-  if (contact_) {
-    infos.gap_residual = recovered_gap_residual(lambda);
-    if (!contact_->sparse && infos.gap_residual > kRefineAboveGapResidual && refine_solution(qp, loads, lambda, alpha)) {
-      displacements_known = true;
-      std::fill(f_norm2.begin(), f_norm2.end(), 0.0), std::fill(residual_norm2.begin(), residual_norm2.end(), 0.0);
-      for_each_body(recover);  // reactions, energy and stresses of the refined displacements
+  // Friction: the solve is a step from the last converged state (a rebuilt structure starts from
+  // the unloaded one), in MC_OPTION_LOAD_STEPS increments of the loads and prescribed values;
+  // each increment reuses the factorizations (friction.cpp).
+  const bool friction = contact_ && !contact_->tangent_of.empty();
+  if (rebuild) reset_history();
+  std::vector<std::vector<double>> solve_start;  // the displacements the solve starts from (empty: zero)
+  std::vector<LoadSolve> target, step_start;
+  std::vector<std::vector<double>> target_prescribed;
+  if (friction) {
+    refresh_friction();
+    prepare_history();
+    solve_start = history_.u, target = loads, target_prescribed = fixed_value_;
+  }
+  const int steps = friction ? options.load_steps : 1;
+  for (int step = 1; step <= steps; ++step) {
+    if (friction) {
+      step_loads(step, steps, target, target_prescribed, step_start, loads);
+      if (steps > 1) progress(MC_LOG_PHASE, "load step %d of %d", step, steps);
     }
+    displacements_known = false;
+    if (contact_ && contact_->sparse) {
+      // The sparse path, or (if its active-set iteration cycles) the condensed one, whose QP
+      // solver has a fallback for that (fall_back_to_condensed).
+      if (solve_sparse(loads, lambda, alpha)) displacements_known = true;
+      else fall_back_to_condensed(loads);
+    }
+    if (contact_ && !contact_->sparse) solve_condensed(loads, qp, lambda, alpha);
+    if (contact_) infos.interface_solver = contact_->sparse ? MC_INTERFACE_SPARSE : MC_INTERFACE_CONDENSED;
+    std::fill(f_norm2.begin(), f_norm2.end(), 0.0), std::fill(residual_norm2.begin(), residual_norm2.end(), 0.0);
+    for_each_body(recover);
+    if (contact_) {
+      infos.gap_residual = recovered_gap_residual(lambda);
+      // (The refinement works on the normal rows' active set: not with friction's rows.)
+      if (!friction && !contact_->sparse && infos.gap_residual > kRefineAboveGapResidual &&
+          refine_solution(qp, loads, lambda, alpha)) {
+        displacements_known = true;
+        std::fill(f_norm2.begin(), f_norm2.end(), 0.0), std::fill(residual_norm2.begin(), residual_norm2.end(), 0.0);
+        for_each_body(recover);  // reactions, energy and stresses of the refined displacements
+      }
+    }
+    if (friction) record_step(loads);
   }
   // Per-body sums added in body order, whatever the thread count.
   double residual_norm = 0, f_norm = 0;
@@ -483,15 +511,11 @@ void Model::solve() {
   if (f_norm == 0) infos.equilibrium = std::sqrt(residual_norm);
 
   contact_results(lambda);
-  progress(MC_LOG_PHASE, "recovery: displacements, reactions, stresses and contact results, %.3g s", now() - t_recovery);
-  if (options.error_estimate) {
-    const double t_estimate = now();
-    estimate_error();
-    progress(MC_LOG_PHASE, "error estimate: %.3g (relative, energy norm), %.3g s", infos.error_estimate,
-             now() - t_estimate);
-  } else {
-    estimate_error();  // clears the previous solve's
-  }
+  if (contact_) friction_results(lambda, solve_start);
+  progress(MC_LOG_PHASE, "recovery: displacements, reactions%s and contact results, %.3g s",
+           options.eager_results ? ", stresses" : "", now() - t_recovery);
+  // The error estimate now (MC_OPTION_EAGER_RESULTS), or when a getter first asks for it.
+  if (options.eager_results) ensure_estimate();
   infos.t_total = now() - start;
   progress(MC_LOG_PHASE, "solve: done, %ld unknowns, %ld active of %ld contact nodes, %.3g s", infos.dofs, infos.active,
            infos.contact_rows, infos.t_total);

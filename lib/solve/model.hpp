@@ -5,6 +5,7 @@
 #include "bodies/assembly.hpp"
 #include "contact/contact_geometry.hpp"
 #include "linalg/dual_qp.hpp"
+#include "linalg/friction_qp.hpp"
 #include "bodies/host_body.hpp"
 #include "bodies/mesh.hpp"
 #include "contact/mortar_operators.hpp"
@@ -46,10 +47,9 @@ struct Body {
   std::vector<double> nodal_force;      // per DOF
   std::vector<EdgeLoad> edge_loads;
   double body_force[2] = {0, 0};
-  // results
-  std::vector<double> u, reaction, stress, nodal_stress;  // u, reaction: per DOF
+  // results (the stresses and the error estimate: Model::cell_stresses and the others, on demand)
+  std::vector<double> u, reaction;      // per DOF
   std::vector<double> contact_load;     // per DOF: the contact forces on the body (K u = f + contact_load)
-  std::vector<double> error_indicator;  // per cell, relative (mc_get_error_indicator); empty: not estimated
 };
 
 // A contact pair (mc_add_contact_pair; a two-body model's pair 1 is (0, 1)): the non-mortar
@@ -60,6 +60,8 @@ struct ContactPair {
   bool has_side[2] = {false, false};   // [0] the non-mortar side, [1] the mortar side
   std::vector<SurfaceSegment> side[2];
   std::vector<double> gap_offset;      // per non-mortar node, added to g0; empty: none
+  int friction_law = MC_FRICTION_NONE; // mc_set_friction
+  double friction_value = 0;           // Tresca: the slip bound (a shear traction); Coulomb: mu
   bool complete() const { return has_side[0] && has_side[1]; }
   int body_of_side(int s) const { return s == 0 ? nonmortar : mortar; }
 };
@@ -123,6 +125,16 @@ struct ContactSystem {
   std::vector<int> column_offset;
   int aux_offset = 0, mode_offset = 0, modes = 0;
   std::vector<double> g;           // G = B R, q x modes, column-major (both paths' floating bodies)
+  // Friction (friction.cpp): B's rows q + j (j = 0 .. tangent_of.size() - 1) are the tangential
+  // rows of normal rows tangent_of[j]: the same weights along t = (-n_y, n_x), so that row q + j
+  // of B u is the weighted tangential displacement (u1 - pi_h u2) . t there. Only the rows of
+  // pairs with friction have one. Per tangential row its law (MC_FRICTION_*) and its bound: mu
+  // (Coulomb), or the Tresca bound times the row's multiplier measure (a force, like lambda).
+  std::vector<int> tangent_of;
+  std::vector<int> friction_law;
+  std::vector<double> friction_bound;
+  std::vector<FrictionState> friction_state;  // the last converged states (a warm start)
+  int b_rows() const { return rows.size() + int(tangent_of.size()); }  // B's rows: normal, then tangential
   const ContactGroup &group_of_position(int pos) const { return groups[position_group[pos]]; }
 };
 
@@ -139,6 +151,9 @@ struct Options {
   int interface_solver = MC_INTERFACE_AUTO;  // MC_OPTION_INTERFACE_SOLVER
   bool error_estimate = true;                // MC_OPTION_ERROR_ESTIMATE
   int multiplier = MC_MULTIPLIER_LINEAR;     // MC_OPTION_MULTIPLIER
+  int load_steps = 1;                        // MC_OPTION_LOAD_STEPS
+  double friction_ct = 0;                    // MC_OPTION_FRICTION_CT (0: scaled automatically)
+  bool eager_results = false;                // MC_OPTION_EAGER_RESULTS
 };
 
 struct Infos {
@@ -148,8 +163,35 @@ struct Infos {
   double gap_residual = 0;  // MC_INFO_GAP_RESIDUAL: complementarity of the returned displacements' gaps
   int threads = 1;  // threads the last solve ran the bodies' work on (1 or 2)
   int interface_solver = 0;  // MC_INFO_INTERFACE_SOLVER: MC_INTERFACE_CONDENSED or _SPARSE; 0 without contact
-  double error_estimate = 0;  // MC_INFO_ERROR_ESTIMATE (error_estimate.cpp)
-  double t_estimate = 0;      // its time (part of MC_INFO_TIME_TOTAL)
+  long stick = 0, slip = 0;   // MC_INFO_STICK_NODES, MC_INFO_SLIP_NODES (rows of pairs with friction)
+  double friction_complementarity = 0;  // MC_INFO_FRICTION_COMPLEMENTARITY
+};
+
+// The converged state a frictional solve steps from (friction.cpp): per body the displacements
+// u0, the loads f0 and the prescribed values of the last converged step, and per contact position
+// the accumulated slip. Empty (valid = false): the unloaded state.
+struct History {
+  bool valid = false;
+  std::vector<std::vector<double>> u, f, prescribed;
+  std::vector<double> slip_total;
+};
+
+// What the solve's displacements give on demand (results/results_on_demand.cpp): the stresses
+// of the cells and at the nodes, and the error estimate, each computed when a getter first asks
+// for it (or by the solve itself with MC_OPTION_EAGER_RESULTS), at most once per solve, and
+// forgotten by the next solve. The model holds it as a mutable cache: the getters stay const.
+struct DerivedResults {
+  std::vector<char> has_stresses;                          // per body
+  std::vector<std::vector<double>> stress, nodal_stress;   // per body: 4 per cell, 4 per node
+  std::vector<double> stress_seconds;                      // per body
+  bool has_estimate = false;
+  double error_estimate = 0, estimate_seconds = 0;         // MC_INFO_ERROR_ESTIMATE, its time
+  std::vector<std::vector<double>> error_indicator;        // per body, per cell; empty: not estimated
+  void reset(size_t bodies) {
+    *this = DerivedResults{};
+    has_stresses.assign(bodies, 0), stress.resize(bodies), nodal_stress.resize(bodies);
+    stress_seconds.assign(bodies, 0.0), error_indicator.resize(bodies);
+  }
 };
 
 // The smaller body's unknowns (2 x its nodes) from which MC_OPTION_THREADS = 0 (automatic)
@@ -227,12 +269,32 @@ public:
   bool refine_solution(DualQp &qp, std::vector<LoadSolve> &loads, std::vector<double> &lambda, std::vector<double> &alpha);
   // Contact results per contact position, the groups' stacked (after a contact solve).
   std::vector<double> contact_force, contact_gap, contact_pressure;
+  // Friction's (and the state's, for every pair): shear traction along t, slip of the last solve,
+  // accumulated slip, MC_STATE_*.
+  std::vector<double> contact_shear, contact_slip, contact_slip_total;
+  std::vector<int> contact_state;
+  // mc_reset_history: the next frictional solve starts from the unloaded state.
+  void reset_history();
+  bool has_friction() const;
+
+  // The results computed on demand (DerivedResults), for a solved model (the caller checks
+  // `solved`): the first call computes, later ones read the cache. A failure (an overflow, out of
+  // memory) throws and caches nothing: the model and its other results stay as they were.
+  const std::vector<double> &cell_stresses(int b) const;   // 4 per cell (mc_get_stress)
+  const std::vector<double> &nodal_stresses(int b) const;  // 4 per node (mc_get_nodal_stress)
+  // Per cell, relative (mc_get_error_indicator); empty for a body not estimated (a host body,
+  // or MC_OPTION_ERROR_ESTIMATE 0).
+  const std::vector<double> &error_indicators(int b) const;
+  double error_estimate() const;  // MC_INFO_ERROR_ESTIMATE; 0 with MC_OPTION_ERROR_ESTIMATE 0
+  double results_seconds() const;  // MC_INFO_TIME_RESULTS: what computing them has cost so far
 
 private:
   int body_threads() const;
   // Runs task(b, work) for every body: one after the other, or with two threads the odd ones on
   // a std::thread joined before returning. Exceptions are rethrown here, the first body's first.
-  void for_each_body(const std::function<void(int, BodyWork &)> &task);
+  void for_each_body(const std::function<void(int, BodyWork &)> &task) { run_bodies(threads_, task, infos); }
+  // The same on `threads` threads (1 or 2), the bodies' infos added to `add_to`.
+  void run_bodies(int threads, const std::function<void(int, BodyWork &)> &task, Infos &add_to) const;
   std::unique_ptr<BodySystem> assemble_body(int b, BodyWork &work) const;
   void reduce_body(int b, BodyWork &work);
   // needed: the condensed path will use it (refused if the interface is too long for it); else
@@ -264,21 +326,39 @@ private:
   std::unique_ptr<ContactSystem> build_contact_system();
   void check_contact_pairs() const;
   void contact_results(const std::vector<double> &lambda);
+  // Friction (friction.cpp): the rows' laws and bounds, the frictional condensed problem, the
+  // history and load steps, the results per position.
+  void refresh_friction();
+  void solve_condensed_friction(DualQp &qp, std::vector<double> &lambda, std::vector<double> &alpha);
+  double tangential_reference(int row) const;  // B row `row` (tangential) times u0, less its prescribed part
+  void prepare_history();
+  void step_loads(int step, int steps, const std::vector<LoadSolve> &target,
+                  const std::vector<std::vector<double>> &target_prescribed, std::vector<LoadSolve> &start,
+                  std::vector<LoadSolve> &loads);
+  void record_step(const std::vector<LoadSolve> &loads);
+  std::vector<double> pointwise_slips(const std::vector<std::vector<double>> &from) const;
+  void friction_results(const std::vector<double> &lambda, const std::vector<std::vector<double>> &solve_start);
   void merge_gap_offsets();
   // "body 1: translation in y; ..." for the floating bodies, for both paths' messages.
   std::string free_modes_description() const;
   // The rigid motions that no support and no pair can hold, "body 2: translation in x" ("" if
   // the rows together hold every free mode).
-  std::string unheld_modes_description() const;
+  // holding: the B rows that hold (the rows in contact and the sticking ones, for friction);
+  // empty: every row.
+  std::string unheld_modes_description(const std::vector<char> &holding = {}) const;
   // The active-set iterations' log messages (MC_LOG_ITERATION), for both paths; empty without a
   // log callback.
   DualQpObserver iteration_log(int q);
   void interface_block(int b, std::vector<double> &s_b, BodyWork &work);
   void build_structure(const std::function<void(int, BodyWork &)> &then);
   void solve_loads(int b, BodyWork &work, LoadSolve &out) const;
-  void cell_and_nodal_stresses(int b, const std::vector<PlaneLaw> &laws);
-  // MC_INFO_ERROR_ESTIMATE and the cells' indicators, after the recovery (error_estimate.cpp).
-  void estimate_error();
+  // Body b's stresses into the cache (results_on_demand.cpp); ensure_stresses also checks them
+  // for overflow first (the solve's eager ones are checked by mc_solve's own check).
+  void compute_stresses(int b) const;
+  void ensure_stresses(int b) const;
+  // MC_INFO_ERROR_ESTIMATE and the cells' indicators into the cache (error_estimate.cpp), once.
+  void ensure_estimate() const;
+  void estimate_error(double &estimate, std::vector<std::vector<double>> &indicators) const;
   std::vector<double> load_vector(int b) const;
   void effective_supports();
   // The supports a solve uses: the host's (mc_fix) and, in an axisymmetric model, u_r = 0 at
@@ -289,6 +369,8 @@ private:
   long structure_version_ = 1, built_version_ = 0;
   std::vector<std::unique_ptr<BodySystem>> system_;
   std::unique_ptr<ContactSystem> contact_;
+  History history_;
+  mutable DerivedResults derived_;
 };
 
 }  // namespace mc

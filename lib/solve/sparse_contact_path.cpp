@@ -84,7 +84,7 @@ void Model::check_condensed_fits() const {
 bool Model::choose_interface_solver() {
   const double start = now();
   ContactSystem &cs = *contact_;
-  const double q = cs.rows.size();
+  const double q = cs.b_rows();
   // The condensed path's cost from the bodies' analyses (interface last): their factors, each
   // body's W_b = L_GG^-1 B_G^T (ng x q) and its dense L_GG copy, S (q x q); time: the
   // factorizations, the triangular solve and rank-k update that form S, and the dense
@@ -111,7 +111,19 @@ bool Model::choose_interface_solver() {
   for (int b = 0; b < n_bodies(); ++b)
     if (system_[b] && !system_[b]->cholesky.analyzed()) analysed = false;
   const bool condensed_fits = analysed && (memory <= 0 || condensed_bytes <= kCondensedMemoryShare * memory);
-  if (options.interface_solver == MC_INTERFACE_CONDENSED) {
+  // Friction runs on the condensed path only (docs/api.md, "Friction": the sparse path's
+  // frictional iteration is not written yet).
+  if (!cs.tangent_of.empty()) {
+    if (memory > 0 && condensed_bytes > memory)
+      fail(MC_ERROR_MEMORY,
+           "friction is solved on the condensed interface path, which would need about %.3g GiB for %d normal and "
+           "tangential contact rows, and %.3g GiB are available",
+           gib(condensed_bytes), int(q), gib(memory));
+    if (options.interface_solver == MC_INTERFACE_AUTO)
+      progress(MC_LOG_PHASE, "interface solver: condensed (friction is solved on the condensed path), %.3g s",
+               now() - start);
+  }
+  if (options.interface_solver == MC_INTERFACE_CONDENSED || !cs.tangent_of.empty()) {
     if (memory > 0 && condensed_bytes > memory)
       fail(MC_ERROR_MEMORY,
            "the condensed interface solver (MC_INTERFACE_CONDENSED) would need about %.3g GiB for %d contact rows "
@@ -170,7 +182,7 @@ std::vector<double> Model::rigid_mode_loads(const std::vector<LoadSolve> &loads)
 
 std::vector<double> Model::rigid_mode_rows() const {
   const ContactSystem &cs = *contact_;
-  const int q = cs.rows.size();
+  const int q = cs.b_rows();
   std::vector<double> g;
   for (int b = 0; b < n_bodies(); ++b) {
     if (!system_[b]) continue;

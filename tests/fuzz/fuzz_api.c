@@ -30,10 +30,16 @@
  *          body a model may have here); b >= 240: a bad body (0, -1, 6, INT_MAX, INT_MIN, 1000).
  *   pair : byte b < 240: 1 + b % 3; b >= 240: 0, -1, 4, INT_MAX, INT_MIN or 1000 (pairs are
  *          numbered 1, 2, ... whatever the index base).
+ *   law  : (OP_FRICTION) byte b < 240: b % 5 - 1 (-1 bad, MC_FRICTION_NONE, _TRESCA, _COULOMB,
+ *          3 bad); b >= 240: 0, -1, 6, INT_MAX, INT_MIN or 1000.
  * Every read of the stream is its own statement or declarator (never two reads in one
  * expression: gcc and clang evaluate function arguments in different orders).
  * The seed corpus (tests/fuzz/corpus/) is written by tests/fuzz/make_corpus.py, which
- * documents the operations' operand order once more; keep the two in step.
+ * documents the operations' operand order once more; keep the two in step. The campaigns'
+ * findings kept there (finding_*) are raw inputs: when friction appended OP_FRICTION and
+ * OP_RESET_HISTORY (OP_COUNT 35 -> 37) and two options (b % 14 -> b % 16), their opcode bytes
+ * were rewritten as the operation numbers they meant and their option bytes as b % 14, so they
+ * replay the same calls as before (compared with FUZZ_API_TRACE=1).
  *
  * Built two ways: with -fsanitize=fuzzer (CMake option MC_BUILD_FUZZ, clang only) it is the
  * fuzz target; with replay_main.c it is a plain program that runs the files named on its
@@ -53,6 +59,7 @@
 /* Counters for the replay driver (how far the corpus reaches); not used by the library. */
 long fuzz_api_solves_ok = 0, fuzz_api_contact_solves_ok = 0, fuzz_api_host_solves_ok = 0;
 long fuzz_api_pair_solves_ok = 0; /* solves with contact positions on two pairs or more */
+long fuzz_api_friction_solves_ok = 0; /* solves with a sticking or slipping friction row */
 
 enum {
   MAX_OPS = 128,
@@ -247,7 +254,7 @@ static void *exact(size_t count, size_t size) {
 static void query_all(harness *h) {
   mc_model *m = h->m;
   int body, info;
-  for (info = 0; info <= 31; ++info) { /* 0 and 31 (past MC_INFO_ERROR_ESTIMATE = 30): bad infos */
+  for (info = 0; info <= 33; ++info) { /* 0 and 33 (past MC_INFO_TIME_RESULTS = 32): bad infos */
     int64_t iv;
     double rv;
     CALL(mc_get_info_int(m, info, &iv));
@@ -298,8 +305,9 @@ static void query_all(harness *h) {
     }
   }
   {
-    /* every pair 0 (bad) .. MAX_PAIR and every field 0 .. 6 (0 and 6 bad), buffers of exactly
-       the count the library gave (none where it refused the count) */
+    /* every pair 0 (bad) .. MAX_PAIR and every field 0 .. 10 (0 and 10 bad; 6 .. 9 friction's:
+       shear, slip, accumulated slip, state), buffers of exactly the count the library gave (none
+       where it refused the count) */
     int pair, field;
     for (pair = 0; pair <= MAX_PAIR; ++pair) {
       mc_int n = -1;
@@ -312,7 +320,7 @@ static void query_all(harness *h) {
       nodes = exact(c, sizeof(mc_int));
       CALL(mc_get_pair_contact_nodes(m, pair, nodes));
       free(nodes);
-      for (field = 0; field <= 6; ++field) {
+      for (field = 0; field <= 10; ++field) {
         double *out = exact(field == MC_CONTACT_NORMAL ? 2 * c : c, sizeof(double));
         CALL(mc_get_pair_contact(m, pair, field, out));
         free(out);
@@ -373,6 +381,8 @@ static void null_calls(harness *h) {
     CALL(mc_get_pair_contact_count(m, 1, &id));
     CALL(mc_get_pair_contact_nodes(m, 1, &id));
     CALL(mc_get_pair_contact(m, 1, MC_CONTACT_PRESSURE, v));
+    CALL(mc_set_friction(m, 1, MC_FRICTION_COULOMB, 0.3));
+    CALL(mc_reset_history(m));
   }
   CALL(mc_set_log_callback(m, NULL, NULL));
   CALL(mc_write_vtu(m, "/dev/null"));
@@ -412,6 +422,7 @@ static void null_calls(harness *h) {
   CALL(mc_get_pair_contact_count(m, 1, NULL));
   CALL(mc_get_pair_contact_nodes(m, 1, NULL));
   CALL(mc_get_pair_contact(m, 1, MC_CONTACT_NORMAL, NULL));
+  CALL(mc_get_pair_contact(m, 1, MC_CONTACT_STATE, NULL));
   CALL(mc_set_pair_surface(m, 1, 1, 1, NULL));
   CALL(mc_set_pair_gap_offset(m, 1, 1, NULL, NULL));
 }
@@ -437,8 +448,8 @@ enum {
   OP_CLEAR_LOADS,    /* body                                                        */
   OP_CONTACT_SIDE,   /* body, byte side, byte first, byte count (0: all)            */
   OP_CONTACT_RAW,    /* body, count n, 2n ids                                       */
-  OP_OPTION_INT,     /* byte option (b % 14), byte kind: < 200: b % 6 - 1; else 8 raw bytes */
-  OP_OPTION_REAL,    /* byte option (b % 14), real value                            */
+  OP_OPTION_INT,     /* byte option (b % 16), byte kind: < 200: b % 6 - 1; else 8 raw bytes */
+  OP_OPTION_REAL,    /* byte option (b % 16), real value                            */
   OP_SOLVE,          /* - (then queries every result)                               */
   OP_QUERY,          /* - (queries every result)                                    */
   OP_GAP_OFFSET,     /* count n, n ids, n reals (needs mc_set_gap_offset)           */
@@ -463,6 +474,9 @@ enum {
                          0 straight, 1 curved with the side's middles, 2 curved with an end and the
                          middle swapped, 3 straight from the stream: count n, 2n ids) */
   OP_PAIR_GAP_OFFSET, /* pair, count n, n ids, n reals                             */
+  /* friction (issue 33), appended likewise: */
+  OP_FRICTION,        /* pair, law, real value (mc_set_friction)                     */
+  OP_RESET_HISTORY,   /* - (mc_reset_history)                                         */
   OP_COUNT
 };
 
@@ -704,7 +718,8 @@ static void op_contact_raw(harness *h, stream *s) {
 
 static void op_option_int(harness *h, stream *s) {
   mc_model *m = h->m;
-  int option = read_u8(s) % 14; /* 0 .. 13: every option (MC_OPTION_MULTIPLIER = 13) and bad ones (0, 5) */
+  int option = read_u8(s) % 16; /* 1 .. 15: every option (MC_OPTION_FRICTION_CT = 15) and a bad one (5); 0: MC_OPTION_EAGER_RESULTS (16) */
+  if (option == 0) option = MC_OPTION_EAGER_RESULTS;
   uint8_t kind = read_u8(s);
   /* -1 .. 4: every value of the enum options (MC_INTERFACE_AUTO .. _SPARSE = 0 .. 2) and bad ones */
   int64_t value = kind < 200 ? (int64_t)(kind % 6) - 1 : (int64_t)read_bytes(s, 8);
@@ -1059,6 +1074,21 @@ static void op_pair_gap_offset(harness *h, stream *s) {
   CALL(mc_set_pair_gap_offset(m, pair, n, n > 0 ? nodes : NULL, n > 0 ? offset : NULL));
 }
 
+/* A friction law: -1 .. 3 (MC_FRICTION_NONE .. _COULOMB = 0 .. 2 and bad ones) or a bad number. */
+static int read_law(stream *s) {
+  uint8_t b = read_u8(s);
+  if (b >= 240) return bad_numbers[(b - 240) % 6];
+  return b % 5 - 1;
+}
+
+static void op_friction(harness *h, stream *s) {
+  mc_model *m = h->m;
+  int pair = read_pair(s);
+  int law = read_law(s);
+  double value = read_real(s);
+  CALL(mc_set_friction(m, pair, law, value));
+}
+
 static void run(harness *h, stream *s, size_t size) {
   int ops = 0;
   while (s->n > 0 && ops++ < MAX_OPS) {
@@ -1103,7 +1133,8 @@ static void run(harness *h, stream *s, size_t size) {
       case OP_CONTACT_RAW: op_contact_raw(h, s); break;
       case OP_OPTION_INT: op_option_int(h, s); break;
       case OP_OPTION_REAL: {
-        int option = read_u8(s) % 14; /* 0 .. 13: every option (MC_OPTION_MULTIPLIER = 13) and bad ones (0, 5) */
+        int option = read_u8(s) % 16; /* 1 .. 15: every option (MC_OPTION_FRICTION_CT = 15) and a bad one (5); 0: MC_OPTION_EAGER_RESULTS (16) */
+        if (option == 0) option = MC_OPTION_EAGER_RESULTS;
         CALL(mc_set_option_real(m, option, read_real(s)));
         break;
       }
@@ -1118,6 +1149,12 @@ static void run(harness *h, stream *s, size_t size) {
             if (host) fuzz_api_host_solves_ok++;
             for (b = 1; b <= MAX_PAIR; ++b) pairs += mc_get_pair_contact_count(m, b, &n) == MC_OK && n > 0;
             if (pairs >= 2) fuzz_api_pair_solves_ok++;
+            {
+              int64_t stick = 0, slip = 0;
+              if (mc_get_info_int(m, MC_INFO_STICK_NODES, &stick) == MC_OK &&
+                  mc_get_info_int(m, MC_INFO_SLIP_NODES, &slip) == MC_OK && stick + slip > 0)
+                fuzz_api_friction_solves_ok++;
+            }
           }
           query_all(h);
         }
@@ -1142,6 +1179,8 @@ static void run(harness *h, stream *s, size_t size) {
       case OP_ADD_PAIR: op_add_pair(h, s); break;
       case OP_PAIR_SURFACE: op_pair_surface(h, s); break;
       case OP_PAIR_GAP_OFFSET: op_pair_gap_offset(h, s); break;
+      case OP_FRICTION: op_friction(h, s); break;
+      case OP_RESET_HISTORY: CALL(mc_reset_history(m)); break;
     }
   }
 }

@@ -16,7 +16,8 @@ OPS = ["NEW_MODEL", "INDEX_BASE", "PLANE", "GRID_MESH", "RAW_MESH", "MATERIAL", 
        "BODY_FORCE", "CLEAR_LOADS", "CONTACT_SIDE", "CONTACT_RAW", "OPTION_INT", "OPTION_REAL",
        "SOLVE", "QUERY", "GAP_OFFSET", "LOG", "WRITE_VTU", "NULLS",
        "HOST_BODY", "HOST_STIFFNESS", "STIFFNESS_RAW", "ELEMENTS_RAW", "LOAD_VECTOR", "CONTACT_CURVED",
-       "BODY_COUNT", "ADD_PAIR", "PAIR_SURFACE", "PAIR_GAP_OFFSET"]
+       "BODY_COUNT", "ADD_PAIR", "PAIR_SURFACE", "PAIR_GAP_OFFSET",
+       "FRICTION", "RESET_HISTORY"]
 OP = {name: k for k, name in enumerate(OPS)}
 BOTTOM, RIGHT, TOP, LEFT = 0, 1, 2, 3
 SPECIAL = {"nan": 10, "inf": 11, "-inf": 12}
@@ -63,6 +64,15 @@ def any_body(b):
 def pair(p):
     """A pair number: 1..3, or a bad one (0, -1, 4, ...)."""
     return bytes([p - 1]) if 1 <= p <= 3 else bytes([242 if p == 4 else 240 + BAD.index(p)])
+
+
+NONE, TRESCA, COULOMB = 0, 1, 2  # MC_FRICTION_*
+LOAD_STEPS, FRICTION_CT, INTERFACE_SOLVER, METHOD = 14, 15, 11, 1  # MC_OPTION_*
+
+
+def friction(p, law, value):
+    """mc_set_friction: a law -1..3 in one byte (b % 5 - 1), or a bad number of BAD (bytes 240..)."""
+    return op("FRICTION") + pair(p) + (bytes([law + 1]) if -1 <= law <= 3 else bytes([240 + BAD.index(law)])) + real(value)
 
 
 def body_count(n):
@@ -359,6 +369,45 @@ SEEDS = {
     + pair_surface(1, 2, TOP) + pair_surface(1, 1, BOTTOM) + solve() + op("QUERY") + op("NULLS")
     + body_count(5) + solve() + op("NEW_MODEL") + add_pair(1, 2) + solve() + op("QUERY"),
 }
+
+
+# Friction (issue 33): two blocks, body 1 = [0,1]x[0,0.5] P1 4x2 on body 2 = [0,1]x[-0.5,0] Q1
+# 5x2 clamped at its bottom; body 1 held along x by friction alone (no support), pressed down and
+# sheared (traction (0.125, -1) on its top: below mu = 0.5 times the pressure, so it sticks).
+def friction_blocks():
+    return (grid(1, 3, 4, 2, 0, 0, 1, 0.5) + grid(2, 4, 5, 2, 0, -0.5, 1, 0.5) + material(1, 1.0, 0.3)
+            + material(2, 1.0, 0.3) + fix_side(2, BOTTOM, 3) + traction_side(1, TOP, 0.125, -1)
+            + contact_side(1, BOTTOM) + contact_side(2, TOP))
+
+
+SEEDS.update({
+    # Coulomb in 3 load steps, the loads doubled (a step from the converged state), the history
+    # forgotten with another complementarity parameter, Tresca; then the sparse path forced
+    # (refused: friction runs on the condensed path) and the friction removed (nothing holds
+    # body 1 along x: singular)
+    "friction_stick": friction_blocks() + friction(1, COULOMB, 0.5) + option_int(LOAD_STEPS, 3) + solve()
+    + traction_side(1, TOP, 0.125, -1) + solve() + op("RESET_HISTORY") + option_real(FRICTION_CT, 10.0) + solve()
+    + friction(1, TRESCA, 0.25) + solve() + option_int(INTERFACE_SOLVER, 2) + solve() + option_int(INTERFACE_SOLVER, 0)
+    + friction(1, NONE, 0) + solve() + op("QUERY"),
+    # the dual mortar and node-to-segment methods with friction, a slip (the top moved sideways),
+    # then every bad input: friction before any contact pair, bad laws, values and pairs, bad
+    # load steps and complementarity parameters (and each option through the other type's call)
+    "friction_bad_input": op("RESET_HISTORY") + friction(1, COULOMB, 0.3) + friction_blocks()
+    + option_int(METHOD, 1) + friction(1, COULOMB, 0.5) + solve() + option_int(METHOD, 2)
+    + fix_side(1, TOP, 1, (0.5, 0.0)) + solve() + op("QUERY")
+    + friction(1, -1, 0.3) + friction(1, 3, 0.3) + friction(1, 2**31 - 1, 0.3) + friction(1, -2**31, 0.3)
+    + friction(1, COULOMB, -0.5) + friction(1, TRESCA, "nan") + friction(1, COULOMB, "inf") + friction(1, TRESCA, 1e300)
+    + friction(0, COULOMB, 0.3) + friction(4, COULOMB, 0.3) + friction(-1, TRESCA, 0.3) + friction(1000, NONE, 0)
+    + option_int(LOAD_STEPS, 0) + option_int(LOAD_STEPS, -1) + option_int(LOAD_STEPS, 2**40)
+    + option_int(LOAD_STEPS, 10**6 + 1) + option_int(FRICTION_CT, 1) + option_real(LOAD_STEPS, 2)
+    + option_real(FRICTION_CT, "nan") + option_real(FRICTION_CT, -1) + option_real(FRICTION_CT, "inf")
+    + op("NULLS") + solve() + op("RESET_HISTORY") + op("RESET_HISTORY") + solve() + op("WRITE_VTU") + u8(0),
+    # assemblies with friction: Tresca on pair 1, Coulomb on pair 2 of the three-block stack, in
+    # two load steps, then a reset and the pairs' laws swapped
+    "friction_pairs": stack3() + friction(1, TRESCA, 0.5) + friction(2, COULOMB, 0.3) + option_int(LOAD_STEPS, 2)
+    + solve() + op("QUERY") + op("RESET_HISTORY") + friction(1, COULOMB, 0.3) + friction(2, TRESCA, 0.5) + solve()
+    + friction(3, COULOMB, 0.3) + solve(),
+})
 
 
 def main():

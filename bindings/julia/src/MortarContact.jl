@@ -1,8 +1,8 @@
 """
     MortarContact
 
-Julia bindings of mortarcontact (include/mortarcontact.h): frictionless 2D contact between two
-linear-elastic bodies by the mortar finite element method.
+Julia bindings of mortarcontact (include/mortarcontact.h): 2D contact between linear-elastic
+bodies, frictionless or with Tresca or Coulomb friction, by the mortar finite element method.
 
 UNTESTED AT RUN TIME: Julia is not available where this project is built and tested. The test
 `julia_wrappers` (bindings/julia/check_julia_wrappers.py) only checks, by parsing, that every
@@ -25,6 +25,12 @@ Two layers, both thin:
   `set_pair_gap_offset!`, `get_pair_contact_count`, `get_pair_contact_nodes` and
   `get_pair_contact(m, pair, field)` with `MC_CONTACT_PRESSURE`, `_FORCE`, `_GAP`, `_INITIAL_GAP`
   (a vector) or `MC_CONTACT_NORMAL` (2×n_contact).
+- Friction: `set_friction!(m, pair, law, value)` with `MC_FRICTION_NONE`, `MC_FRICTION_TRESCA`
+  (value: the slip bound) or `MC_FRICTION_COULOMB` (value: μ), `reset_history!`, the options
+  `MC_OPTION_LOAD_STEPS` and `MC_OPTION_FRICTION_CT`, the infos `MC_INFO_STICK_NODES`,
+  `MC_INFO_SLIP_NODES`, `MC_INFO_FRICTION_COMPLEMENTARITY`, and the pair fields
+  `MC_CONTACT_SHEAR`, `_SLIP`, `_SLIP_TOTAL` and `_STATE` (`MC_STATE_OPEN`, `_STICK`, `_SLIP` as
+  Float64) through `get_pair_contact`.
 
 The library is `libmortarcontact.so.0`, loaded from `ENV["MORTARCONTACT_LIBRARY"]` (full path)
 if set, else from the install prefix this package was installed into
@@ -59,6 +65,7 @@ export set_host_body!, add_stiffness!, add_element_matrices!, set_load_vector!, 
        get_contact_load, set_contact_curved!
 export set_body_count!, add_contact_pair!, set_pair_surface!, set_pair_surface_curved!, set_pair_gap_offset!,
        get_pair_contact_count, get_pair_contact_nodes, get_pair_contact
+export set_friction!, reset_history!
 
 # Resolved by soname: __init__ dlopens the chosen file first, and the dynamic loader then
 # matches this name against the already-loaded library's soname.
@@ -125,6 +132,9 @@ const MC_OPTION_THREADS = Cint(10)
 const MC_OPTION_INTERFACE_SOLVER = Cint(11)
 const MC_OPTION_ERROR_ESTIMATE = Cint(12)
 const MC_OPTION_MULTIPLIER = Cint(13)
+const MC_OPTION_LOAD_STEPS = Cint(14)
+const MC_OPTION_FRICTION_CT = Cint(15)
+const MC_OPTION_EAGER_RESULTS = Cint(16)
 const MC_METHOD_MORTAR = Cint(0)
 const MC_METHOD_DUAL_MORTAR = Cint(1)
 const MC_METHOD_NODE_TO_SEGMENT = Cint(2)
@@ -147,6 +157,16 @@ const MC_CONTACT_FORCE = Cint(2)
 const MC_CONTACT_GAP = Cint(3)
 const MC_CONTACT_INITIAL_GAP = Cint(4)
 const MC_CONTACT_NORMAL = Cint(5)
+const MC_CONTACT_SHEAR = Cint(6)
+const MC_CONTACT_SLIP = Cint(7)
+const MC_CONTACT_SLIP_TOTAL = Cint(8)
+const MC_CONTACT_STATE = Cint(9)
+const MC_STATE_OPEN = Cint(0)
+const MC_STATE_STICK = Cint(1)
+const MC_STATE_SLIP = Cint(2)
+const MC_FRICTION_NONE = Cint(0)
+const MC_FRICTION_TRESCA = Cint(1)
+const MC_FRICTION_COULOMB = Cint(2)
 const MC_MATRIX_FULL = Cint(1)
 const MC_MATRIX_TRIANGLE = Cint(2)
 const MC_LOG_PHASE = Cint(1)
@@ -158,6 +178,8 @@ const MC_INFO_ACTIVE_NODES = Cint(4)
 const MC_INFO_CONTACT_NODES = Cint(5)
 const MC_INFO_FACTORIZATIONS = Cint(6)
 const MC_INFO_INTERFACE_SOLVER = Cint(7)
+const MC_INFO_STICK_NODES = Cint(8)
+const MC_INFO_SLIP_NODES = Cint(9)
 const MC_INFO_TIME_ASSEMBLY = Cint(20)
 const MC_INFO_TIME_ANALYSIS = Cint(21)
 const MC_INFO_TIME_FACTORIZATION = Cint(22)
@@ -169,6 +191,8 @@ const MC_INFO_COMPLEMENTARITY = Cint(27)
 const MC_INFO_EQUILIBRIUM = Cint(28)
 const MC_INFO_GAP_RESIDUAL = Cint(29)
 const MC_INFO_ERROR_ESTIMATE = Cint(30)
+const MC_INFO_FRICTION_COMPLEMENTARITY = Cint(31)
+const MC_INFO_TIME_RESULTS = Cint(32)
 
 for name in names(@__MODULE__; all=true)
     startswith(String(name), "MC_") && @eval export $name
@@ -235,6 +259,9 @@ mc_get_pair_contact_nodes(m, pair, nodes) =
     ccall((:mc_get_pair_contact_nodes, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Ptr{Int32}), m, pair, nodes)
 mc_get_pair_contact(m, pair, field, out) =
     ccall((:mc_get_pair_contact, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Cint, Ptr{Cdouble}), m, pair, field, out)
+mc_set_friction(m, pair, law, value) =
+    ccall((:mc_set_friction, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Cint, Cdouble), m, pair, law, value)
+mc_reset_history(m) = ccall((:mc_reset_history, libmortarcontact), Cint, (Ptr{Cvoid},), m)
 mc_set_host_body(m, body, n_nodes, xy, equations, n_equations) =
     ccall((:mc_set_host_body, libmortarcontact), Cint, (Ptr{Cvoid}, Cint, Int32, Ptr{Cdouble}, Ptr{Int32}, Int32),
           m, body, n_nodes, xy, equations, n_equations)
@@ -498,6 +525,23 @@ function set_pair_gap_offset!(m::Model, pair::Integer, nodes::AbstractVector{<:I
     check(m, mc_set_pair_gap_offset(m, pair, length(nodes), ids(nodes), reals(offset)))
 end
 
+# ---- friction ------------------------------------------------------------------------------------
+
+"""
+    set_friction!(m, pair, law, value=0.0)
+
+The friction law of contact pair `pair` (1 for the two-body model's pair): `MC_FRICTION_COULOMB`
+(`value`: μ ≥ 0), `MC_FRICTION_TRESCA` (`value`: the slip bound, a shear traction ≥ 0) or
+`MC_FRICTION_NONE` (the default). Each `solve!` of a model with friction is a step from the last
+converged state, in `MC_OPTION_LOAD_STEPS` increments; `reset_history!` returns to the unloaded state.
+"""
+set_friction!(m::Model, pair::Integer, law::Integer, value::Real=0.0) =
+    check(m, mc_set_friction(m, pair, law, Cdouble(value)))
+
+"""Forgets the converged state: the next solve starts from the unloaded state (u = 0, loads 0,
+accumulated slip 0)."""
+reset_history!(m::Model) = check(m, mc_reset_history(m))
+
 # ---- host bodies: a legacy program's own matrices ----------------------------------------------
 
 """
@@ -720,7 +764,8 @@ end
 
 """A field of the pair's contact positions: `MC_CONTACT_PRESSURE`, `MC_CONTACT_FORCE`, `MC_CONTACT_GAP`,
 `MC_CONTACT_INITIAL_GAP` as a vector (as the `get_contact_*` getter of the same name), or
-`MC_CONTACT_NORMAL` as 2×n_contact."""
+`MC_CONTACT_NORMAL` as 2×n_contact; friction: `MC_CONTACT_SHEAR`, `MC_CONTACT_SLIP`,
+`MC_CONTACT_SLIP_TOTAL`, `MC_CONTACT_STATE` (`MC_STATE_OPEN`, `_STICK`, `_SLIP` as Float64) as vectors."""
 function get_pair_contact(m::Model, pair::Integer, field::Integer)
     n = get_pair_contact_count(m, pair)
     out = field == MC_CONTACT_NORMAL ? Matrix{Cdouble}(undef, 2, n) : Vector{Cdouble}(undef, n)

@@ -1,5 +1,5 @@
-"""Python bindings (ctypes + numpy) of mortarcontact: frictionless 2D contact between two
-linear-elastic bodies by the mortar finite element method.
+"""Python bindings (ctypes + numpy) of mortarcontact: 2D contact between linear-elastic bodies,
+frictionless or with Tresca or Coulomb friction, by the mortar finite element method.
 
 >>> import mortarcontact as mc
 >>> with mc.Model() as m:

@@ -127,6 +127,8 @@ PROTOTYPES = {
     "mc_get_pair_contact_count": (_i, [_p, _i, _pi32]),
     "mc_get_pair_contact_nodes": (_i, [_p, _i, _pi32]),
     "mc_get_pair_contact": (_i, [_p, _i, _i, _pd]),
+    "mc_set_friction": (_i, [_p, _i, _i, _d]),
+    "mc_reset_history": (_i, [_p]),
     "mc_set_host_body": (_i, [_p, _i, _i32, _pd, _pi32, _i32]),
     "mc_add_stiffness": (_i, [_p, _i, _i32, _pi32, _pi32, _pd, _i]),
     "mc_add_element_matrices": (_i, [_p, _i, _i32, _pi32, _pi32, _pd]),

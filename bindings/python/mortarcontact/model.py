@@ -367,6 +367,21 @@ class Model:
         off = _reals_rows(offset, nodes.shape[0], None, "offset")
         self._check(self._lib.mc_set_pair_gap_offset(self._h(), int(pair), nodes.shape[0], _ip(nodes), _dp(off)))
 
+    # ---- friction ---------------------------------------------------------------------------
+
+    def set_friction(self, pair, law, value=0.0):
+        """The friction law of ``pair`` (1 for the two-body model's pair; ``mc_set_friction``):
+        ``MC_FRICTION_COULOMB`` (``value``: mu >= 0), ``MC_FRICTION_TRESCA`` (``value``: the slip
+        bound, a shear traction >= 0) or ``MC_FRICTION_NONE`` (the default). Each solve of a model
+        with friction is a step from the last converged state (``MC_OPTION_LOAD_STEPS``
+        increments); :meth:`reset_history` returns to the unloaded state."""
+        self._check(self._lib.mc_set_friction(self._h(), int(pair), int(law), float(value)))
+
+    def reset_history(self):
+        """Forgets the converged state: the next solve starts from the unloaded state (u = 0,
+        loads 0, accumulated slip 0)."""
+        self._check(self._lib.mc_reset_history(self._h()))
+
     # ---- host bodies: a legacy program's own matrices ---------------------------------------
 
     def set_host_body(self, body, xy, equations, n_equations):
@@ -645,7 +660,9 @@ class Model:
     def get_pair_contact(self, pair, field):
         """A field of ``pair``'s contact positions (``mc_get_pair_contact``): ``MC_CONTACT_PRESSURE``,
         ``MC_CONTACT_FORCE``, ``MC_CONTACT_GAP``, ``MC_CONTACT_INITIAL_GAP`` as (m,), as the
-        ``get_contact_*`` getter of the same name; ``MC_CONTACT_NORMAL`` as (m, 2)."""
+        ``get_contact_*`` getter of the same name; ``MC_CONTACT_NORMAL`` as (m, 2); friction:
+        ``MC_CONTACT_SHEAR``, ``MC_CONTACT_SLIP``, ``MC_CONTACT_SLIP_TOTAL`` and
+        ``MC_CONTACT_STATE`` (``MC_STATE_OPEN``, ``_STICK`` or ``_SLIP`` as floats) as (m,)."""
         m = self.get_pair_contact_count(pair)
         out = np.empty((m, 2) if field == MC_CONTACT_NORMAL else (m,), dtype=np.float64)
         self._check(self._lib.mc_get_pair_contact(self._h(), int(pair), int(field), _dp(out)))

@@ -207,6 +207,9 @@ class TestModel(unittest.TestCase):
             # the error estimate: 1 (default) or 0
             self._check_int_option(m, mc.MC_OPTION_ERROR_ESTIMATE, "MC_OPTION_ERROR_ESTIMATE", (0, 1), (2,))
             self.assertIsInstance(m.get_info(mc.MC_INFO_ERROR_ESTIMATE), float)  # a real info
+            # results on demand (0, default) or computed by every solve (1); their time a real info
+            self._check_int_option(m, mc.MC_OPTION_EAGER_RESULTS, "MC_OPTION_EAGER_RESULTS", (1, 0), (2, -1))
+            self.assertIsInstance(m.get_info(mc.MC_INFO_TIME_RESULTS), float)
             # the multipliers of a quadratic body 1: MC_MULTIPLIER_LINEAR (default) or _QUADRATIC
             self._check_int_option(m, mc.MC_OPTION_MULTIPLIER, "MC_OPTION_MULTIPLIER",
                                    (mc.MC_MULTIPLIER_QUADRATIC, mc.MC_MULTIPLIER_LINEAR), (2, -1))

@@ -590,6 +590,59 @@ START_TEST(pairs_scene_parsed_and_checked) {
 }
 END_TEST
 
+START_TEST(friction_scene_parsed_and_checked) {
+  // Defaults: no friction, one load step, c_t scaled automatically.
+  const Scene plain = parse_scene(scene_text(), "dir/s.json");
+  ck_assert_int_eq(plain.load_steps, 1);
+  ck_assert_double_eq(plain.solver.friction_ct, 0.0);
+  ck_assert_int_eq(plain.pairs[0].friction_law, MC_FRICTION_NONE);
+  ck_assert(plain.pairs[0].friction_key.empty() && !has_friction(plain));
+  // A two-body scene: the top-level "friction" is the implied pair's.
+  const std::string top = "\"solver\": {";
+  const Scene two = parse_scene(scene_text(top, "\"friction\": { \"law\": \"coulomb\", \"mu\": 0.3 }, \"load_steps\": 5,\n " +
+                                                    top + " \"friction_ct\": 2.5, "),
+                                "dir/s.json");
+  ck_assert_int_eq(two.pairs[0].friction_law, MC_FRICTION_COULOMB);
+  ck_assert_double_eq(two.pairs[0].friction_value, 0.3);
+  ck_assert_str_eq(two.pairs[0].friction_key.c_str(), "friction");
+  ck_assert_int_eq(two.load_steps, 5);
+  ck_assert_double_eq(two.solver.friction_ct, 2.5);
+  ck_assert(has_friction(two));
+  // Pairs: each its own law; "none" is no friction.
+  const Scene pairs = parse_scene(
+      pairs_scene_text("\"b_top\" }", "\"b_top\", \"friction\": { \"law\": \"tresca\", \"bound\": 0.02 } }"),
+      "dir/s.json");
+  ck_assert_int_eq(pairs.pairs[0].friction_law, MC_FRICTION_TRESCA);
+  ck_assert_double_eq(pairs.pairs[0].friction_value, 0.02);
+  ck_assert_str_eq(pairs.pairs[0].friction_key.c_str(), "pairs[0].friction");
+  ck_assert_int_eq(pairs.pairs[1].friction_law, MC_FRICTION_NONE);
+  const Scene none = parse_scene(pairs_scene_text("\"b_top\" }", "\"b_top\", \"friction\": { \"law\": \"none\" } }"), "s.json");
+  ck_assert(!has_friction(none) && none.pairs[0].friction_key == "pairs[0].friction");
+  // Mistakes name the key.
+  auto top_error = [&](const std::string &keys) { return scene_error(scene_text(top, keys + ",\n " + top)); };
+  auto pair_error = [&](const std::string &friction) {
+    return scene_error(pairs_scene_text("\"b_top\" }", "\"b_top\", \"friction\": " + friction + " }"));
+  };
+  ASSERT_HAS(top_error("\"friction\": { \"law\": \"coulomb\", \"mu\": -0.1 }"),
+             "dir/s.json: friction.mu: the friction coefficient must be >= 0, got number -0.1");
+  ASSERT_HAS(pair_error("{ \"law\": \"tresca\", \"bound\": -1 }"),
+             "pairs[0].friction.bound: the Tresca slip bound must be >= 0");
+  ASSERT_HAS(pair_error("{ \"law\": \"coulomb\" }"), "pairs[0].friction.mu: missing (required)");
+  ASSERT_HAS(pair_error("{ \"law\": \"coulomb\", \"bound\": 0.1 }"), "pairs[0].friction.bound: unknown key");
+  ASSERT_HAS(pair_error("{ \"law\": \"coulomb\", \"muu\": 0.1 }"), "pairs[0].friction.muu: unknown key (did you mean 'mu'?)");
+  ASSERT_HAS(pair_error("{ \"lwa\": \"coulomb\", \"mu\": 0.1 }"), "pairs[0].friction.lwa: unknown key (did you mean 'law'?)");
+  ASSERT_HAS(pair_error("{ \"law\": \"amontons\", \"mu\": 0.1 }"),
+             "pairs[0].friction.law: \"amontons\" is not one of \"none\", \"tresca\", \"coulomb\"");
+  ASSERT_HAS(pair_error("0.3"), "pairs[0].friction: must be an object");
+  ASSERT_HAS(scene_error(pairs_scene_text("\"pairs\": [", "\"friction\": { \"law\": \"coulomb\", \"mu\": 0.3 },\n \"pairs\": [")),
+             "friction: the scene lists \"pairs\": give each pair its friction (pairs[].friction)");
+  ASSERT_HAS(top_error("\"load_steps\": 0"), "load_steps: must be an integer from 1 to 1000000, got number 0");
+  ASSERT_HAS(top_error("\"load_steps\": 2.5"), "load_steps: must be an integer from 1 to 1000000");
+  ASSERT_HAS(scene_error(scene_text("\"method\": \"dual_mortar\"", "\"friction_ct\": -1")),
+             "solver.friction_ct: must be >= 0 (0: scaled automatically)");
+}
+END_TEST
+
 START_TEST(scene_errors_name_the_key) {
   std::string e = scene_error(scene_text("\"material\": { \"E\": 2", "\"materail\": { \"E\": 2"));
   ASSERT_HAS(e, "dir/s.json: bodies[0].materail: unknown key (did you mean 'material'?)");
@@ -996,6 +1049,7 @@ int main(int argc, char **argv) {
   tcase_add_test(tc, second_order_body_cells_edges_and_supports);
   tcase_add_test(tc, second_order_errors_name_element_and_line);
   tcase_add_test(tc, valid_scene_parsed_with_defaults);
+  tcase_add_test(tc, friction_scene_parsed_and_checked);
   tcase_add_test(tc, contact_surface_options_parsed);
   tcase_add_test(tc, interface_solver_parsed);
   tcase_add_test(tc, multiplier_parsed);
