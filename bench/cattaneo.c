@@ -86,7 +86,8 @@ static void print_log(void *user, mc_log_level level, const char *message) {
   fprintf(stderr, "log: %s\n", message);
 }
 
-static mc_model *scene_model(const scene *sc, int method) {
+/* The scene's model; mu < 0: without friction. */
+static mc_model *scene_model_mu(const scene *sc, int method, double mu) {
   mc_model *m;
   if (mc_create(&m) != MC_OK) exit(2);
   if (getenv("CATTANEO_LOG")) CHECK(mc_set_log_callback(m, print_log, NULL));
@@ -100,9 +101,11 @@ static mc_model *scene_model(const scene *sc, int method) {
   CHECK(mc_set_contact(m, 2, sc->s.n_contact_edges[1], sc->s.contact_edges[1]));
   CHECK(mc_set_option_int(m, MC_OPTION_METHOD, method));
   CHECK(mc_set_option_int(m, MC_OPTION_ERROR_ESTIMATE, 0));
-  CHECK(mc_set_friction(m, 1, MC_FRICTION_COULOMB, MU));
+  if (mu >= 0) CHECK(mc_set_friction(m, 1, MC_FRICTION_COULOMB, mu));
   return m;
 }
+
+static mc_model *scene_model(const scene *sc, int method) { return scene_model_mu(sc, method, MU); }
 
 /* Moves the disc's top rigidly by (dx, -d) and solves (one step from the last state). Returns
    P and Q, the top's reactions (the forces the contact carries). */
@@ -242,19 +245,8 @@ static double cpu_seconds(void) {
 }
 
 static double timed_solves(const scene *sc, int method, double mu, int steps, double d, double dx, double *cpu) {
-  mc_model *m;
-  if (mc_create(&m) != MC_OK) exit(2);
-  for (int b = 0; b < 2; ++b) {
-    const hertz_mesh *mesh = &sc->s.body[b];
-    CHECK(mc_set_mesh(m, b + 1, mesh->n_nodes, mesh->xy, mesh->n_cells, mesh->nodes_per_cell, mesh->cells));
-    CHECK(mc_set_material(m, b + 1, 1.0, NU));
-  }
-  CHECK(mc_fix(m, 2, sc->s.n_bottom_nodes, sc->s.bottom_nodes, MC_XY, NULL));
-  CHECK(mc_set_contact(m, 1, sc->s.n_contact_edges[0], sc->s.contact_edges[0]));
-  CHECK(mc_set_contact(m, 2, sc->s.n_contact_edges[1], sc->s.contact_edges[1]));
-  CHECK(mc_set_option_int(m, MC_OPTION_METHOD, method));
+  mc_model *m = scene_model_mu(sc, method, mu > 0 ? mu : -1);
   CHECK(mc_set_option_int(m, MC_OPTION_THREADS, 1));
-  if (mu > 0) CHECK(mc_set_friction(m, 1, MC_FRICTION_COULOMB, mu));
   double *values = malloc(sizeof(double) * 2 * (size_t)sc->n_top);
   const double start = bench_wall(), cpu_start = cpu_seconds();
   for (int k = 1; k <= steps; ++k) {

@@ -185,13 +185,7 @@ std::unique_ptr<ContactSystem> Model::build_contact_system() {
   for (size_t k = 0; k < cs->groups.size(); ++k) {
     ContactGroup &group = cs->groups[k];
     const ConstraintRows &rows = group.rows;
-    const ContactPair &lead = pairs[group.pairs.front()];
-    for (int p : group.pairs)
-      if (pairs[p].friction_law != lead.friction_law || pairs[p].friction_value != lead.friction_value)
-        fail(MC_ERROR_CONTACT,
-             "pairs %d and %d join one surface (non-mortar body %d, mortar body %d) but have different friction "
-             "(mc_set_friction): give them the same law and value",
-             group.pairs.front() + 1, p + 1, group.nonmortar + 1, group.mortar + 1);
+    const ContactPair &lead = group_friction(group);
     const bool friction = lead.friction_law != MC_FRICTION_NONE;
     stack_rows(cs->rows, rows, group.first_position);
     for (int j = 0; j < group.positions(); ++j) cs->position_group.push_back(int(k));
@@ -232,8 +226,7 @@ std::unique_ptr<ContactSystem> Model::build_contact_system() {
       for (int b = 0; b < n; ++b) t_start[b].push_back(int(t_dof[b].size()));
       cs->tangent_of.push_back(row);
       cs->friction_law.push_back(lead.friction_law);
-      cs->friction_bound.push_back(lead.friction_law == MC_FRICTION_COULOMB ? lead.friction_value
-                                                                             : lead.friction_value * rows.measure[r]);
+      cs->friction_bound.push_back(0);  // (set at every solve: refresh_friction)
       t_bodies.emplace_back(group.nonmortar, group.mortar);
     }
     // B holds the mortar weights from here on: the group's copy goes (on a long interface each

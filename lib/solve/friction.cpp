@@ -17,20 +17,25 @@ bool Model::has_friction() const {
   return false;
 }
 
+// The friction of a group's pairs, which must agree (pairs joined into one surface).
+const ContactPair &Model::group_friction(const ContactGroup &group) const {
+  const ContactPair &lead = pairs[group.pairs.front()];
+  for (int p : group.pairs)
+    if (pairs[p].friction_law != lead.friction_law || pairs[p].friction_value != lead.friction_value)
+      fail(MC_ERROR_CONTACT,
+           "pairs %d and %d join one surface (non-mortar body %d, mortar body %d) but have different friction "
+           "(mc_set_friction): give them the same law and value",
+           group.pairs.front() + 1, p + 1, group.nonmortar + 1, group.mortar + 1);
+  return lead;
+}
+
 // Each tangential row's law and bound from its group's pairs, at every solve (mc_set_friction
-// changes values without a rebuild). The pairs joined into one surface must agree.
+// changes values without a rebuild).
 void Model::refresh_friction() {
   ContactSystem &cs = *contact_;
   for (size_t j = 0; j < cs.tangent_of.size(); ++j) {
     const int r = cs.tangent_of[j];
-    const ContactGroup &group = cs.groups[cs.row_group[r]];
-    const ContactPair &lead = pairs[group.pairs.front()];
-    for (int p : group.pairs)
-      if (pairs[p].friction_law != lead.friction_law || pairs[p].friction_value != lead.friction_value)
-        fail(MC_ERROR_CONTACT,
-             "pairs %d and %d join one surface (non-mortar body %d, mortar body %d) but have different friction "
-             "(mc_set_friction): give them the same law and value",
-             group.pairs.front() + 1, p + 1, group.nonmortar + 1, group.mortar + 1);
+    const ContactPair &lead = group_friction(cs.groups[cs.row_group[r]]);
     const double bound = lead.friction_law == MC_FRICTION_COULOMB ? lead.friction_value
                                                                    : lead.friction_value * cs.rows.measure[r];
     // A row whose law or bound changed starts sticking (its last slip state was for another law).

@@ -329,6 +329,7 @@ private:
   // Friction (friction.cpp): the rows' laws and bounds, the frictional condensed problem, the
   // history and load steps, the results per position.
   void refresh_friction();
+  const ContactPair &group_friction(const ContactGroup &group) const;
   void solve_condensed_friction(DualQp &qp, std::vector<double> &lambda, std::vector<double> &alpha);
   double tangential_reference(int row) const;  // B row `row` (tangential) times u0, less its prescribed part
   void prepare_history();
