@@ -140,6 +140,7 @@ std::vector<double> gap_of(const DualQp &p, const std::vector<double> &lambda, c
   for (int i = 0; i < p.q; ++i) gap[i] = -p.d[i];
   int one = 1;
   double plus = 1.0, minus = -1.0;
+  if (p.q == 0) return gap;  // (BLAS refuses a leading dimension of 0: "DGEMV parameter 6", seen by the fuzzer)
   dgemv_("N", &p.q, &p.q, &plus, p.s.data(), &p.q, lambda.data(), &one, &plus, gap.data(), &one);
   if (p.k > 0) dgemv_("N", &p.q, &p.k, &minus, p.g.data(), &p.q, alpha.data(), &one, &plus, gap.data(), &one);
   return gap;

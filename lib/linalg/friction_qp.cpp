@@ -163,7 +163,7 @@ FrictionResult solve_friction_qp(const DualQp &p, const FrictionProblem &f, doub
     }
     gap.assign(nb, 0.0);
     for (int i = 0; i < nb; ++i) gap[i] = -p.d[i];
-    {
+    if (nb > 0) {
       int one = 1;
       double plus = 1.0, minus = -1.0;
       dgemv_("N", &nb, &nb, &plus, p.s.data(), &nb, lambda.data(), &one, &plus, gap.data(), &one);

@@ -116,7 +116,13 @@ void Model::fall_back_to_condensed(std::vector<LoadSolve> &loads) {
   contact_->last_active.clear();
   contact_->solver.release();
   infos.dofs = 0, infos.factor_nnz = 0;  // counted again by the condensed path's load solves
+  // The structure is neither path's until the condensed one is built: a failure on the way (a
+  // host body whose factorization fails in the condensed path's ordering) must make the next
+  // solve rebuild, not find the sparse path released and no interface operator (a fuzz finding,
+  // b97bf1d6: the next solve read S out of an empty array).
+  built_version_ = 0;
   build_condensed([&](int b, BodyWork &work) { solve_loads(b, work, loads[b]); });
+  built_version_ = structure_version_;
   progress(MC_LOG_PHASE,
            "interface solver: condensed (the sparse path's active-set iteration cycled; the condensed QP has a "
            "fallback for that), factorized in %.3g s",
