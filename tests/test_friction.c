@@ -19,6 +19,7 @@
  *   MC_ERROR_SINGULAR naming the body;
  * - load steps: a proportional ramp in 1, 4 and 10 steps gives the same answer (no reversal);
  *   solves that step the loads up one by one carry the history; mc_reset_history forgets it;
+ * - pairs joined into one surface must agree on friction (MC_ERROR_CONTACT naming both pairs);
  * - bad input: a negative mu or bound, an unknown law, a pair out of range, load steps < 1,
  *   friction on a model without contact, friction on the sparse path forced.
  */
@@ -688,6 +689,45 @@ START_TEST(shrink_fit_torsion) {
 }
 END_TEST
 
+/* One non-mortar surface split into two pairs facing the same mortar body joins into one
+   surface: the pairs must then have the same friction (MC_ERROR_CONTACT naming both pairs), and
+   with the same friction they solve as the unsplit surface sticks. The handle stays usable. */
+START_TEST(split_surface_friction_must_agree) {
+  blocks b;
+  blocks_meshes(&b, 3, MC_METHOD_MORTAR);
+  const double mu = 0.5;
+  patch s = {P, 0.4 * mu * P, 0};
+  mc_model *m = blocks_model(&b, &s, MC_METHOD_MORTAR, MC_FRICTION_NONE, 0, 0);
+  const mc_int ne = b.upper.n_side_edges[SC_BOTTOM], half = ne / 2;
+  int pair;
+  OK(mc_set_contact(m, 1, half, b.upper.side_edges[SC_BOTTOM]));
+  OK(mc_add_contact_pair(m, 1, 2, &pair));
+  ck_assert_int_eq(pair, 2);
+  OK(mc_set_pair_surface(m, 2, 1, ne - half, b.upper.side_edges[SC_BOTTOM] + 2 * half));
+  OK(mc_set_pair_surface(m, 2, 2, b.lower.n_side_edges[SC_TOP], b.lower.side_edges[SC_TOP]));
+  OK(mc_set_friction(m, 2, MC_FRICTION_COULOMB, mu));
+  FAILS(mc_solve(m), MC_ERROR_CONTACT, "pairs 1 and 2");
+  OK(mc_set_friction(m, 1, MC_FRICTION_COULOMB, 0.4));
+  FAILS(mc_solve(m), MC_ERROR_CONTACT, "different friction");
+  OK(mc_set_friction(m, 1, MC_FRICTION_COULOMB, mu));
+  SUCCEEDS(mc_solve(m));
+  for (int p = 1; p <= 2; ++p) {
+    mc_int n;
+    OK(mc_get_pair_contact_count(m, p, &n));
+    double *shear = malloc(sizeof(double) * (size_t)n), *state = malloc(sizeof(double) * (size_t)n);
+    OK(mc_get_pair_contact(m, p, MC_CONTACT_SHEAR, shear));
+    OK(mc_get_pair_contact(m, p, MC_CONTACT_STATE, state));
+    for (mc_int j = 0; j < n; ++j) {
+      ck_assert(state[j] == MC_STATE_STICK);
+      ck_assert_msg(fabs(shear[j] + s.tau) <= 1e-10 * s.p, "pair %d position %d shear %.17g", p, (int)j, shear[j]);
+    }
+    free(shear), free(state);
+  }
+  mc_destroy(m);
+  blocks_free(&b);
+}
+END_TEST
+
 Suite *friction_suite(void) {
   Suite *s = suite_create("friction");
   TCase *tc = tcase_create("patch");
@@ -707,6 +747,7 @@ Suite *friction_suite(void) {
   suite_add_tcase(s, tc);
   tc = tcase_create("input");
   tcase_add_test(tc, bad_input);
+  tcase_add_test(tc, split_surface_friction_must_agree);
   suite_add_tcase(s, tc);
   return s;
 }
