@@ -134,7 +134,7 @@ std::vector<mc::SurfaceSegment> checked_surface(mc::Model &model, int body, mc_i
 // Sets one side of pair p (0-based) to the body's checked edges.
 void set_pair_side(mc::Model &model, int p, int body, mc_int n_edges, const mc_int *edges, int per_edge) {
   mc::ContactPair &pair = model.pairs[p];
-  const int b = body - 1;
+  const long long b = (long long)body - 1;  // (body may be any int: INT_MIN - 1 overflowed, a fuzz finding)
   if (b != pair.nonmortar && b != pair.mortar)
     fail(MC_ERROR_ARGUMENT, "body = %d: pair %d joins bodies %d (non-mortar) and %d (mortar)", body, p + 1,
          pair.nonmortar + 1, pair.mortar + 1);
