@@ -25,7 +25,7 @@ set(MC_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/mortarcontact"
 set(MC_INSTALL_DATADIR "${CMAKE_INSTALL_DATADIR}/mortarcontact")
 
 # ---- the static library's link interface, as seen by an installed consumer ----------
-# lib/ links mortarcontact_static PUBLIC to ${CHOLMOD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY}
+# lib/ links mortarcontact_static PUBLIC to ${CHOLMOD_LIBRARY} ${UMFPACK_LIBRARY} ${SUITESPARSECONFIG_LIBRARY}
 # (absolute paths of this machine) and PkgConfig::LAPACK / PkgConfig::OPENBLAS (imported
 # targets that only exist in this build). Exported as they are, they would either pin the
 # build machine's paths or name targets a consumer does not have. So the build keeps them
@@ -37,6 +37,8 @@ set(_mc_static_new_iface "")
 foreach(_mc_item IN LISTS _mc_static_iface)
   if(_mc_item STREQUAL "${CHOLMOD_LIBRARY}")
     list(APPEND _mc_static_new_iface "$<BUILD_INTERFACE:${_mc_item}>" "$<INSTALL_INTERFACE:mortarcontact::deps_cholmod>")
+  elseif(_mc_item STREQUAL "${UMFPACK_LIBRARY}")
+    list(APPEND _mc_static_new_iface "$<BUILD_INTERFACE:${_mc_item}>" "$<INSTALL_INTERFACE:mortarcontact::deps_umfpack>")
   elseif(_mc_item STREQUAL "${SUITESPARSECONFIG_LIBRARY}")
     list(APPEND _mc_static_new_iface "$<BUILD_INTERFACE:${_mc_item}>" "$<INSTALL_INTERFACE:mortarcontact::deps_suitesparseconfig>")
   elseif(_mc_item STREQUAL "PkgConfig::OPENBLAS")

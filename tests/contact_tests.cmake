@@ -34,6 +34,10 @@ set_tests_properties(test_interface_solvers PROPERTIES TIMEOUT 600)
 # invariance under renumbering and splitting, conservation, bad input (tests/test_contact_pairs.c).
 mc_add_check_test(test_contact_pairs test_contact_pairs.c host_assembly.c)
 
+# The condensed interface operator stored by blocks (issue 32): a chain's condensed answer is the
+# sparse path's, its storage grows linearly, friction on separate blocks (tests/test_interface_blocks.c).
+mc_add_check_test(test_interface_blocks test_interface_blocks.c)
+
 # Friction (issue 33): frictional patch tests (stick and slip, every method), mu = 0 against the
 # frictionless solve, a floating body in full slip, load steps and history, bad input
 # (tests/test_friction.c).

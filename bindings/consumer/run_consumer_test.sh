@@ -92,7 +92,7 @@ c_consumers() {
   step "C: pkg-config --static"
   slibs=$("$PKG_CONFIG" --static --libs mortarcontact)
   echo "static libs: $slibs"
-  for want in -lcholmod -lsuitesparseconfig -lstdc++ -lm -lopenblas -llapack; do
+  for want in -lcholmod -lumfpack -lsuitesparseconfig -lstdc++ -lm -lopenblas -llapack; do
     case " $slibs " in *" $want "*) ;; *) fail "pkg-config --static --libs lacks $want" ;; esac
   done
   # -lmortarcontact would pick the .so next to the .a; ask GNU ld for the archive explicitly.

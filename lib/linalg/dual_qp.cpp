@@ -1,4 +1,5 @@
 #include "linalg/dual_qp.hpp"
+#include "linalg/sparse_lu.hpp"
 #include "support/error.hpp"
 #include "support/lapack.hpp"
 #include <algorithm>
@@ -81,6 +82,41 @@ double nonnegative_least_squares(int k, int q, const std::vector<double> &a, con
   return std::sqrt(norm);
 }
 
+// solve_on_active_set's system when S is stored by blocks: the same matrix,
+//   [S_AA + shift I, -g G_A; -g G_A^T, -shift I] [l_A; a / g] = [d_A; -g e],
+// assembled sparse (S_AA from the stored blocks only, G_A's nonzeros: a row's rigid modes are
+// those of the bodies it touches) and factorized by sparse LU with pivoting, which like dsysv
+// needs no definite S_AA. Returns false if a pivot is zero.
+bool solve_on_active_set_by_blocks(const DualQp &p, const std::vector<int> &act, double g_scale,
+                                   std::vector<double> &lambda, std::vector<double> &alpha, double shift) {
+  const int na = int(act.size()), k = p.k, n = na + k;
+  std::vector<int> position(p.q, -1);
+  std::vector<char> in_a(p.q, 0);
+  for (int a = 0; a < na; ++a) position[act[a]] = a, in_a[act[a]] = 1;
+  std::vector<long> row, column;
+  std::vector<double> value, rhs(n);
+  auto add = [&](int r, int c, double v) { row.push_back(r), column.push_back(c), value.push_back(v); };
+  p.s.for_each_entry(in_a, in_a, [&](int r, int c, double v) { add(position[r], position[c], v); });
+  for (int a = 0; a < na; ++a)
+    if (shift != 0) add(a, a, shift);
+  for (int c = 0; c < k; ++c) {
+    if (shift != 0) add(na + c, na + c, -shift);
+    for (int a = 0; a < na; ++a) {
+      const double v = -g_scale * p.g[size_t(c) * p.q + act[a]];
+      if (v != 0) add(a, na + c, v), add(na + c, a, v);
+    }
+  }
+  for (int a = 0; a < na; ++a) rhs[a] = p.d[act[a]];
+  for (int c = 0; c < k; ++c) rhs[na + c] = -g_scale * p.e[c];
+  SparseLu lu;
+  if (!lu.factorize(n, row, column, value)) return false;
+  std::vector<double> x(n);
+  lu.solve(rhs.data(), x.data());
+  for (int a = 0; a < na; ++a) lambda[act[a]] = x[a];
+  for (int c = 0; c < k; ++c) alpha[c] = g_scale * x[na + c];
+  return true;
+}
+
 // Solves the equality-constrained problem on the active set A:
 //   S_AA l_A - G_A a = d_A,  G_A^T l_A = e.
 // Returns false if the system is singular (G_A does not hold the floating modes).
@@ -107,10 +143,12 @@ bool solve_on_active_set(const DualQp &p, const std::vector<int> &act, double g_
     dsyev_("N", "U", &k, gram.data(), &k, eig.data(), work.data(), &lwork, &info);
     if (info != 0 || !(eig[0] > 1e-12 * eig[k - 1])) return false;
   }
+  if (!p.s.dense()) return solve_on_active_set_by_blocks(p, act, g_scale, lambda, alpha, shift);
   // Symmetric indefinite system, the G block scaled by g_scale so both blocks are of one size.
+  const double *s = p.s.dense_values();
   std::vector<double> m(size_t(n) * n, 0.0), rhs(n);
   for (int b = 0; b < na; ++b)
-    for (int a = 0; a < na; ++a) m[size_t(b) * n + a] = p.s[size_t(act[b]) * p.q + act[a]];
+    for (int a = 0; a < na; ++a) m[size_t(b) * n + a] = s[size_t(act[b]) * p.q + act[a]];
   for (int a = 0; a < na; ++a) m[size_t(a) * n + a] += shift;
   for (int c = 0; c < k; ++c) m[size_t(na + c) * n + na + c] -= shift;
   for (int c = 0; c < k; ++c)
@@ -141,7 +179,7 @@ std::vector<double> gap_of(const DualQp &p, const std::vector<double> &lambda, c
   int one = 1;
   double plus = 1.0, minus = -1.0;
   if (p.q == 0) return gap;  // (BLAS refuses a leading dimension of 0: "DGEMV parameter 6", seen by the fuzzer)
-  dgemv_("N", &p.q, &p.q, &plus, p.s.data(), &p.q, lambda.data(), &one, &plus, gap.data(), &one);
+  p.s.multiply_add(plus, lambda.data(), gap.data());
   if (p.k > 0) dgemv_("N", &p.q, &p.k, &minus, p.g.data(), &p.q, alpha.data(), &one, &plus, gap.data(), &one);
   return gap;
 }
@@ -242,7 +280,7 @@ double load_imbalance(const DualQp &p) {
 bool solve_correction(const DualQp &p, const std::vector<char> &active, std::vector<double> &dl,
                       std::vector<double> &da) {
   double s_scale = 0;
-  for (int i = 0; i < p.q; ++i) s_scale = std::max(s_scale, p.s[size_t(i) * p.q + i]);
+  for (int i = 0; i < p.q; ++i) s_scale = std::max(s_scale, p.s.diagonal(i));
   if (!(s_scale > 0)) s_scale = 1;
   std::vector<int> act;
   for (int i = 0; i < p.q; ++i)
@@ -255,7 +293,7 @@ DualQpResult solve_dual_qp(const DualQp &p, double tolerance, int max_iterations
   DualQpResult result;
   const int q = p.q;
   double s_scale = 0, d_scale = 0, e_norm = 0;
-  for (int i = 0; i < q; ++i) s_scale = std::max(s_scale, p.s[size_t(i) * q + i]), d_scale = std::max(d_scale, std::fabs(p.d[i]));
+  for (int i = 0; i < q; ++i) s_scale = std::max(s_scale, p.s.diagonal(i)), d_scale = std::max(d_scale, std::fabs(p.d[i]));
   for (double v : p.e) e_norm += v * v;
   e_norm = std::sqrt(e_norm);
   if (!(s_scale > 0)) s_scale = 1;

@@ -2,13 +2,16 @@
 //
 //   minimise 1/2 l^T S l - l^T d   over  l >= 0,  G^T l = e
 //
-// with S = B K^+ B^T (q x q, dense SPD on ker G^T), d = B K^+ f - g, G = B R (q x k, R the
+// with S = B K^+ B^T (q x q, SPD on ker G^T; stored by blocks, block_sparse_operator.hpp), d = B K^+ f - g, G = B R (q x k, R the
 // rigid modes of floating bodies), e = R^T f. Its KKT conditions are those of (3.5):
 //   gap = S l - d - G a >= 0,  l >= 0,  l . gap = 0,  G^T l = e,
 // and u = K^+ (f - B^T l) + R a. Solved by a primal-dual active-set (semismooth Newton)
 // iteration, which is exact once the active set is right; if it cycles, Murty's least-index
-// single pivoting takes over (finite for S positive definite).
+// single pivoting takes over (finite for S positive definite). Each iteration solves a linear
+// system on the active rows: dense (LAPACK) when S is one dense block, as with two bodies;
+// otherwise sparse (sparse_lu.hpp), never forming the blocks between rows that share no body.
 #pragma once
+#include "linalg/block_sparse_operator.hpp"
 #include <functional>
 #include <string>
 #include <vector>
@@ -17,7 +20,7 @@ namespace mc {
 
 struct DualQp {
   int q = 0, k = 0;
-  std::vector<double> s;  // q x q column-major
+  BlockSparseOperator s;  // q x q
   std::vector<double> d;  // q
   std::vector<double> g;  // q x k column-major
   std::vector<double> e;  // k

@@ -1,4 +1,5 @@
 #include "linalg/friction_qp.hpp"
+#include "linalg/sparse_lu.hpp"
 #include "mortarcontact.h"
 #include "support/lapack.hpp"
 #include <algorithm>
@@ -23,6 +24,67 @@ double friction_bound(const FrictionProblem &f, int j, double lambda_n, double g
 double slip_sign(FrictionState s) { return s == FrictionState::slip_plus ? 1.0 : -1.0; }
 bool slipping(FrictionState s) { return s == FrictionState::slip_plus || s == FrictionState::slip_minus; }
 
+// A slipping row's multiplier in terms of the unknowns: l_t = sign * mu * l_n (Coulomb) or
+// sign * its Tresca force.
+void set_slip_multipliers(const FrictionProblem &f, const std::vector<char> &active,
+                          const std::vector<FrictionState> &state, std::vector<double> &lambda) {
+  const int q = f.normal_rows, m = int(f.tangent_of.size());
+  for (int j = 0; j < m; ++j)
+    if (f.live(j, active) && slipping(state[j]))
+      lambda[q + j] = slip_sign(state[j]) * f.bound[j] * (f.law[j] == MC_FRICTION_COULOMB ? lambda[f.tangent_of[j]] : 1.0);
+}
+
+// solve_states' system when S is stored by blocks: the same equations assembled sparse (S's
+// stored blocks only, G's nonzeros) and factorized by sparse LU with pivoting (UMFPACK), with
+// the same test of the reciprocal condition number (dgecon's estimator on the sparse factor).
+// rows / index: the unknowns' rows and each row's unknown (-1: none), as solve_states numbers them.
+bool solve_states_by_blocks(const DualQp &p, const FrictionProblem &f, const std::vector<char> &active,
+                            const std::vector<FrictionState> &state, double g_scale, const std::vector<int> &rows,
+                            const std::vector<int> &index, std::vector<double> &lambda, std::vector<double> &alpha) {
+  const int nb = p.q, q = f.normal_rows, m = int(f.tangent_of.size()), k = p.k, nf = int(rows.size()), n = nf + k;
+  std::vector<long> row, column;
+  std::vector<double> value, rhs(n, 0.0);
+  auto add = [&](int r, int c, double v) { row.push_back(r), column.push_back(c), value.push_back(v); };
+  // The slipping rows: a Coulomb row's column goes to its normal row's unknown (times mu and its
+  // sign), a Tresca row's known force to the right-hand side.
+  std::vector<char> unknown(nb, 0), slip(nb, 0);
+  for (int r : rows) unknown[r] = 1;
+  std::vector<double> slip_factor(nb, 0.0);
+  for (int j = 0; j < m; ++j)
+    if (f.live(j, active) && slipping(state[j])) slip[q + j] = 1, slip_factor[q + j] = slip_sign(state[j]) * f.bound[j];
+  auto slip_term = [&](int eq, int col, double v) {
+    const int j = col - q;
+    if (f.law[j] == MC_FRICTION_COULOMB) add(eq, index[f.tangent_of[j]], v * slip_factor[col]);
+    else rhs[eq] -= v * slip_factor[col];
+  };
+  // Equations of the unknowns' rows: (S l - G a)_i = d_i.
+  p.s.for_each_entry(unknown, unknown, [&](int r, int c, double v) { add(index[r], index[c], v); });
+  p.s.for_each_entry(unknown, slip, [&](int r, int c, double v) { slip_term(index[r], c, v); });
+  for (int e = 0; e < nf; ++e) rhs[e] += p.d[rows[e]];
+  // G^T l = e (scaled by -g_scale), and G's columns.
+  for (int c = 0; c < k; ++c) {
+    const int e = nf + c;
+    for (int col = 0; col < nf; ++col) {
+      const double v = -g_scale * p.g[size_t(c) * nb + rows[col]];
+      if (v != 0) add(e, col, v), add(col, e, v);
+    }
+    for (int r = q; r < nb; ++r) {
+      const double v = -g_scale * p.g[size_t(c) * nb + r];
+      if (slip[r] && v != 0) slip_term(e, r, v);
+    }
+    rhs[e] += -g_scale * p.e[c];
+  }
+  SparseLu lu;
+  if (!lu.factorize(n, row, column, value)) return false;
+  if (!(lu.reciprocal_condition() > 1e-14)) return false;
+  std::vector<double> x(n);
+  lu.solve(rhs.data(), x.data());
+  for (int e = 0; e < nf; ++e) lambda[rows[e]] = x[e];
+  for (int c = 0; c < k; ++c) alpha[c] = g_scale * x[nf + c];
+  set_slip_multipliers(f, active, state, lambda);
+  return true;
+}
+
 // The linear system of one set of states: unknowns l on the normal rows in contact and on the
 // sticking tangential rows, and alpha; a slipping row's l_t = sign * (mu l_n or its Tresca
 // force) is substituted. Equations: (S l - G a)_i = d_i on the unknowns' rows, G^T l = e (the G
@@ -42,9 +104,11 @@ bool solve_states(const DualQp &p, const FrictionProblem &f, const std::vector<c
   lambda.assign(nb, 0.0);
   alpha.assign(k, 0.0);
   if (n == 0) return true;
+  if (!p.s.dense()) return solve_states_by_blocks(p, f, active, state, g_scale, rows, index, lambda, alpha);
   std::vector<double> a(size_t(n) * n, 0.0), rhs(n, 0.0);
   auto at = [&](int row, int col) -> double & { return a[size_t(col) * n + row]; };
-  const auto s = [&](int i, int c) { return p.s[size_t(c) * nb + i]; };
+  const double *s_values = p.s.dense_values();
+  const auto s = [&](int i, int c) { return s_values[size_t(c) * nb + i]; };
   const auto g = [&](int i, int c) { return p.g[size_t(c) * nb + i]; };
   // A slipping row's multiplier: coefficient times l_n (Coulomb) or a known force (Tresca).
   auto slip_terms = [&](int eq, auto &&value_of_row) {
@@ -86,9 +150,7 @@ bool solve_states(const DualQp &p, const FrictionProblem &f, const std::vector<c
   if (info != 0) return false;
   for (int e = 0; e < nf; ++e) lambda[rows[e]] = rhs[e];
   for (int c = 0; c < k; ++c) alpha[c] = g_scale * rhs[nf + c];
-  for (int j = 0; j < m; ++j)
-    if (f.live(j, active) && slipping(state[j]))
-      lambda[q + j] = slip_sign(state[j]) * f.bound[j] * (f.law[j] == MC_FRICTION_COULOMB ? lambda[f.tangent_of[j]] : 1.0);
+  set_slip_multipliers(f, active, state, lambda);
   return true;
 }
 
@@ -130,7 +192,7 @@ FrictionResult solve_friction_qp(const DualQp &p, const FrictionProblem &f, doub
   FrictionResult result;
   const int nb = p.q, q = f.normal_rows, m = int(f.tangent_of.size());
   double s_scale = 0, d_scale = 0;
-  for (int i = 0; i < nb; ++i) s_scale = std::max(s_scale, p.s[size_t(i) * nb + i]);
+  for (int i = 0; i < nb; ++i) s_scale = std::max(s_scale, p.s.diagonal(i));
   for (int i = 0; i < nb; ++i) d_scale = std::max(d_scale, std::fabs(p.d[i]));
   if (!(s_scale > 0)) s_scale = 1;
   const double cn = 1 / s_scale, ct = f.ct > 0 ? f.ct : 1 / s_scale, eps = 1e-13;
@@ -166,7 +228,7 @@ FrictionResult solve_friction_qp(const DualQp &p, const FrictionProblem &f, doub
     if (nb > 0) {
       int one = 1;
       double plus = 1.0, minus = -1.0;
-      dgemv_("N", &nb, &nb, &plus, p.s.data(), &nb, lambda.data(), &one, &plus, gap.data(), &one);
+      p.s.multiply_add(plus, lambda.data(), gap.data());
       if (p.k > 0) dgemv_("N", &nb, &p.k, &minus, p.g.data(), &nb, alpha.data(), &one, &plus, gap.data(), &one);
     }
     double lambda_ref = 0;

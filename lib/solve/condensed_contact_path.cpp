@@ -2,9 +2,13 @@
 // each body factorized alone with its contact unknowns last, the problem condensed onto the
 // q contact rows through the trailing blocks of the factors,
 //     S = B K^+ B^T = sum_b W_b^T W_b,  W_b = L_GG^-1 (P B_b^T)_G,
-// and the dual QP (dual_qp.hpp) solved densely. Cheap while q is small beside the bodies (a
-// re-solve then costs two triangular solves per body); O(q^3) time and O(q^2) memory when it is
-// not, where the sparse path (sparse_contact_path.cpp) takes over.
+// and the dual QP (dual_qp.hpp) solved on it. S is stored by blocks of rows (block_sparse_operator.hpp):
+// s_b couples only the rows touching body b, so a block of S between two pairs that share no
+// body is never formed, and the active-set systems are factorized sparse when there is more
+// than one block (a chain of N bodies: block tridiagonal, cost linear in N). Cheap while each
+// body's contact rows are few beside the body (a re-solve then costs two triangular solves per
+// body); with two bodies S is one dense block, O(q^3) time and O(q^2) memory, and when q is
+// large the sparse path (sparse_contact_path.cpp) takes over.
 #include "solve/model.hpp"
 #include "support/error.hpp"
 #include "support/lapack.hpp"
@@ -88,22 +92,25 @@ void Model::build_condensed(const std::function<void(int, BodyWork &)> &then) {
     Stopwatch watch(infos.t_contact);
     const double start = now();
     ContactSystem &cs = *contact_;
-    const size_t q = size_t(cs.b_rows());  // with friction the tangential rows too
-    cs.s.assign(q * q, 0.0);
+    const int q = cs.b_rows();  // with friction the tangential rows too
+    cs.s = BlockSparseOperator(q, cs.body_rows);
     double t_blocks = 0;
     for (int b = 0; b < n_bodies(); ++b) {
       t_blocks += t_operator[b];
-      if (s_b[b].empty()) continue;
-      const std::vector<int> &columns = cs.body_rows[b];
-      const size_t qb = columns.size();
-      for (size_t j = 0; j < qb; ++j)
-        for (size_t i = 0; i < qb; ++i) cs.s[size_t(columns[j]) * q + size_t(columns[i])] += s_b[b][j * qb + i];
+      if (!s_b[b].empty()) cs.s.add_share(cs.body_rows[b], s_b[b]);
+      std::vector<double>().swap(s_b[b]);
     }
-    for (size_t j = 0; j < q; ++j)
-      for (size_t i = j + 1; i < q; ++i) cs.s[j * q + i] = cs.s[i * q + j];
+    cs.s.symmetrize();
     cs.last_active.clear();
-    progress(MC_LOG_PHASE, "interface operator: S = B K^+ B^T of order %zu, %.3g s", q, t_blocks + now() - start);
+    progress(MC_LOG_PHASE, "interface operator: S = B K^+ B^T of order %d, %d block%s of rows, %zu entries stored, %.3g s",
+             q, cs.s.blocks(), cs.s.blocks() == 1 ? "" : "s", cs.s.stored_entries(), t_blocks + now() - start);
   }
+}
+
+Model::CondensedOperatorCost Model::condensed_operator_cost() const {
+  const ContactSystem &cs = *contact_;
+  const BlockSparseOperator pattern(cs.b_rows(), cs.body_rows);
+  return {8 * double(pattern.stored_entries()), pattern.elimination_flops(), pattern.blocks()};
 }
 
 // The sparse path's active-set iteration cycled (SparseContactResult::cycled): the condensed

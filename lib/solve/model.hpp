@@ -107,7 +107,9 @@ struct ContactSystem {
   std::vector<std::vector<double>> b_value;
   // The rows that touch each body (B_b's nonzero columns), increasing.
   std::vector<std::vector<int>> body_rows;
-  std::vector<double> s;           // q x q interface operator B K^+ B^T
+  // The q x q interface operator B K^+ B^T, stored by blocks of rows: block (I, J) only if a
+  // body touches rows of both (block_sparse_operator.hpp; two bodies: one dense block).
+  BlockSparseOperator s;
   // W_b = L_GG^-1 (P B_b^T)_G per body (rows: the factor's trailing interface unknowns; columns:
   // the rows touching b, body_rows[b]): S = sum W_b^T W_b, B K^-1 f = sum W_b^T (L^-1 P f)_G, and
   // the recovery needs only L^-1 P B^T lambda = [0; W_b lambda]: one forward and one backward
@@ -308,6 +310,13 @@ private:
   bool choose_interface_solver();
   // MC_ERROR_MEMORY if the condensed path's dense blocks (S, W_b, L_GG) would not fit.
   void check_condensed_fits() const;
+  // The condensed path's interface operator as it will be stored (its pattern, no values):
+  // its bytes and the flops of one factorization of its active rows (condensed_contact_path.cpp).
+  struct CondensedOperatorCost {
+    double bytes = 0, flops = 0;
+    int blocks = 0;
+  };
+  CondensedOperatorCost condensed_operator_cost() const;
   // The sparse path (sparse_contact_path.cpp). solve_sparse returns false if its active-set
   // iteration cycled (then fall_back_to_condensed).
   void build_sparse_structure();

@@ -67,7 +67,7 @@ constexpr double kCondensedMemoryShare = 0.5;
 void Model::check_condensed_fits() const {
   const ContactSystem &cs = *contact_;
   const double q = cs.rows.size();
-  double bytes = 8 * q * q;
+  double bytes = condensed_operator_cost().bytes;
   for (int b = 0; b < n_bodies(); ++b)
     if (system_[b]) {
       const double ng = double(system_[b]->interface.size()), qb = double(cs.body_rows[b].size());
@@ -77,7 +77,7 @@ void Model::check_condensed_fits() const {
   if (memory > 0 && bytes > memory)
     fail(MC_ERROR_MEMORY,
          "the condensed interface solver (MC_INTERFACE_CONDENSED) would need about %.3g GiB for %d contact rows "
-         "(a dense operator of order q), and %.3g GiB are available: use MC_INTERFACE_SPARSE or MC_INTERFACE_AUTO",
+         "(an interface operator of order q), and %.3g GiB are available: use MC_INTERFACE_SPARSE or MC_INTERFACE_AUTO",
          gib(bytes), int(q), gib(memory));
 }
 
@@ -87,8 +87,8 @@ bool Model::choose_interface_solver() {
   const double q = cs.b_rows();
   // The condensed path's cost from the bodies' analyses (interface last): their factors, each
   // body's W_b = L_GG^-1 B_G^T (ng x q) and its dense L_GG copy, S (q x q); time: the
-  // factorizations, the triangular solve and rank-k update that form S, and the dense
-  // active-set solves (about q^3).
+  // factorizations, the triangular solve and rank-k update that form S, and the active-set
+  // solves (q^3 for one dense block; by S's blocks otherwise: condensed_operator_cost).
   double flops = 0, nnz = 0, dense_block_flops = 0, dense_block_nnz = 0, extra_flops = 0, extra_bytes = 0;
   for (int b = 0; b < n_bodies(); ++b) {
     if (!system_[b]) continue;
@@ -99,8 +99,9 @@ bool Model::choose_interface_solver() {
     extra_flops += ng * ng * qb + ng * qb * qb;
     extra_bytes += 8 * (ng * qb + ng * ng);
   }
-  const double condensed_bytes = 8 * nnz + extra_bytes + 8 * q * q;
-  const double condensed_flops = flops + extra_flops + q * q * q;
+  const CondensedOperatorCost interface_operator = condensed_operator_cost();
+  const double condensed_bytes = 8 * nnz + extra_bytes + interface_operator.bytes;
+  const double condensed_flops = flops + extra_flops + interface_operator.flops;
   // The sparse path: about the bodies' factorization without the dense trailing blocks, once
   // per active-set iteration.
   const double plain_flops = std::max(flops - dense_block_flops, 0.05 * flops);
@@ -127,7 +128,7 @@ bool Model::choose_interface_solver() {
     if (memory > 0 && condensed_bytes > memory)
       fail(MC_ERROR_MEMORY,
            "the condensed interface solver (MC_INTERFACE_CONDENSED) would need about %.3g GiB for %d contact rows "
-           "(a dense operator of order q), and %.3g GiB are available: use MC_INTERFACE_SPARSE or MC_INTERFACE_AUTO",
+           "(an interface operator of order q), and %.3g GiB are available: use MC_INTERFACE_SPARSE or MC_INTERFACE_AUTO",
            gib(condensed_bytes), int(q), gib(memory));
     progress(MC_LOG_PHASE, "interface solver: condensed (asked for), estimated %.3g flops and %.3g GiB, %.3g s",
              condensed_flops, gib(condensed_bytes), now() - start);

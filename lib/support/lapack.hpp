@@ -17,6 +17,9 @@ void dtrsm_(const char *side, const char *uplo, const char *transa, const char *
             const int *n, const double *alpha, const double *a, const int *lda, double *b, const int *ldb);
 void dsyrk_(const char *uplo, const char *trans, const int *n, const int *k, const double *alpha,
             const double *a, const int *lda, const double *beta, double *c, const int *ldc);
+// Higham's estimate of ||A^-1||_1 by reverse communication (what dgecon uses inside): the
+// caller applies A^-1 (kase 1) or A^-T (kase 2) to x until kase is 0.
+void dlacn2_(const int *n, double *v, double *x, int *isgn, double *est, int *kase, int *isave);
 void dgemv_(const char *trans, const int *m, const int *n, const double *alpha, const double *a,
             const int *lda, const double *x, const int *incx, const double *beta, double *y, const int *incy);
 }
