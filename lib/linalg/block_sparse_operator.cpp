@@ -144,6 +144,36 @@ void BlockSparseOperator::multiply_add(double alpha, const double *x, double *y)
     }
 }
 
+SymmetricCsc BlockSparseOperator::principal_upper(const std::vector<char> &mask, std::vector<int> &order) const {
+  const int nb = blocks();
+  std::vector<std::vector<int>> kept(nb);  // per block: its masked local indices
+  std::vector<int> first(nb + 1, 0);       // per block: its first unknown
+  order.clear();
+  for (int b = 0; b < nb; ++b) {
+    first[b] = int(order.size());
+    for (int l = 0; l < int(block_rows_[b].size()); ++l)
+      if (mask[block_rows_[b][l]]) kept[b].push_back(l), order.push_back(block_rows_[b][l]);
+  }
+  first[nb] = int(order.size());
+  SymmetricCsc a;
+  a.n = int(order.size());
+  a.colptr.assign(1, 0);
+  for (int j = 0; j < nb; ++j)
+    for (size_t c = 0; c < kept[j].size(); ++c) {
+      // Column c of block j: the blocks i <= j coupled to j, in increasing order (their
+      // unknowns precede j's), then j's own down to the diagonal.
+      for (const Neighbour &ni : neighbours_[j]) {
+        const int i = ni.block;
+        if (i > j) break;
+        const size_t ld = block_rows_[i].size(), off = ni.offset + size_t(kept[j][c]) * ld;
+        const size_t last = i < j ? kept[i].size() : c + 1;
+        for (size_t r = 0; r < last; ++r) a.rows.push_back(first[i] + int(r)), a.values.push_back(values_[off + size_t(kept[i][r])]);
+      }
+      a.colptr.push_back(int(a.rows.size()));
+    }
+  return a;
+}
+
 double BlockSparseOperator::elimination_flops() const {
   double flops = 0;
   for (int i = 0; i < blocks(); ++i) {

@@ -9,6 +9,7 @@
 // dense block over all rows in their order: today's column-major q x q array, with the same
 // arithmetic (dense(), dense_values()).
 #pragma once
+#include "bodies/assembly.hpp"
 #include <cstddef>
 #include <vector>
 
@@ -47,6 +48,10 @@ public:
   // entry of that submatrix once; entries outside the stored blocks are zero).
   template <class Add>
   void for_each_entry(const std::vector<char> &row_mask, const std::vector<char> &col_mask, Add &&add) const;
+  // The principal submatrix on the rows with mask[r] set, as the upper triangle in compressed
+  // columns (what CHOLMOD reads), its unknowns numbered block by block: order[i] is unknown i's
+  // row. Each column is then a run of stored blocks' columns, already sorted: no sort, no search.
+  SymmetricCsc principal_upper(const std::vector<char> &mask, std::vector<int> &order) const;
 
 private:
   struct Neighbour {

@@ -1,4 +1,5 @@
 #include "linalg/dual_qp.hpp"
+#include "linalg/sparse_cholesky.hpp"
 #include "linalg/sparse_lu.hpp"
 #include "support/error.hpp"
 #include "support/lapack.hpp"
@@ -82,7 +83,93 @@ double nonnegative_least_squares(int k, int q, const std::vector<double> &a, con
   return std::sqrt(norm);
 }
 
-// solve_on_active_set's system when S is stored by blocks: the same matrix,
+// solve_on_active_set's system when S is stored by blocks, eliminating l_A first with a
+// sparse Cholesky factorization (CHOLMOD, supernodal: S's blocks are its supernodes) of
+//   M = S_AA + shift I + rho G_A G_A^T   (rho > 0 only for shift = 0),
+// which is SPD: S is positive semidefinite and definite on ker G_A^T (the augmentation, exact
+// because G_A^T l_A = e, covers the rest; G G^T couples rows that share a floating body, so M
+// keeps S's block pattern). With r = d_A + rho G_A e the system reads M l_A - G_A a = r,
+// (G_A^T l_A + shift / g^2 a = e), so
+//   (G_A^T M^-1 G_A + shift / g^2 I) a = e - G_A^T M^-1 r,   l_A = M^-1 (r + G_A a),
+// a k x k dense system (k the floating modes). Returns false, having solved nothing, if M is
+// not numerically positive definite (S_AA singular where G_A does not cover it: a fully
+// prescribed body, see primal_active_set); the caller then factorizes the whole system by LU.
+bool solve_on_active_set_by_cholesky(const DualQp &p, const std::vector<char> &in_a, double g_scale,
+                                     std::vector<double> &lambda, std::vector<double> &alpha, double shift) {
+  const int k = p.k;
+  std::vector<int> order;  // unknown i: row order[i]
+  SymmetricCsc m = p.s.principal_upper(in_a, order);
+  const int na = m.n;
+  double s_scale = 0, g_norm2 = 0;
+  for (int c = 0; c < na; ++c) {
+    s_scale = std::max(s_scale, m.values[m.colptr[c + 1] - 1]);  // (the diagonal ends each column)
+    double norm2 = 0;
+    for (int a = 0; a < k; ++a) norm2 += p.g[size_t(a) * p.q + order[c]] * p.g[size_t(a) * p.q + order[c]];
+    g_norm2 = std::max(g_norm2, norm2);
+  }
+  // rho G G^T of S's size: the augmentation neither dominates nor drowns in round-off.
+  const double rho = shift == 0 && k > 0 && g_norm2 > 0 ? std::max(s_scale, 1e-300) / g_norm2 : 0;
+  // G_A's rows sparse: a row's nonzero modes are those of the (at most two) bodies it touches.
+  std::vector<std::vector<std::pair<int, double>>> g_row(na);
+  for (int i = 0; i < na; ++i)
+    for (int a = 0; a < k; ++a)
+      if (p.g[size_t(a) * p.q + order[i]] != 0) g_row[i].emplace_back(a, p.g[size_t(a) * p.q + order[i]]);
+  for (int c = 0; c < na; ++c)
+    for (int e = m.colptr[c]; e < m.colptr[c + 1]; ++e) {
+      const int r = m.rows[e];
+      if (r == c) m.values[e] += shift;
+      if (rho == 0 || g_row[r].empty() || g_row[c].empty()) continue;
+      double dot = 0;
+      for (const auto &x : g_row[r])
+        for (const auto &y : g_row[c])
+          if (x.first == y.first) dot += x.second * y.second;
+      m.values[e] += rho * dot;
+    }
+  SparseCholesky cholesky;
+  try {
+    cholesky.analyze(m, {}, MC_ORDERING_AMD);
+    cholesky.factorize(m);
+  } catch (const Error &error) {
+    if (error.status() != MC_ERROR_SINGULAR) throw;
+    return false;
+  }
+  // X = M^-1 [r, G_A]: k + 1 right-hand sides.
+  std::vector<double> x(size_t(na) * (k + 1));
+  for (int i = 0; i < na; ++i) {
+    double r = p.d[order[i]];
+    for (const auto &y : g_row[i]) r += rho * y.second * p.e[y.first];
+    x[i] = r;
+    for (const auto &y : g_row[i]) x[size_t(1 + y.first) * na + i] = y.second;
+  }
+  cholesky.solve(x.data(), k + 1);
+  std::vector<double> a(k);
+  if (k > 0) {
+    // The Schur complement H = G_A^T M^-1 G_A + shift / g^2 I and its right-hand side.
+    std::vector<double> h(size_t(k) * k, 0.0);
+    for (int b = 0; b < k; ++b) a[b] = p.e[b];
+    for (int i = 0; i < na; ++i)
+      for (const auto &y : g_row[i]) {
+        a[y.first] -= y.second * x[i];
+        for (int b = 0; b < k; ++b) h[size_t(b) * k + y.first] += y.second * x[size_t(1 + b) * na + i];
+      }
+    for (int b = 0; b < k; ++b) h[size_t(b) * k + b] += shift / (g_scale * g_scale);
+    std::vector<int> ipiv(k);
+    int one = 1, info = 0, lwork = std::max(1, 64 * k);
+    std::vector<double> work(lwork);
+    dsysv_("U", &k, &one, h.data(), &k, ipiv.data(), a.data(), &k, work.data(), &lwork, &info);
+    if (info != 0) return false;
+  }
+  for (int i = 0; i < na; ++i) {
+    double l = x[i];
+    for (int b = 0; b < k; ++b) l += x[size_t(1 + b) * na + i] * a[b];
+    lambda[order[i]] = l;
+  }
+  for (int b = 0; b < k; ++b) alpha[b] = a[b];
+  return true;
+}
+
+// solve_on_active_set's system when S is stored by blocks and M above is not positive
+// definite: the same matrix as the dense path's,
 //   [S_AA + shift I, -g G_A; -g G_A^T, -shift I] [l_A; a / g] = [d_A; -g e],
 // assembled sparse (S_AA from the stored blocks only, G_A's nonzeros: a row's rigid modes are
 // those of the bodies it touches) and factorized by sparse LU with pivoting, which like dsysv
@@ -93,6 +180,7 @@ bool solve_on_active_set_by_blocks(const DualQp &p, const std::vector<int> &act,
   std::vector<int> position(p.q, -1);
   std::vector<char> in_a(p.q, 0);
   for (int a = 0; a < na; ++a) position[act[a]] = a, in_a[act[a]] = 1;
+  if (solve_on_active_set_by_cholesky(p, in_a, g_scale, lambda, alpha, shift)) return true;
   std::vector<long> row, column;
   std::vector<double> value, rhs(n);
   auto add = [&](int r, int c, double v) { row.push_back(r), column.push_back(c), value.push_back(v); };
