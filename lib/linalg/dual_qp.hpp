@@ -9,7 +9,8 @@
 // iteration, which is exact once the active set is right; if it cycles, Murty's least-index
 // single pivoting takes over (finite for S positive definite). Each iteration solves a linear
 // system on the active rows: dense (LAPACK) when S is one dense block, as with two bodies;
-// otherwise sparse (sparse_lu.hpp), never forming the blocks between rows that share no body.
+// otherwise sparse (CHOLMOD, or sparse_lu.hpp), never forming the blocks between rows that share
+// no body.
 #pragma once
 #include "linalg/block_sparse_operator.hpp"
 #include <functional>

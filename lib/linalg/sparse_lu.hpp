@@ -1,7 +1,8 @@
 // A square sparse system factorized by UMFPACK (LU with partial pivoting): the active-set
 // systems of the condensed interface problem when its operator S is stored by blocks
-// (block_sparse_operator.hpp): the frictionless KKT system (symmetric indefinite, dual_qp.cpp)
-// and the frictional one (nonsymmetric for Coulomb, friction_qp.cpp). Their dense counterparts
+// (block_sparse_operator.hpp): the frictional one (nonsymmetric for Coulomb, friction_qp.cpp),
+// and the frictionless KKT system (symmetric indefinite, dual_qp.cpp) where its faster route
+// through CHOLMOD finds S_AA + rho G_A G_A^T not positive definite. Their dense counterparts
 // are LAPACK's dsysv and dgetrf; pivoting keeps the saddle-point systems and a singular S_AA
 // (a fully prescribed body, dual_qp.cpp) solvable as they are there. Each instance owns its
 // factor: no state is shared.
