@@ -6,14 +6,14 @@
  * - a chain of N blocks (N = 4, 6: block tridiagonal, the first N with blocks left out), crowned
  *   interfaces (mc_set_pair_gap_offset) under a pressure that varies along the top, so that each
  *   interface is partly open and its pressure not uniform: the condensed path (S by blocks, its
- *   active-set systems by sparse LU) gives the sparse path's answer, pressures and displacements
+ *   active-set systems by CHOLMOD) gives the sparse path's answer, pressures and displacements
  *   to 1e-10 of their largest;
  * - the storage grows linearly with the chain: the log of the interface operator phase names
  *   N - 1 blocks of rows and exactly sum m_k^2 + sum m_k m_(k+1) stored entries (m_k the rows of
  *   pair k), for N = 4, 8, 16; two bodies keep one dense block of q^2 entries;
  * - friction on separate blocks: a partial-slip scene (stick, slip and open positions; Coulomb and
  *   Tresca) set twice in one model, bodies 1-2 and 3-4 side by side, gives the answer of the
- *   scene alone (one dense block, LAPACK) to 1e-10: the block path of the frictional solve.
+ *   scene alone (one dense block, LAPACK) to 1e-10: the block path of the frictional solve (UMFPACK).
  */
 #include <check.h>
 #include <math.h>
