@@ -80,6 +80,25 @@ public:
                             const std::function<bool(const std::vector<char> &)> &hold_modes,
                             const DualQpObserver &observe = {});
 
+  // Friction (friction_iteration.hpp; sparse_friction.cpp builds the rows): the linear system of
+  // one set of rows E (`set`: the rows held to C_r x = t_r; the equations always are), some of
+  // whose forces act along D_r = C_r + coefficient C_other instead of C_r (a slipping Coulomb
+  // row: its normal row's multiplier pushes along t too, l_t = +-mu l_n):
+  //     H x + D_E^T lambda_E = F,   C_E x = t_E.
+  // Solved exactly as the frictionless system (the same H_P; refined on its own residuals), by
+  // CG when no row is coupled, else by GMRES on the nonsymmetric C_E H_P^-1 D_E^T. x and lambda
+  // start from what they hold (lambda: a warm start; x is overwritten).
+  struct Coupling {
+    int row = 0, other = 0;
+    double coefficient = 0;
+  };
+  void solve_rows(const std::vector<double> &load, const std::vector<double> &target, const std::vector<char> &set,
+                  const std::vector<Coupling> &coupling, std::vector<double> &x, std::vector<double> &lambda,
+                  SparseContactResult &result);
+  // An estimate of row r's compliance c_r H^-1 c_r^T (Jacobi: the one P's weight is made from).
+  double row_compliance(int r) const;
+  double row_times(int r, const std::vector<double> &x) const;  // C_r x
+
 private:
   void factorize(const std::vector<char> &active, SparseContactResult &result);
   // The exact solution of the KKT system on the factorized active set, from lambda's start.
@@ -88,8 +107,11 @@ private:
   // CG on S_P lambda = b for the active rows; x follows lambda. Returns the steps taken.
   int conjugate_gradients(const std::vector<double> &load, const std::vector<double> &target, std::vector<double> &x,
                           std::vector<double> &lambda, SparseContactResult &result) const;
+  // GMRES on C_E H_P^-1 D_E^T lambda = b for the rows of E (coupled rows); x follows lambda.
+  int gmres(const std::vector<double> &load, const std::vector<double> &target, std::vector<double> &x,
+            std::vector<double> &lambda, SparseContactResult &result) const;
   void apply_ct(const std::vector<double> &y, std::vector<double> &out) const;  // out = C_A^T y
-  double row_times(int r, const std::vector<double> &x) const;                // C_r x
+  void apply_dt(const std::vector<double> &y, std::vector<double> &out) const;  // out = D_A^T y (coupling_)
 
   const SparseContactStructure *structure_ = nullptr;
   int position(int i, int j) const;  // of entry (min(i, j), max(i, j)) in matrix_
@@ -97,6 +119,7 @@ private:
   std::vector<double> weight_;       // P, one per row
   SparseCholesky cholesky_;
   std::vector<char> factorized_;     // the active set of the current factor (empty: none)
+  std::vector<Coupling> coupling_;   // of the system being solved (solve_rows; empty: D = C)
   double flops_ = 0, t_analysis_ = 0;
 };
 
