@@ -51,6 +51,7 @@ struct SparseContactResult {
   std::vector<char> active;    // the final active set (contact rows; a re-solve starts from it)
   int iterations = 0;          // active-set iterations
   int factorizations = 0;      // numeric factorizations of H_P in this solve
+  int updates = 0;             // active sets solved through a low-rank update of the last factor instead
   int cg_steps = 0;            // conjugate-gradient steps (each: one forward and one backward solve)
   double violation = 0;        // largest relative violation of complementarity (as MC_INFO_COMPLEMENTARITY)
   double t_factor = 0, t_solve = 0;
@@ -63,7 +64,7 @@ public:
   // `structure` must outlive the solver (its blocks are read at each factorization).
   void analyze(const SparseContactStructure &structure, int ordering);
   // Frees the pattern and the factor.
-  void release() { cholesky_.release(), matrix_ = SymmetricCsc{}, factorized_.clear(); }
+  void release() { cholesky_.release(), matrix_ = SymmetricCsc{}, factorized_.clear(), factor_set_.clear(), update_ = {}; }
   // CHOLMOD's estimates from the analysis, for the automatic choice of path.
   double factor_flops() const { return flops_; }
   long factor_nnz() const { return cholesky_.factor_nnz(); }
@@ -100,7 +101,12 @@ public:
   double row_times(int r, const std::vector<double> &x) const;  // C_r x
 
 private:
+  // H_P of the rows `active` (and the equations): a low-rank update of the factor it has when
+  // few rows differ (update_from_factor), else a numeric factorization.
   void factorize(const std::vector<char> &active, SparseContactResult &result);
+  bool update_from_factor(const std::vector<char> &active, SparseContactResult &result);
+  // v = H_P^-1 v for the rows factorized_: the factor's solve, then the update's correction.
+  void apply_inverse(std::vector<double> &v, SparseContactResult &result) const;
   // The exact solution of the KKT system on the factorized active set, from lambda's start.
   void solve_on_active_set(const std::vector<double> &load, const std::vector<double> &target,
                            std::vector<double> &x, std::vector<double> &lambda, SparseContactResult &result) const;
@@ -118,7 +124,15 @@ private:
   SymmetricCsc matrix_;              // H_P's pattern (H + C^T C), values of the factorized set
   std::vector<double> weight_;       // P, one per row
   SparseCholesky cholesky_;
-  std::vector<char> factorized_;     // the active set of the current factor (empty: none)
+  std::vector<char> factorized_;     // the active set H_P is of (empty: none)
+  std::vector<char> factor_set_;     // the active set of the Cholesky factor (differs by update_)
+  // H_P = H_0 + sum_r sign_r P_r c_r^T c_r over the rows that differ from the factor's set
+  // (Sherman-Morrison-Woodbury): Z = H_0^-1 [c_r^T], M = diag(1 / (sign_r P_r)) + [c_r] Z, LU.
+  struct LowRankUpdate {
+    std::vector<int> rows;
+    std::vector<double> z, m;  // n x k, k x k column-major (m: its LU factors)
+    std::vector<int> pivots;
+  } update_;
   std::vector<Coupling> coupling_;   // of the system being solved (solve_rows; empty: D = C)
   double flops_ = 0, t_analysis_ = 0;
 };

@@ -450,9 +450,10 @@ bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lam
   infos.t_solve += result.t_solve;
   infos.factor_nnz += cs.solver.factor_nnz();
   progress(MC_LOG_PHASE,
-           "active-set solve (sparse): %s, %d iterations, %d factorizations, %d conjugate-gradient steps, residual %.3g, %.3g s",
+           "active-set solve (sparse): %s, %d iterations, %d factorizations, %d factor updates, %d conjugate-gradient "
+           "steps, residual %.3g, %.3g s",
            result.outcome == SparseContactOutcome::solved ? "solved" : "not converged", result.iterations,
-           result.factorizations, result.cg_steps, result.violation, now() - start);
+           result.factorizations, result.updates, result.cg_steps, result.violation, now() - start);
   if (result.outcome == SparseContactOutcome::modes_not_held) {
     const std::string unheld = unheld_modes_description();
     fail(MC_ERROR_SINGULAR,
