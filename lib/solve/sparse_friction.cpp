@@ -45,7 +45,7 @@ void Model::solve_sparse_friction(std::vector<LoadSolve> &loads, std::vector<dou
       else if (f.live(j, active) && slipping(state[j])) {
         const double sign = slip_sign(state[j]);
         if (f.law[j] == MC_FRICTION_COULOMB) {
-          coupling.push_back({f.tangent_of[j], row, sign * f.bound[j]});
+          if (f.bound[j] != 0) coupling.push_back({f.tangent_of[j], row, sign * f.bound[j]});  // (mu = 0: none)
         } else {
           for (int p = st.row_start[row]; p < st.row_start[row + 1]; ++p)
             f_states[st.column[p]] -= sign * f.bound[j] * st.value[p];
