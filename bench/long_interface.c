@@ -44,7 +44,9 @@
  *                       [--cells KIND] [--multiplier linear|quadratic] [nx ...]
  *   --solver         MC_OPTION_INTERFACE_SOLVER of the contact solves: auto (default: the option
  *                    not set, the library's choice), condensed, sparse, both (condensed and
- *                    sparse, each forced), all (auto, condensed and sparse)
+ *                    sparse, each forced), all (auto, condensed and sparse), friction (sparse
+ *                    without and with --friction's law, default coulomb:0.3)
+ *   --friction       coulomb:MU or tresca:G, the pair's friction in --solver friction's solves
  *   --condensed-max  largest nx solved with the condensed path forced (default 4000)
  *   --repeat         solves per child, timed, median printed (default 1, max 15)
  *   --threads        MC_OPTION_THREADS of every solve (default: not set, automatic)
@@ -77,7 +79,10 @@
 #define MAX_SIZES 64
 #define DASH "\xe2\x80\x94" /* the em dash of skipped cells */
 
-enum { KIND_PLAIN = -1 }; /* otherwise a value of MC_OPTION_INTERFACE_SOLVER */
+enum { KIND_PLAIN = -1 }; /* otherwise a value of MC_OPTION_INTERFACE_SOLVER, plus: */
+enum { KIND_FRICTION = 0x100 }; /* with --friction's law on the pair */
+static int friction_law = MC_FRICTION_NONE; /* --friction coulomb:MU or tresca:G */
+static double friction_value = 0;
 
 /* The seconds at the end of the log messages of the contact parts ("..., 0.123 s"); -1: no such
    message in this solve's log. */
@@ -112,6 +117,15 @@ static void note_parts(void *user, mc_log_level level, const char *message) {
     }
   }
   if (strncmp(message, "refinement", 10) == 0) p->refinement = trailing_seconds(message);
+  /* with friction: the stick/slip iteration's time, and its linear solves' Krylov steps */
+  if (strncmp(message, "friction solve", 14) == 0) p->active_set = trailing_seconds(message);
+  if (strncmp(message, "sparse friction solve", 21) == 0) {
+    const char *steps = strstr(message, " Krylov steps");
+    if (steps) {
+      while (steps > message && steps[-1] >= '0' && steps[-1] <= '9') --steps;
+      p->cg_steps = atol(steps);
+    }
+  }
 }
 
 static const double kPressure = 0.01;
@@ -145,7 +159,9 @@ static mc_model *strips(const sc_mesh mesh[2], int kind, int threads, parts *log
     if (!st) st = mc_set_contact(m, 1, mesh[0].n_side_edges[SC_BOTTOM], mesh[0].side_edges[SC_BOTTOM]);
     if (!st) st = mc_set_contact(m, 2, mesh[1].n_side_edges[SC_TOP], mesh[1].side_edges[SC_TOP]);
     /* auto: the option is left at the library's default, as a host that does not set it */
-    if (!st && kind != MC_INTERFACE_AUTO) st = mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, kind);
+    const int path = kind & ~KIND_FRICTION;
+    if (!st && path != MC_INTERFACE_AUTO) st = mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, path);
+    if (!st && (kind & KIND_FRICTION)) st = mc_set_friction(m, 1, friction_law, friction_value);
     if (!st) st = mc_set_option_int(m, MC_OPTION_MULTIPLIER, multiplier);
   } else if (!st) {
     st = sc_fix_side(m, 1, &mesh[0], SC_BOTTOM, MC_Y, 0);
@@ -280,6 +296,14 @@ static outcome run_child(int nx, int kind, int repeat, int threads, double mem_l
 }
 
 static const char *solver_name(int kind) {
+  if (kind & KIND_FRICTION) {
+    switch (kind & ~KIND_FRICTION) {
+      case MC_INTERFACE_AUTO: return "auto + friction";
+      case MC_INTERFACE_CONDENSED: return "condensed + friction";
+      case MC_INTERFACE_SPARSE: return "sparse + friction";
+      default: return "?";
+    }
+  }
   switch (kind) {
     case KIND_PLAIN: return "plain";
     case MC_INTERFACE_AUTO: return "auto";
@@ -330,7 +354,8 @@ static double mem_available_gib(void) {
 
 static int usage(const char *argv0) {
   fprintf(stderr,
-          "usage: %s [--solver auto|condensed|sparse|both|all] [--condensed-max nx] [--repeat n] [--threads n]\n"
+          "usage: %s [--solver auto|condensed|sparse|both|all|friction] [--friction coulomb:MU|tresca:G]\n"
+          "       [--condensed-max nx] [--repeat n] [--threads n]\n"
           "       [--mem-limit GiB] [--timeout s] [--log] [--cells P1|Q1|T6|Q8|Q9] [--multiplier linear|quadratic]\n"
           "       [nx ...]\n",
           argv0);
@@ -351,6 +376,14 @@ int main(int argc, char **argv) {
     else if (!strcmp(argv[i], "--mem-limit") && more) mem_limit = atof(argv[++i]);
     else if (!strcmp(argv[i], "--timeout") && more) timeout = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--log")) echo_log = 1;
+    else if (!strcmp(argv[i], "--friction") && more) {
+      const char *f = argv[++i], *colon = strchr(f, ':');
+      if (!colon) return usage(argv[0]);
+      if (!strncmp(f, "coulomb:", 8)) friction_law = MC_FRICTION_COULOMB;
+      else if (!strncmp(f, "tresca:", 7)) friction_law = MC_FRICTION_TRESCA;
+      else return usage(argv[0]);
+      friction_value = atof(colon + 1);
+    }
     else if (!strcmp(argv[i], "--cells") && more) {
       const char *k = argv[++i];
       cells_npc = 0;
@@ -376,7 +409,10 @@ int main(int argc, char **argv) {
   else if (!strcmp(solver, "condensed")) kinds[n_kinds++] = MC_INTERFACE_CONDENSED;
   else if (!strcmp(solver, "sparse")) kinds[n_kinds++] = MC_INTERFACE_SPARSE;
   else if (!strcmp(solver, "both")) kinds[n_kinds++] = MC_INTERFACE_CONDENSED, kinds[n_kinds++] = MC_INTERFACE_SPARSE;
-  else if (!strcmp(solver, "all"))
+  else if (!strcmp(solver, "friction")) {
+    if (friction_law == MC_FRICTION_NONE) friction_law = MC_FRICTION_COULOMB, friction_value = 0.3;
+    kinds[n_kinds++] = MC_INTERFACE_SPARSE, kinds[n_kinds++] = MC_INTERFACE_SPARSE | KIND_FRICTION;
+  } else if (!strcmp(solver, "all"))
     kinds[n_kinds++] = MC_INTERFACE_AUTO, kinds[n_kinds++] = MC_INTERFACE_CONDENSED, kinds[n_kinds++] = MC_INTERFACE_SPARSE;
   else {
     fprintf(stderr, "bad --solver %s\n", solver);
@@ -478,7 +514,7 @@ int main(int argc, char **argv) {
     printf("\n| nx | contact nodes | DOFs | plain s");
     for (int k = 0; k < n_kinds; ++k) printf(" | %s s", solver_name(kinds[k]));
     for (int k = 0; k < n_kinds; ++k) printf(" | %s/plain", solver_name(kinds[k]));
-    printf(" | condensed/sparse | plain peak MiB");
+    printf(" | %s | plain peak MiB", friction_law != MC_FRICTION_NONE ? "friction/frictionless" : "condensed/sparse");
     for (int k = 0; k < n_kinds; ++k) printf(" | %s peak MiB", solver_name(kinds[k]));
     for (int k = 0; k < n_kinds; ++k) printf(" | %s/plain memory", solver_name(kinds[k]));
     printf(" | ran (%s", solver_name(kinds[0]));
@@ -493,6 +529,7 @@ int main(int argc, char **argv) {
       for (int k = 0; k < n_kinds; ++k) {
         if (row[k].ok == 1 && !nodes) nodes = row[k].contact_nodes, dofs = row[k].dofs;
         if (kinds[k] == MC_INTERFACE_CONDENSED) c = k;
+        if (kinds[k] == (MC_INTERFACE_SPARSE | KIND_FRICTION)) c = k; /* (--solver friction: friction/frictionless) */
         if (kinds[k] == MC_INTERFACE_SPARSE) sp = k;
       }
       printf("| %d | %ld | %ld | %s", sizes[s], nodes, dofs, plain->ok == 1 ? "" : "failed");

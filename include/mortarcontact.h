@@ -1,7 +1,8 @@
 /*
- * mortarcontact.h - frictionless unilateral contact between two linear-elastic
- * 2D bodies meshed independently, by the mortar finite element method of
- * Ben Belgacem, Hild and Laborde (M3AS 9(2), 1999).
+ * mortarcontact.h - unilateral contact, frictionless or with Tresca or Coulomb
+ * friction, between linear-elastic 2D bodies meshed independently (two or more,
+ * several contact pairs), by the mortar finite element method of Ben Belgacem,
+ * Hild and Laborde (M3AS 9(2), 1999).
  *
  * The C ABI of this header is stable within a major version: see docs/abi.md.
  *
@@ -451,7 +452,8 @@ MC_API mc_status mc_get_pair_contact(const mc_model *m, int pair, int field, dou
    Friction remembers: each mc_solve of a model with friction is a step from the last converged
    state (the first: the unloaded state), in MC_OPTION_LOAD_STEPS increments; mc_reset_history
    returns to the unloaded state. A change of the model's structure (meshes, supports' set,
-   contact surfaces, method) also does. */
+   contact surfaces, method) also does. Both interface solvers (MC_OPTION_INTERFACE_SOLVER) take
+   friction, with the same answers. */
 enum { MC_FRICTION_NONE = 0, MC_FRICTION_TRESCA = 1, MC_FRICTION_COULOMB = 2 };
 MC_API mc_status mc_set_friction(mc_model *m, int pair, int law, double value);
 /* Forgets the converged state: the next solve starts from the unloaded state (u = 0, loads 0,

@@ -21,7 +21,9 @@
  *   solves that step the loads up one by one carry the history; mc_reset_history forgets it;
  * - pairs joined into one surface must agree on friction (MC_ERROR_CONTACT naming both pairs);
  * - bad input: a negative mu or bound, an unknown law, a pair out of range, load steps < 1,
- *   friction on a model without contact, friction on the sparse path forced.
+ *   friction on a model without contact;
+ * - every scene above on both interface paths (condensed and sparse), and the two paths' answers
+ *   on the partial-slip scene (stick, slip and open positions) the same to 1e-10.
  */
 #include <check.h>
 #include <math.h>
@@ -197,28 +199,35 @@ static void free_fields(fields *f) {
   free(f->pressure), free(f->shear), free(f->slip), free(f->state), free(f->force);
 }
 
+/* Both interface paths: MC_INTERFACE_CONDENSED (sparse = 0) or MC_INTERFACE_SPARSE. */
+static void use_path(mc_model *m, int sparse) {
+  OK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, sparse ? MC_INTERFACE_SPARSE : MC_INTERFACE_CONDENSED));
+}
+
 static const int methods[3] = {MC_METHOD_MORTAR, MC_METHOD_DUAL_MORTAR, MC_METHOD_NODE_TO_SEGMENT};
 static const char *const method_name[3] = {"mortar", "dual mortar", "node-to-segment"};
 
 START_TEST(patch_stick) {
-  const int method = methods[_i % 3], npc = _i < 3 ? 3 : 4;
+  const int i = _i % 6, sparse = _i >= 6;  /* the condensed path, then the sparse one */
+  const int method = methods[i % 3], npc = i < 3 ? 3 : 4;
   blocks b;
   blocks_meshes(&b, npc, method);
   const double mu = 0.5;
   patch s = {P, 0.4 * mu * P, 0};
   mc_model *m = blocks_model(&b, &s, method, MC_FRICTION_COULOMB, mu, 0);
+  use_path(m, sparse);
   OK(mc_solve(m));
   fields f = read_fields(m);
   for (mc_int j = 0; j < f.n; ++j) {
-    ck_assert_msg(f.state[j] == MC_STATE_STICK, "%s P%d: position %d state %g", method_name[_i % 3], npc == 3 ? 1 : 0, (int)j,
+    ck_assert_msg(f.state[j] == MC_STATE_STICK, "%s P%d: position %d state %g", method_name[i % 3], npc == 3 ? 1 : 0, (int)j,
                   f.state[j]);
-    ck_assert_msg(fabs(f.pressure[j] - s.p) <= 1e-10 * s.p, "%s: pressure %.17g, p %g", method_name[_i % 3], f.pressure[j], s.p);
-    ck_assert_msg(fabs(f.shear[j] + s.tau) <= 1e-10 * s.p, "%s: position %d shear %.17g, -tau %g", method_name[_i % 3], (int)j,
+    ck_assert_msg(fabs(f.pressure[j] - s.p) <= 1e-10 * s.p, "%s: pressure %.17g, p %g", method_name[i % 3], f.pressure[j], s.p);
+    ck_assert_msg(fabs(f.shear[j] + s.tau) <= 1e-10 * s.p, "%s: position %d shear %.17g, -tau %g", method_name[i % 3], (int)j,
                   f.shear[j], -s.tau);
     ck_assert_msg(fabs(f.slip[j]) <= 1e-10 * s.p, "slip %g", f.slip[j]);
   }
   const double err = displacement_error(m, &b, &s);
-  ck_assert_msg(err <= 1e-10, "%s: displacement error %g", method_name[_i % 3], err);
+  ck_assert_msg(err <= 1e-10, "%s: displacement error %g", method_name[i % 3], err);
   double fc;
   int64_t stick, slip;
   OK(mc_get_info_real(m, MC_INFO_FRICTION_COMPLEMENTARITY, &fc));
@@ -234,25 +243,27 @@ START_TEST(patch_stick) {
 END_TEST
 
 START_TEST(patch_slip) {
-  const int method = methods[_i % 3], law = _i < 3 ? MC_FRICTION_COULOMB : MC_FRICTION_TRESCA;
+  const int i = _i % 6, sparse = _i >= 6;  /* the condensed path, then the sparse one */
+  const int method = methods[i % 3], law = i < 3 ? MC_FRICTION_COULOMB : MC_FRICTION_TRESCA;
   blocks b;
   blocks_meshes(&b, 3, method);
   const double mu = 0.3, bound = 0.25 * P;
   const double tau = law == MC_FRICTION_COULOMB ? mu * P : bound;
   patch s = {P, tau, 0.05};
   mc_model *m = blocks_model(&b, &s, method, law, law == MC_FRICTION_COULOMB ? mu : bound, 1);
+  use_path(m, sparse);
   OK(mc_solve(m));
   fields f = read_fields(m);
   for (mc_int j = 0; j < f.n; ++j) {
-    ck_assert_msg(f.state[j] == MC_STATE_SLIP, "%s: position %d state %g", method_name[_i % 3], (int)j, f.state[j]);
-    ck_assert_msg(fabs(f.pressure[j] - s.p) <= 1e-10 * s.p, "%s: pressure %.17g, p %g", method_name[_i % 3], f.pressure[j], s.p);
-    ck_assert_msg(fabs(f.shear[j] + tau) <= 1e-10 * s.p, "%s: position %d shear %.17g, expected %g", method_name[_i % 3],
+    ck_assert_msg(f.state[j] == MC_STATE_SLIP, "%s: position %d state %g", method_name[i % 3], (int)j, f.state[j]);
+    ck_assert_msg(fabs(f.pressure[j] - s.p) <= 1e-10 * s.p, "%s: pressure %.17g, p %g", method_name[i % 3], f.pressure[j], s.p);
+    ck_assert_msg(fabs(f.shear[j] + tau) <= 1e-10 * s.p, "%s: position %d shear %.17g, expected %g", method_name[i % 3],
                   (int)j, f.shear[j], -tau);
-    ck_assert_msg(fabs(f.slip[j] - s.delta) <= 1e-10 * s.delta, "%s: slip %.17g, delta %g", method_name[_i % 3], f.slip[j],
+    ck_assert_msg(fabs(f.slip[j] - s.delta) <= 1e-10 * s.delta, "%s: slip %.17g, delta %g", method_name[i % 3], f.slip[j],
                   s.delta);
   }
   const double err = displacement_error(m, &b, &s);
-  ck_assert_msg(err <= 1e-10, "%s: displacement error %g", method_name[_i % 3], err);
+  ck_assert_msg(err <= 1e-10, "%s: displacement error %g", method_name[i % 3], err);
   free_fields(&f);
   mc_destroy(m);
   blocks_free(&b);
@@ -302,19 +313,22 @@ static double relative_difference(const double *a, const double *b, mc_int n) {
 
 /* mu = 0 (Coulomb) and a zero Tresca bound give the frictionless answer to round-off. */
 START_TEST(zero_friction_is_frictionless) {
-  const int method = methods[_i % 3], law = _i < 3 ? MC_FRICTION_COULOMB : MC_FRICTION_TRESCA;
+  const int i = _i % 6, sparse = _i >= 6;  /* the condensed path, then the sparse one */
+  const int method = methods[i % 3], law = i < 3 ? MC_FRICTION_COULOMB : MC_FRICTION_TRESCA;
   blocks b;
   blocks_meshes(&b, 3, MC_METHOD_MORTAR);
   mc_model *m = partial_slip_model(&b, method, MC_FRICTION_NONE, 0, 1);
+  use_path(m, sparse);
   OK(mc_solve(m));
   double *u1 = displacements(m, 1, &b.upper), *u2 = displacements(m, 2, &b.lower);
   fields plain = read_fields(m);
   mc_destroy(m);
   m = partial_slip_model(&b, method, law, 0, 1);
+  use_path(m, sparse);
   OK(mc_solve(m));
   double *v1 = displacements(m, 1, &b.upper), *v2 = displacements(m, 2, &b.lower);
   fields f = read_fields(m);
-  ck_assert_msg(relative_difference(v1, u1, b.upper.n_nodes) <= 1e-12, "%s: body 1 differs by %g", method_name[_i % 3],
+  ck_assert_msg(relative_difference(v1, u1, b.upper.n_nodes) <= 1e-12, "%s: body 1 differs by %g", method_name[i % 3],
                 relative_difference(v1, u1, b.upper.n_nodes));
   ck_assert_double_le(relative_difference(v2, u2, b.lower.n_nodes), 1e-12);
   double pmax = 0;
@@ -336,11 +350,13 @@ END_TEST
    the friction conditions: |shear| <= mu p everywhere, = mu p where slipping, with the sign
    opposite to the slip, and slip 0 where sticking. */
 START_TEST(partial_slip_conditions) {
-  const int method = methods[_i % 3];
+  const int i = _i % 3, sparse = _i >= 3;  /* the condensed path, then the sparse one */
+  const int method = methods[i % 3];
   blocks b;
   blocks_meshes(&b, 3, MC_METHOD_MORTAR);
   const double mu = 0.2;
   mc_model *m = partial_slip_model(&b, method, MC_FRICTION_COULOMB, mu, 1);
+  use_path(m, sparse);
   OK(mc_solve(m));
   fields f = read_fields(m);
   int count[3] = {0, 0, 0};
@@ -352,7 +368,7 @@ START_TEST(partial_slip_conditions) {
     ++count[state];
     if (method == MC_METHOD_NODE_TO_SEGMENT || j == 0 || j == f.n - 1) continue;  /* (lumped: interior nodes) */
     ck_assert_msg(fabs(f.shear[j]) <= mu * f.pressure[j] + 1e-10 * pmax, "%s: position %d |shear| %g > mu p %g",
-                  method_name[_i % 3], (int)j, fabs(f.shear[j]), mu * f.pressure[j]);
+                  method_name[i % 3], (int)j, fabs(f.shear[j]), mu * f.pressure[j]);
     if (state == MC_STATE_STICK) ck_assert_double_le(fabs(f.slip[j]), 1e-10 * smax);
     if (state == MC_STATE_SLIP && f.pressure[j] > 1e-9 * pmax) {
       ck_assert_double_le(fabs(fabs(f.shear[j]) - mu * f.pressure[j]), 1e-9 * pmax);
@@ -360,7 +376,7 @@ START_TEST(partial_slip_conditions) {
     }
   }
   ck_assert_msg(count[MC_STATE_STICK] > 0 && count[MC_STATE_SLIP] > 0, "%s: %d stick, %d slip, %d open",
-                method_name[_i % 3], count[1], count[2], count[0]);
+                method_name[i % 3], count[1], count[2], count[0]);
   double fc;
   OK(mc_get_info_real(m, MC_INFO_FRICTION_COMPLEMENTARITY, &fc));
   ck_assert_double_le(fc, 1e-10);
@@ -375,10 +391,12 @@ END_TEST
    two solves (half, then all: each solve a step from the last) and, after mc_reset_history, by
    one: the history carries, and is forgotten. */
 START_TEST(load_steps_proportional) {
-  const int method = methods[_i % 3];
+  const int i = _i % 3, sparse = _i >= 3;  /* the condensed path, then the sparse one */
+  const int method = methods[i % 3];
   blocks b;
   blocks_meshes(&b, 3, MC_METHOD_MORTAR);
   mc_model *m = partial_slip_model(&b, method, MC_FRICTION_COULOMB, 0.2, 1);
+  use_path(m, sparse);
   OK(mc_solve(m));
   double *u1 = displacements(m, 1, &b.upper);
   fields one = read_fields(m);
@@ -386,11 +404,12 @@ START_TEST(load_steps_proportional) {
   const int steps[2] = {4, 10};
   for (int k = 0; k < 2; ++k) {
     m = partial_slip_model(&b, method, MC_FRICTION_COULOMB, 0.2, 1);
+    use_path(m, sparse);
     OK(mc_set_option_int(m, MC_OPTION_LOAD_STEPS, steps[k]));
     OK(mc_solve(m));
     double *v1 = displacements(m, 1, &b.upper);
     fields f = read_fields(m);
-    ck_assert_msg(relative_difference(v1, u1, b.upper.n_nodes) <= 1e-10, "%s, %d steps: u differs by %g", method_name[_i % 3],
+    ck_assert_msg(relative_difference(v1, u1, b.upper.n_nodes) <= 1e-10, "%s, %d steps: u differs by %g", method_name[i % 3],
                   steps[k], relative_difference(v1, u1, b.upper.n_nodes));
     for (mc_int j = 0; j < f.n; ++j) {
       ck_assert_double_eq(f.state[j], one.state[j]);
@@ -421,14 +440,17 @@ static void move_top(mc_model *m, const blocks *b, double sx, double sy) {
    same model gives the one-solve answer again. The second solve's slip is its own, the
    accumulated slip the sum of both solves' |slip|. */
 START_TEST(history_between_solves) {
-  const int method = methods[_i % 3];
+  const int i = _i % 3, sparse = _i >= 3;  /* the condensed path, then the sparse one */
+  const int method = methods[i % 3];
   blocks b;
   blocks_meshes(&b, 3, MC_METHOD_MORTAR);
   mc_model *m = partial_slip_model(&b, method, MC_FRICTION_COULOMB, 0.2, 1);
+  use_path(m, sparse);
   OK(mc_solve(m));
   double *direct = displacements(m, 1, &b.upper);
   mc_destroy(m);
   m = partial_slip_model(&b, method, MC_FRICTION_COULOMB, 0.2, 1);
+  use_path(m, sparse);
   move_top(m, &b, 0, 1);
   OK(mc_solve(m));
   fields first = read_fields(m);
@@ -438,7 +460,7 @@ START_TEST(history_between_solves) {
   double *path = displacements(m, 1, &b.upper), *total = malloc(sizeof(double) * (size_t)second.n);
   OK(mc_get_pair_contact(m, 1, MC_CONTACT_SLIP_TOTAL, total));
   const double differ = relative_difference(path, direct, b.upper.n_nodes);
-  ck_assert_msg(differ > 1e-4, "%s: pressing then shearing ends %g from both at once", method_name[_i % 3], differ);
+  ck_assert_msg(differ > 1e-4, "%s: pressing then shearing ends %g from both at once", method_name[i % 3], differ);
   double smax = 0;
   for (mc_int j = 0; j < second.n; ++j) smax = fmax(smax, fabs(second.slip[j]) + fabs(first.slip[j]));
   for (mc_int j = 0; j < second.n; ++j)
@@ -453,14 +475,57 @@ START_TEST(history_between_solves) {
 }
 END_TEST
 
+/* The two interface paths on the partial-slip scene (stick, slip and open positions), Coulomb
+   and Tresca, every method: the same states, and displacements and tractions the same to 1e-10
+   (each path's own round-off). */
+START_TEST(paths_agree) {
+  const int method = methods[_i % 3], law = _i < 3 ? MC_FRICTION_COULOMB : MC_FRICTION_TRESCA;
+  blocks b;
+  blocks_meshes(&b, 3, MC_METHOD_MORTAR);
+  const double value = law == MC_FRICTION_COULOMB ? 0.2 : 1.5e-3;
+  double *u[2];
+  fields f[2];
+  for (int sparse = 0; sparse < 2; ++sparse) {
+    mc_model *m = partial_slip_model(&b, method, law, value, 1);
+    use_path(m, sparse);
+    OK(mc_solve(m));
+    int64_t path;
+    OK(mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &path));
+    ck_assert_int_eq(path, sparse ? MC_INTERFACE_SPARSE : MC_INTERFACE_CONDENSED);
+    u[sparse] = displacements(m, 1, &b.upper);
+    f[sparse] = read_fields(m);
+    mc_destroy(m);
+  }
+  const double du = relative_difference(u[1], u[0], b.upper.n_nodes);
+  double pmax = 0;
+  int count[3] = {0, 0, 0};
+  for (mc_int j = 0; j < f[0].n; ++j) pmax = fmax(pmax, f[0].pressure[j]), ++count[(int)f[0].state[j]];
+  ck_assert_msg(count[MC_STATE_STICK] > 0 && count[MC_STATE_SLIP] > 0, "%s law %d: %d stick, %d slip", method_name[_i % 3],
+                law, count[1], count[2]);
+  printf("paths agree, %s, %s: displacements within %.3g\n", method_name[_i % 3],
+         law == MC_FRICTION_COULOMB ? "Coulomb" : "Tresca", du);
+  ck_assert_msg(du <= 1e-10, "%s: the paths' displacements differ by %g", method_name[_i % 3], du);
+  for (mc_int j = 0; j < f[0].n; ++j) {
+    ck_assert_msg(f[1].state[j] == f[0].state[j], "%s: position %d state %g (sparse) and %g (condensed)",
+                  method_name[_i % 3], (int)j, f[1].state[j], f[0].state[j]);
+    ck_assert_double_le(fabs(f[1].pressure[j] - f[0].pressure[j]), 1e-10 * pmax);
+    ck_assert_double_le(fabs(f[1].shear[j] - f[0].shear[j]), 1e-10 * pmax);
+  }
+  for (int k = 0; k < 2; ++k) free(u[k]), free_fields(&f[k]);
+  blocks_free(&b);
+}
+END_TEST
+
 /* The upper block of the stick patch test with a shear above mu p: nothing holds it along x
    (no support, all its contact slips): MC_ERROR_SINGULAR naming body 1; the handle stays usable
    (a smaller shear then solves). */
 START_TEST(floating_body_in_full_slip) {
+  const int sparse = _i;  /* the condensed path, then the sparse one */
   blocks b;
   blocks_meshes(&b, 3, MC_METHOD_MORTAR);
   patch s = {P, 0.5 * P, 0};
   mc_model *m = blocks_model(&b, &s, MC_METHOD_MORTAR, MC_FRICTION_COULOMB, 0.3, 0);
+  use_path(m, sparse);
   FAILS(mc_solve(m), MC_ERROR_SINGULAR, "body 1");
   OK(mc_set_friction(m, 1, MC_FRICTION_COULOMB, 0.6));
   SUCCEEDS(mc_solve(m));
@@ -491,9 +556,6 @@ START_TEST(bad_input) {
   double out[64];
   FAILS(mc_get_pair_contact(m, 1, 10, out), MC_ERROR_ARGUMENT, "field = 10");
   OK(mc_set_friction(m, 1, MC_FRICTION_COULOMB, 0.5));
-  OK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, MC_INTERFACE_SPARSE));
-  FAILS(mc_solve(m), MC_ERROR_STATE, "condensed");
-  OK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, MC_INTERFACE_AUTO));
   SUCCEEDS(mc_solve(m));
   int64_t solver;
   OK(mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &solver));
@@ -508,12 +570,14 @@ END_TEST
 /* The stick and slip patch tests on quadratic cells (T6, Q8: the weak rows, their tangential
    rows with the rotated vector weights), mortar and dual mortar: the same exactness. */
 START_TEST(patch_quadratic) {
-  const int npc = _i & 1 ? 8 : 6, method = _i & 2 ? MC_METHOD_DUAL_MORTAR : MC_METHOD_MORTAR, slip_case = _i >= 4;
+  const int i = _i % 8, sparse = _i >= 8;  /* the condensed path, then the sparse one */
+  const int npc = i & 1 ? 8 : 6, method = i & 2 ? MC_METHOD_DUAL_MORTAR : MC_METHOD_MORTAR, slip_case = i >= 4;
   blocks b;
   blocks_meshes(&b, npc, method);
   const double mu = 0.4;
   patch s = {P, slip_case ? mu * P : 0.3 * mu * P, slip_case ? 0.05 : 0};
   mc_model *m = blocks_model(&b, &s, method, MC_FRICTION_COULOMB, mu, slip_case);
+  use_path(m, sparse);
   OK(mc_solve(m));
   fields f = read_fields(m);
   for (mc_int j = 0; j < f.n; ++j) {
@@ -534,12 +598,14 @@ END_TEST
 /* The stick patch test with the upper block a host body (the host's own element matrices and
    load vector), held along x by sticking contact alone; mortar and dual mortar. */
 START_TEST(patch_host_body) {
-  const int slip_case = 0, method = _i ? MC_METHOD_DUAL_MORTAR : MC_METHOD_MORTAR;
+  const int i = _i % 2, sparse = _i >= 2;  /* the condensed path, then the sparse one */
+  const int slip_case = 0, method = i ? MC_METHOD_DUAL_MORTAR : MC_METHOD_MORTAR;
   blocks b;
   blocks_meshes(&b, 3, MC_METHOD_MORTAR);
   const double mu = 0.5;
   patch s = {P, slip_case ? mu * P : 0.4 * mu * P, slip_case ? 0.05 : 0};
   mc_model *m = blocks_model_host(&b, &s, method, MC_FRICTION_COULOMB, mu, slip_case, 1);
+  use_path(m, sparse);
   OK(mc_solve(m));
   fields f = read_fields(m);
   for (mc_int j = 0; j < f.n; ++j) {
@@ -563,7 +629,8 @@ static void field_stack(double x, double y, void *ctx, double val[2], double gra
 }
 
 START_TEST(stack_of_three_sticks) {
-  const int method = _i ? MC_METHOD_DUAL_MORTAR : MC_METHOD_MORTAR;
+  const int i = _i % 2, sparse = _i >= 2;  /* the condensed path, then the sparse one */
+  const int method = i ? MC_METHOD_DUAL_MORTAR : MC_METHOD_MORTAR;
   sc_mesh mesh[3];
   static const int nx[3] = {3, 5, 4};
   for (int k = 0; k < 3; ++k) ck_assert_int_eq(sc_mesh_rect(&mesh[k], 3, nx[k], 2, 0, 2 - k, 1, 1, 0.1, 7 + k), 0);
@@ -588,6 +655,7 @@ START_TEST(stack_of_three_sticks) {
     OK(mc_set_friction(m, pair, MC_FRICTION_COULOMB, mu));
   }
   OK(mc_set_option_int(m, MC_OPTION_METHOD, method));
+  use_path(m, sparse);
   OK(mc_solve(m));
   for (int pair = 1; pair <= 2; ++pair) {
     mc_int n;
@@ -631,7 +699,8 @@ END_TEST
    Measured: mortar 0.044 % and 0.012 % off at 64 and 128 cells around, dual mortar 0.60 % and
    0.30 % (its nodal values converge like h on the curved interface). */
 START_TEST(shrink_fit_torsion) {
-  const int method = methods[_i % 2];
+  const int i = _i % 2, sparse = _i >= 2;  /* the condensed path, then the sparse one */
+  const int method = methods[i % 2];
   const double a = 0.5, R = 1, c = 2, delta = 0.02, b = R + delta, mu = 0.3;
   sc_polar_ring shaft, hub;
   ck_assert_int_eq(sc_polar_ring_build(&shaft, 128, 16, 4, a, b), 0);
@@ -649,6 +718,7 @@ START_TEST(shrink_fit_torsion) {
   OK(mc_set_contact(m, 1, 128, loop1));
   OK(mc_set_contact(m, 2, 160, loop2));
   OK(mc_set_option_int(m, MC_OPTION_METHOD, method));
+  use_path(m, sparse);
   OK(mc_set_friction(m, 1, MC_FRICTION_COULOMB, mu));
   /* the fit alone first: its pressure sets the slip limit */
   OK(mc_solve(m));
@@ -677,12 +747,12 @@ START_TEST(shrink_fit_torsion) {
   const double expected = -torque / (2 * PI_ * b * b);
   double worst = 0;
   for (mc_int j = 0; j < n; ++j) {
-    ck_assert_msg(state[j] == MC_STATE_STICK, "%s: position %d state %g", method_name[_i % 2], (int)j, state[j]);
+    ck_assert_msg(state[j] == MC_STATE_STICK, "%s: position %d state %g", method_name[i % 2], (int)j, state[j]);
     worst = fmax(worst, fabs(shear[j] / expected - 1));
   }
-  printf("shrink fit under torque, %s: shear / (T / 2 pi r^2) within %.3g %% at every position\n", method_name[_i % 2],
+  printf("shrink fit under torque, %s: shear / (T / 2 pi r^2) within %.3g %% at every position\n", method_name[i % 2],
          100 * worst);
-  ck_assert_msg(worst <= 0.005, "%s: shear %.4g %% off T / (2 pi r^2)", method_name[_i % 2], 100 * worst);
+  ck_assert_msg(worst <= 0.005, "%s: shear %.4g %% off T / (2 pi r^2)", method_name[i % 2], 100 * worst);
   free(outer), free(loop1), free(loop2), free(bore), free(pressure), free(shear), free(state), free(traction);
   mc_destroy(m);
   sc_polar_ring_free(&shaft), sc_polar_ring_free(&hub);
@@ -731,19 +801,20 @@ END_TEST
 Suite *friction_suite(void) {
   Suite *s = suite_create("friction");
   TCase *tc = tcase_create("patch");
-  tcase_add_loop_test(tc, patch_stick, 0, 6);
-  tcase_add_loop_test(tc, patch_slip, 0, 6);
-  tcase_add_loop_test(tc, patch_quadratic, 0, 8);
-  tcase_add_loop_test(tc, patch_host_body, 0, 2);
-  tcase_add_loop_test(tc, stack_of_three_sticks, 0, 2);
-  tcase_add_loop_test(tc, shrink_fit_torsion, 0, 2);
+  tcase_add_loop_test(tc, patch_stick, 0, 12);
+  tcase_add_loop_test(tc, patch_slip, 0, 12);
+  tcase_add_loop_test(tc, patch_quadratic, 0, 16);
+  tcase_add_loop_test(tc, patch_host_body, 0, 4);
+  tcase_add_loop_test(tc, stack_of_three_sticks, 0, 4);
+  tcase_add_loop_test(tc, shrink_fit_torsion, 0, 4);
   suite_add_tcase(s, tc);
   tc = tcase_create("solve");
-  tcase_add_loop_test(tc, zero_friction_is_frictionless, 0, 6);
-  tcase_add_loop_test(tc, partial_slip_conditions, 0, 3);
-  tcase_add_loop_test(tc, load_steps_proportional, 0, 3);
-  tcase_add_loop_test(tc, history_between_solves, 0, 3);
-  tcase_add_test(tc, floating_body_in_full_slip);
+  tcase_add_loop_test(tc, zero_friction_is_frictionless, 0, 12);
+  tcase_add_loop_test(tc, partial_slip_conditions, 0, 6);
+  tcase_add_loop_test(tc, load_steps_proportional, 0, 6);
+  tcase_add_loop_test(tc, history_between_solves, 0, 6);
+  tcase_add_loop_test(tc, floating_body_in_full_slip, 0, 2);
+  tcase_add_loop_test(tc, paths_agree, 0, 6);
   suite_add_tcase(s, tc);
   tc = tcase_create("input");
   tcase_add_test(tc, bad_input);

@@ -4,25 +4,10 @@
 #include "support/lapack.hpp"
 #include <algorithm>
 #include <cmath>
-#include <set>
 
 namespace mc {
 
-bool FrictionProblem::live(int j, const std::vector<char> &active) const {
-  return law[j] == MC_FRICTION_TRESCA || active[tangent_of[j]];
-}
-
 namespace {
-
-// The rows' Coulomb or Tresca bound: mu times the normal multiplier's prediction
-// max(l_n - c_n gap_n, 0) (l_n itself on a row in contact, where gap_n = 0), or the Tresca force.
-double friction_bound(const FrictionProblem &f, int j, double lambda_n, double gap_n, double cn) {
-  if (f.law[j] == MC_FRICTION_COULOMB) return f.bound[j] * std::max(lambda_n - cn * gap_n, 0.0);
-  return f.bound[j];
-}
-
-double slip_sign(FrictionState s) { return s == FrictionState::slip_plus ? 1.0 : -1.0; }
-bool slipping(FrictionState s) { return s == FrictionState::slip_plus || s == FrictionState::slip_minus; }
 
 // A slipping row's multiplier in terms of the unknowns: l_t = sign * mu * l_n (Coulomb) or
 // sign * its Tresca force.
@@ -189,157 +174,31 @@ std::vector<int> free_modes(const DualQp &p, const FrictionProblem &f, const std
 FrictionResult solve_friction_qp(const DualQp &p, const FrictionProblem &f, double tolerance, int max_iterations,
                                  const std::vector<char> &start_active, const std::vector<FrictionState> &start_state,
                                  const FrictionObserver &observe) {
-  FrictionResult result;
-  const int nb = p.q, q = f.normal_rows, m = int(f.tangent_of.size());
-  double s_scale = 0, d_scale = 0;
-  for (int i = 0; i < nb; ++i) s_scale = std::max(s_scale, p.s.diagonal(i));
-  for (int i = 0; i < nb; ++i) d_scale = std::max(d_scale, std::fabs(p.d[i]));
-  if (!(s_scale > 0)) s_scale = 1;
-  const double cn = 1 / s_scale, ct = f.ct > 0 ? f.ct : 1 / s_scale, eps = 1e-13;
-
+  const int nb = p.q, q = f.normal_rows;
+  FrictionScales scales;
+  scales.compliance = 0;
+  for (int i = 0; i < nb; ++i) scales.compliance = std::max(scales.compliance, p.s.diagonal(i));
+  for (int i = 0; i < nb; ++i) scales.gap = std::max(scales.gap, std::fabs(p.d[i]));
+  if (!(scales.compliance > 0)) scales.compliance = 1;
   std::vector<char> active(q, 0);
   if (int(start_active.size()) == q) active = start_active;
   else if (p.k > 0) std::fill(active.begin(), active.end(), 1);
   else for (int r = 0; r < q; ++r) active[r] = p.d[r] > 0;
-  std::vector<FrictionState> state(m, FrictionState::stick);
-  if (int(start_state.size()) == m) state = start_state;
-  for (int j = 0; j < m; ++j)
-    if (state[j] == FrictionState::open) state[j] = f.bound[j] == 0 ? FrictionState::slip_plus : FrictionState::stick;
-
-  std::set<std::string> seen;
-  auto key = [&](const std::vector<char> &a, const std::vector<FrictionState> &st) {
-    std::string text(a.begin(), a.end());
-    for (FrictionState x : st) text.push_back(char(x));
-    return text;
-  };
-  std::vector<double> lambda, alpha, gap;
-  std::vector<int> last_changing;
-  bool single_changes = false;
-  for (int it = 1; it <= max_iterations; ++it) {
-    result.iterations = it;
-    if (!solve_states(p, f, active, state, s_scale, lambda, alpha)) {
-      result.outcome = FrictionOutcome::modes_not_held;
-      result.unheld_modes = free_modes(p, f, active, state);
-      result.active = active, result.state = state;
-      return result;
-    }
-    gap.assign(nb, 0.0);
-    for (int i = 0; i < nb; ++i) gap[i] = -p.d[i];
+  // One set of states: its linear system, then gap = S l - d - G a.
+  auto solve = [&](const std::vector<char> &act, const std::vector<FrictionState> &state, FrictionStatesSolution &out) {
+    if (!solve_states(p, f, act, state, scales.compliance, out.lambda, out.alpha)) return false;
+    out.gap.assign(nb, 0.0);
+    for (int i = 0; i < nb; ++i) out.gap[i] = -p.d[i];
     if (nb > 0) {
       int one = 1;
       double plus = 1.0, minus = -1.0;
-      p.s.multiply_add(plus, lambda.data(), gap.data());
-      if (p.k > 0) dgemv_("N", &nb, &p.k, &minus, p.g.data(), &nb, alpha.data(), &one, &plus, gap.data(), &one);
+      p.s.multiply_add(plus, out.lambda.data(), out.gap.data());
+      if (p.k > 0) dgemv_("N", &nb, &p.k, &minus, p.g.data(), &nb, out.alpha.data(), &one, &plus, out.gap.data(), &one);
     }
-    double lambda_ref = 0;
-    for (double v : lambda) lambda_ref = std::max(lambda_ref, std::fabs(v));
-    lambda_ref = std::max(lambda_ref, 1e-300);
-    const double gap_ref = std::max({s_scale * lambda_ref, d_scale, 1e-300});
-    // The states' update (the primal-dual active-set rule).
-    std::vector<char> next_active(active);
-    for (int r = 0; r < q; ++r)
-      next_active[r] = active[r] ? !(lambda[r] < -eps * lambda_ref) : gap[r] < -eps * gap_ref;
-    std::vector<FrictionState> next_state(state);
-    double friction_violation = 0;
-    long stick = 0, slip = 0;
-    for (int j = 0; j < m; ++j) {
-      const int r = f.tangent_of[j];
-      if (!f.live(j, next_active)) {
-        next_state[j] = FrictionState::open;
-        continue;
-      }
-      const double bound = friction_bound(f, j, lambda[r], gap[r], cn), lt = lambda[q + j], s = -gap[q + j];
-      if (f.bound[j] == 0) {  // mu = 0 or a zero Tresca bound: l_t = 0 whatever the slip's sign
-        next_state[j] = FrictionState::slip_plus;
-        ++slip;
-        continue;
-      }
-      auto by_trial = [&]() {  // |l_t + c_t s| against the bound
-        const double xi = lt + ct * s;
-        return std::fabs(xi) <= bound ? FrictionState::stick : xi > 0 ? FrictionState::slip_plus : FrictionState::slip_minus;
-      };
-      const bool was_live = f.live(j, active);
-      if (was_live && state[j] == FrictionState::stick) {
-        if (std::fabs(lt) > bound + eps * lambda_ref) next_state[j] = lt > 0 ? FrictionState::slip_plus : FrictionState::slip_minus;
-        friction_violation = std::max({friction_violation, std::fabs(s) / gap_ref,
-                                       std::max(0.0, std::fabs(lt) - bound) / lambda_ref});
-      } else if (was_live && slipping(state[j])) {
-        // A slip against its sign: stick first (the trial value would send a row whose c_t s
-        // outweighs its bound straight to the other sign, and the iteration zig-zags between
-        // the two; both rules have the same fixed points).
-        if (slip_sign(state[j]) * s < -eps * gap_ref) next_state[j] = FrictionState::stick;
-        friction_violation = std::max({friction_violation, std::max(0.0, -slip_sign(state[j]) * s) / gap_ref,
-                                       std::fabs(lt - slip_sign(state[j]) * bound) / lambda_ref});
-      } else {
-        next_state[j] = by_trial();
-      }
-      if (next_state[j] == FrictionState::stick) ++stick;
-      else ++slip;
-    }
-    int changed = 0;
-    std::vector<int> changing;
-    for (int r = 0; r < q; ++r)
-      if (next_active[r] != active[r]) ++changed, changing.push_back(r);
-    for (int j = 0; j < m; ++j)
-      if (next_state[j] != state[j] && !(state[j] == FrictionState::open && next_state[j] == FrictionState::open))
-        if (f.live(j, active) || f.live(j, next_active)) ++changed, changing.push_back(q + j);
-    int n_active = 0;
-    for (char x : active) n_active += x;
-    if (observe) observe({it, n_active, int(stick), int(slip), changed});
-    if (changed == 0) {
-      result.lambda = lambda, result.alpha = alpha, result.gap = gap;
-      result.active = active, result.state = next_state;
-      result.stick = stick, result.slip = slip;
-      // The normal rows' complementarity, as the frictionless solver reports it.
-      double worst = 0;
-      for (int r = 0; r < q; ++r) {
-        worst = std::max(worst, std::max(0.0, -lambda[r]) / lambda_ref);
-        worst = std::max(worst, std::max(0.0, -gap[r]) / gap_ref);
-        worst = std::max(worst, std::fabs(lambda[r] * gap[r]) / (lambda_ref * gap_ref));
-      }
-      result.violation = worst, result.friction_violation = friction_violation;
-      result.outcome = worst <= tolerance && friction_violation <= tolerance ? FrictionOutcome::solved
-                                                                             : FrictionOutcome::not_converged;
-      return result;
-    }
-    if (!seen.insert(key(active, state)).second) {
-      if (single_changes) {
-        result.outcome = FrictionOutcome::cycled;
-        result.active = active, result.state = state, result.lambda = lambda, result.alpha = alpha, result.gap = gap;
-        result.changing_rows = changing;
-        return result;
-      }
-      // The full update cycled (it converges only for M-matrix-like operators, as the
-      // frictionless one, dual_qp.cpp): from here one change per iteration, the row of least
-      // index (Murty's rule, finite for the frictionless problem; for friction no rule is
-      // known to be, so a second cycle is reported).
-      single_changes = true;
-      seen.clear();
-      seen.insert(key(active, state));
-    }
-    last_changing = changing;
-    if (single_changes) {
-      const int row = changing.front();
-      if (row < q) {
-        active[row] = next_active[row];
-        // a row leaving contact leaves its tangential row open; one entering sticks first
-      } else {
-        state[row - q] = next_state[row - q];
-      }
-      for (int j = 0; j < m; ++j)  // (a row coming into contact: its trial state)
-        if (!f.live(j, active)) state[j] = FrictionState::open;
-        else if (state[j] == FrictionState::open)
-          state[j] = next_state[j] != FrictionState::open ? next_state[j] : FrictionState::stick;
-      continue;
-    }
-    active = next_active, state = next_state;
-    for (int j = 0; j < m; ++j)
-      if (state[j] == FrictionState::open && f.live(j, active))
-        state[j] = f.bound[j] == 0 ? FrictionState::slip_plus : FrictionState::stick;
-  }
-  result.outcome = FrictionOutcome::not_converged;
-  result.active = active, result.state = state, result.lambda = lambda, result.alpha = alpha, result.gap = gap;
-  result.changing_rows = last_changing;
+    return true;
+  };
+  FrictionResult result = iterate_friction_states(f, solve, scales, tolerance, max_iterations, active, start_state, observe);
+  if (result.outcome == FrictionOutcome::modes_not_held) result.unheld_modes = free_modes(p, f, result.active, result.state);
   return result;
 }
 

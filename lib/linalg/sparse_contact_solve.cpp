@@ -1,5 +1,6 @@
 #include "linalg/sparse_contact_solve.hpp"
 #include "support/error.hpp"
+#include "support/lapack.hpp"
 #include "support/stopwatch.hpp"
 #include <algorithm>
 #include <cmath>
@@ -102,7 +103,10 @@ void SparseContactSolver::analyze(const SparseContactStructure &s, int ordering)
       norm2 += c * c;
       if (diagonal[s.column[p]] > 0) sigma += c * c / diagonal[s.column[p]];
     }
-    if (sigma > 0) weight_[r] = kAugmentation / sigma;
+    // A row whose terms on the bodies' unknowns are round-off beside its others (a tangential
+    // row at a node whose tangential freedom is a floating body's pin: only its mortar value
+    // and rigid modes are left) is weighed by its size: sigma would give it a weight of 1e35.
+    if (sigma > 1e-8 * norm2 / mean_diagonal) weight_[r] = kAugmentation / sigma;
     else if (norm2 > 0) weight_[r] = kAugmentation * mean_diagonal / norm2;
     else weight_[r] = 1;  // an empty row: never coupled, never active
   }
@@ -123,6 +127,7 @@ int SparseContactSolver::position(int i, int j) const {
 // column, both sorted), then each active row's c_r^T P_r c_r. Nothing of H is kept beside the
 // pattern: its values are read from the bodies' matrices each time (memory: docs/benchmarks.md).
 void SparseContactSolver::factorize(const std::vector<char> &active, SparseContactResult &result) {
+  if (update_from_factor(active, result)) return;
   const double start = now();
   const SparseContactStructure &s = *structure_;
   std::fill(matrix_.values.begin(), matrix_.values.end(), 0.0);
@@ -144,12 +149,92 @@ void SparseContactSolver::factorize(const std::vector<char> &active, SparseConta
         if (s.column[q] >= s.column[p])
           matrix_.values[size_t(position(s.column[p], s.column[q]))] += weight_[r] * s.value[p] * s.value[q];
   }
-  factorized_.clear();
+  factorized_.clear(), factor_set_.clear(), update_ = {};
   cholesky_.factorize(matrix_);
-  factorized_ = active;
+  factorized_ = factor_set_ = active;
   result.factorizations++;
   result.t_factor += now() - start;
 }
+
+// When the rows to hold differ from the factor's by a few (an active-set iteration or a load step
+// that moves the ends of the contact zone), H_P = H_0 + sum_r sign_r P_r c_r^T c_r is a rank-k
+// change of the factorized H_0: its inverse is H_0^-1 - Z M^-1 Z^T with Z = H_0^-1 C_k^T and
+// M = diag(1 / (sign_r P_r)) + C_k Z (Sherman-Morrison-Woodbury), k solves and a k x k LU
+// instead of a factorization. Taken when the k solves cost under half a factorization and Z
+// takes under half the factor's memory. The answer stays exact: the refinement works on the KKT
+// system's own residuals (solve_on_active_set), whatever H_P^-1 was applied. Removing a row
+// cancels P_r against c_r H_0^-1 c_r^T (about 1/P_r, kAugmentation larger than their
+// difference): the update loses some 3 digits, which the refinement wins back.
+bool SparseContactSolver::update_from_factor(const std::vector<char> &active, SparseContactResult &result) {
+  const SparseContactStructure &s = *structure_;
+  if (factor_set_.size() != active.size()) return false;
+  std::vector<int> rows;
+  for (int r = 0; r < s.rows(); ++r)
+    if (s.row_is_inequality[r] && active[r] != factor_set_[r]) rows.push_back(r);
+  const int n = s.n_unknowns, k = int(rows.size());
+  const double solve_flops = 4.0 * double(cholesky_.factor_nnz());
+  if (k == 0) {
+    update_ = {}, factorized_ = active;
+    return true;
+  }
+  if (double(k) * solve_flops > 0.5 * flops_ || double(k) * n > 0.5 * double(cholesky_.factor_nnz())) return false;
+  const double start = now();
+  LowRankUpdate u;
+  u.rows = rows;
+  u.z.assign(size_t(n) * k, 0.0);
+  for (int c = 0; c < k; ++c)
+    for (int p = s.row_start[rows[c]]; p < s.row_start[rows[c] + 1]; ++p) u.z[size_t(c) * n + s.column[p]] = s.value[p];
+  cholesky_.solve(u.z.data(), k);
+  u.m.assign(size_t(k) * k, 0.0);
+  double norm = 0;
+  for (int c = 0; c < k; ++c) {
+    for (int i = 0; i < k; ++i) {
+      double v = 0;
+      for (int p = s.row_start[rows[i]]; p < s.row_start[rows[i] + 1]; ++p) v += s.value[p] * u.z[size_t(c) * n + s.column[p]];
+      u.m[size_t(c) * k + i] = v;
+    }
+    const double sign = active[rows[c]] ? 1.0 : -1.0;
+    u.m[size_t(c) * k + c] += 1 / (sign * weight_[rows[c]]);
+  }
+  for (int c = 0; c < k; ++c) {
+    double sum = 0;
+    for (int i = 0; i < k; ++i) sum += std::fabs(u.m[size_t(c) * k + i]);
+    norm = std::max(norm, sum);
+  }
+  u.pivots.resize(k);
+  int info = 0, kk = k;
+  dgetrf_(&kk, &kk, u.m.data(), &kk, u.pivots.data(), &info);
+  double rcond = 0;
+  if (info == 0) {
+    std::vector<double> work(4 * size_t(k));
+    std::vector<int> iwork(k);
+    dgecon_("1", &kk, u.m.data(), &kk, &norm, &rcond, work.data(), iwork.data(), &info);
+  }
+  result.t_factor += now() - start;
+  if (info != 0 || !(rcond > 1e-12)) return false;  // (a factorization then says what is singular)
+  update_ = std::move(u);
+  factorized_ = active;
+  result.updates++;
+  return true;
+}
+
+void SparseContactSolver::apply_inverse(std::vector<double> &v, SparseContactResult &result) const {
+  const double start = now();
+  cholesky_.solve(v.data());
+  const int k = int(update_.rows.size()), n = structure_->n_unknowns;
+  if (k > 0) {
+    std::vector<double> t(k);
+    for (int i = 0; i < k; ++i) t[i] = row_times(update_.rows[i], v);
+    int one = 1, info = 0, kk = k;
+    dgetrs_("N", &kk, &one, update_.m.data(), &kk, update_.pivots.data(), t.data(), &kk, &info);
+    int nn = n;
+    double minus = -1.0, plus = 1.0;
+    dgemv_("N", &nn, &kk, &minus, update_.z.data(), &nn, t.data(), &one, &plus, v.data(), &one);
+  }
+  result.t_solve += now() - start;
+}
+
+double SparseContactSolver::row_compliance(int r) const { return kAugmentation / weight_[size_t(r)]; }
 
 double SparseContactSolver::row_times(int r, const std::vector<double> &x) const {
   const SparseContactStructure &s = *structure_;
@@ -166,6 +251,15 @@ void SparseContactSolver::apply_ct(const std::vector<double> &y, std::vector<dou
       for (int p = s.row_start[r]; p < s.row_start[r + 1]; ++p) out[s.column[p]] += s.value[p] * y[r];
 }
 
+void SparseContactSolver::apply_dt(const std::vector<double> &y, std::vector<double> &out) const {
+  apply_ct(y, out);
+  const SparseContactStructure &s = *structure_;
+  for (const Coupling &c : coupling_)
+    if (y[c.row] != 0)
+      for (int p = s.row_start[c.other]; p < s.row_start[c.other + 1]; ++p)
+        out[s.column[p]] += c.coefficient * s.value[p] * y[c.row];
+}
+
 int SparseContactSolver::conjugate_gradients(const std::vector<double> &load, const std::vector<double> &target,
                                              std::vector<double> &x, std::vector<double> &lambda,
                                              SparseContactResult &result) const {
@@ -173,11 +267,7 @@ int SparseContactSolver::conjugate_gradients(const std::vector<double> &load, co
   const int nrows = s.rows();
   std::vector<char> in(nrows);
   for (int r = 0; r < nrows; ++r) in[r] = !s.row_is_inequality[r] || factorized_[r];
-  auto timed_solve = [&](std::vector<double> &v) {
-    const double start = now();
-    cholesky_.solve(v.data());
-    result.t_solve += now() - start;
-  };
+  auto timed_solve = [&](std::vector<double> &v) { apply_inverse(v, result); };
   // x(lambda) = H_P^-1 (F + C_A^T (P t - lambda)).
   std::vector<double> y(nrows, 0.0);
   for (int r = 0; r < nrows; ++r)
@@ -235,12 +325,135 @@ int SparseContactSolver::conjugate_gradients(const std::vector<double> &load, co
   return steps;
 }
 
+// GMRES (Saad and Schultz 1986), restarted, left-preconditioned by P, on the rows of E:
+// A lambda = b with A = C_E H_P^-1 D_E^T, whose residual b - A lambda is C_E x(lambda) - t_E for
+// x(lambda) = H_P^-1 (F + C_E^T P t_E - D_E^T lambda). A coupled row's extra term
+// coefficient C_other H_P^-1 C_r^T is of the size of the row's own 1/P (its normal direction is
+// held by P), so P A is I plus a perturbation of the size of mu: a few steps, each one forward
+// and one backward solve, as a CG step. Krylov vectors live in the rows' space only; x is formed
+// once per cycle from lambda.
+int SparseContactSolver::gmres(const std::vector<double> &load, const std::vector<double> &target, std::vector<double> &x,
+                               std::vector<double> &lambda, SparseContactResult &result) const {
+  const SparseContactStructure &s = *structure_;
+  const int nrows = s.rows();
+  std::vector<int> rows;
+  for (int r = 0; r < nrows; ++r)
+    if (!s.row_is_inequality[r] || factorized_[r]) rows.push_back(r);
+    else lambda[r] = 0;
+  const int n = int(rows.size());
+  auto timed_solve = [&](std::vector<double> &v) { apply_inverse(v, result); };
+  // x(lambda), and the rows' residuals C_E x - t_E.
+  std::vector<double> y(nrows, 0.0), res(nrows, 0.0), row_scale(nrows, 0.0);
+  auto form_x = [&]() {
+    std::vector<double> pt(nrows, 0.0), dl;
+    for (int r : rows) pt[r] = weight_[r] * target[r];
+    apply_ct(pt, x);
+    apply_dt(lambda, dl);
+    for (int i = 0; i < s.n_unknowns; ++i) x[i] += load[i] - dl[i];
+    timed_solve(x);
+    for (int r : rows) res[r] = row_times(r, x) - target[r];
+  };
+  form_x();
+  double size = 0;
+  for (int r : rows) {
+    double norm = 0, terms = std::fabs(target[r]);
+    for (int p = s.row_start[r]; p < s.row_start[r + 1]; ++p)
+      norm = std::max(norm, std::fabs(s.value[p])), terms += std::fabs(s.value[p] * x[s.column[p]]);
+    row_scale[r] = norm > 0 ? 1 / norm : 0;
+    size = std::max(size, terms * row_scale[r]);
+  }
+  auto worst = [&]() {
+    double w = 0;
+    for (int r : rows) w = std::max(w, std::fabs(res[r]) * row_scale[r]);
+    return w;
+  };
+  const double goal = kRowTolerance * std::max(size, 1e-300);
+  double best = worst();
+  if (best <= goal || n == 0) return 0;
+  constexpr int kRestart = 60, kMaxCycles = 8;
+  int steps = 0, stalled = 0;
+  std::vector<std::vector<double>> v;  // the Krylov basis (over the n rows of E)
+  std::vector<double> h(size_t(kRestart + 1) * kRestart), cs(kRestart), sn(kRestart), g(kRestart + 1), w(n), full(nrows);
+  auto hes = [&](int i, int j) -> double & { return h[size_t(j) * (kRestart + 1) + i]; };
+  auto norm2 = [](const std::vector<double> &a) {
+    double t = 0;
+    for (double e : a) t += e * e;
+    return std::sqrt(t);
+  };
+  for (int cycle = 0; cycle < kMaxCycles; ++cycle) {
+    // r = b - A lambda is res; z = P r.
+    v.assign(1, std::vector<double>(n));
+    for (int i = 0; i < n; ++i) v[0][i] = weight_[rows[i]] * res[rows[i]];
+    const double beta = norm2(v[0]);
+    if (!(beta > 0)) break;
+    for (double &e : v[0]) e /= beta;
+    std::fill(g.begin(), g.end(), 0.0);
+    g[0] = beta;
+    int k = 0;
+    for (; k < kRestart; ++k) {
+      ++steps;
+      // w = P A v_k: v_k on the rows, D^T, H_P^-1, C_E, P.
+      std::fill(full.begin(), full.end(), 0.0);
+      for (int i = 0; i < n; ++i) full[rows[i]] = v[k][i];
+      std::vector<double> u;
+      apply_dt(full, u);
+      timed_solve(u);
+      for (int i = 0; i < n; ++i) w[i] = weight_[rows[i]] * row_times(rows[i], u);
+      for (int j = 0; j <= k; ++j) {  // modified Gram-Schmidt
+        double d = 0;
+        for (int i = 0; i < n; ++i) d += w[i] * v[j][i];
+        hes(j, k) = d;
+        for (int i = 0; i < n; ++i) w[i] -= d * v[j][i];
+      }
+      const double w_norm = norm2(w);  // the next basis vector's length (rotated out of H below)
+      hes(k + 1, k) = w_norm;
+      for (int j = 0; j < k; ++j) {  // the earlier rotations, then this column's
+        const double a = hes(j, k), b = hes(j + 1, k);
+        hes(j, k) = cs[j] * a + sn[j] * b, hes(j + 1, k) = -sn[j] * a + cs[j] * b;
+      }
+      const double a = hes(k, k), b = hes(k + 1, k), rho = std::hypot(a, b);
+      cs[k] = rho > 0 ? a / rho : 1, sn[k] = rho > 0 ? b / rho : 0;
+      hes(k, k) = rho, hes(k + 1, k) = 0;
+      g[k + 1] = -sn[k] * g[k], g[k] = cs[k] * g[k];
+      const bool last = std::fabs(g[k + 1]) <= 1e-13 * beta || !(rho > 0) || !(w_norm > 0) || k + 1 == kRestart;
+      if (!last) {
+        v.emplace_back(n);
+        for (int i = 0; i < n; ++i) v[k + 1][i] = w[i] / w_norm;
+      } else {
+        ++k;
+        break;
+      }
+    }
+    // lambda += V y, H y = g (upper triangular k x k).
+    std::vector<double> coef(k, 0.0);
+    for (int i = k - 1; i >= 0; --i) {
+      double t = g[i];
+      for (int j = i + 1; j < k; ++j) t -= hes(i, j) * coef[j];
+      coef[i] = hes(i, i) != 0 ? t / hes(i, i) : 0;
+    }
+    for (int j = 0; j < k; ++j)
+      for (int i = 0; i < n; ++i) lambda[rows[i]] += coef[j] * v[j][i];
+    form_x();
+    const double now_worst = worst();
+    if (now_worst <= goal) break;
+    if (now_worst < 0.5 * best) best = now_worst, stalled = 0;
+    else if (++stalled >= 2) break;  // at round-off: the refinement takes over
+  }
+  result.cg_steps += steps;
+  return steps;
+}
+
 void SparseContactSolver::solve_on_active_set(const std::vector<double> &load, const std::vector<double> &target,
                                               std::vector<double> &x, std::vector<double> &lambda,
                                               SparseContactResult &result) const {
   const SparseContactStructure &s = *structure_;
   const int nrows = s.rows();
-  conjugate_gradients(load, target, x, lambda, result);
+  auto krylov = [&](const std::vector<double> &f, const std::vector<double> &t, std::vector<double> &xx,
+                    std::vector<double> &ll) {
+    if (coupling_.empty()) conjugate_gradients(f, t, xx, ll, result);
+    else gmres(f, t, xx, ll, result);
+  };
+  krylov(load, target, x, lambda);
   // Iterative refinement on the KKT system's own residuals (F - H x - C_A^T lambda, t_A - C_A x):
   // CG's recursive residual drifts from the true one by round-off of H_P's conditioning.
   // The residuals are summed in long double (x87 extended precision, 64-bit mantissa, where the
@@ -257,6 +470,11 @@ void SparseContactSolver::solve_on_active_set(const std::vector<double> &load, c
           const long double term = (long double)s.value[p] * lambda[r];
           sum[s.column[p]] -= term, size[s.column[p]] += std::fabs(term);
         }
+    for (const Coupling &c : coupling_)  // D_r = C_r + coefficient C_other
+      for (int p = s.row_start[c.other]; p < s.row_start[c.other + 1]; ++p) {
+        const long double term = (long double)c.coefficient * s.value[p] * lambda[c.row];
+        sum[s.column[p]] -= term, size[s.column[p]] += std::fabs(term);
+      }
     for (size_t b = 0; b < s.blocks.size(); ++b) {
       const SymmetricCsc &k = *s.blocks[b];
       const int o = s.block_offset[b];
@@ -296,7 +514,7 @@ void SparseContactSolver::solve_on_active_set(const std::vector<double> &load, c
   double current = residuals(rf, rt);
   for (int step = 0; step < kMaxRefinements && current > 1e-18; ++step) {
     std::vector<double> dx(s.n_unknowns, 0.0), dl(nrows, 0.0);
-    conjugate_gradients(rf, rt, dx, dl, result);
+    krylov(rf, rt, dx, dl);
     std::vector<double> x_new(x), l_new(lambda);
     for (int i = 0; i < s.n_unknowns; ++i) x_new[i] += dx[i];
     for (int r = 0; r < nrows; ++r) l_new[r] += dl[r];
@@ -318,6 +536,7 @@ SparseContactResult SparseContactSolver::solve(const std::vector<double> &load, 
   const SparseContactStructure &s = *structure_;
   const int nrows = s.rows();
   SparseContactResult result;
+  coupling_.clear();
   std::vector<char> active(nrows, 0);
   for (int r = 0; r < nrows; ++r)
     active[r] = s.row_is_inequality[r] && (int(start.size()) == nrows ? start[r] : 1);
@@ -375,6 +594,20 @@ SparseContactResult SparseContactSolver::solve(const std::vector<double> &load, 
   result.cycled = result.iterations < max_iterations;
   result.x = std::move(x), result.lambda = std::move(lambda);
   return result;
+}
+
+void SparseContactSolver::solve_rows(const std::vector<double> &load, const std::vector<double> &target,
+                                     const std::vector<char> &set, const std::vector<Coupling> &coupling,
+                                     std::vector<double> &x, std::vector<double> &lambda, SparseContactResult &result) {
+  const SparseContactStructure &s = *structure_;
+  std::vector<char> rows(set);
+  for (int r = 0; r < s.rows(); ++r) rows[r] = s.row_is_inequality[r] && set[r];
+  if (factorized_ != rows) factorize(rows, result);
+  coupling_ = coupling;
+  x.assign(s.n_unknowns, 0.0);
+  lambda.resize(s.rows(), 0.0);
+  solve_on_active_set(load, target, x, lambda, result);
+  coupling_.clear();
 }
 
 }  // namespace mc

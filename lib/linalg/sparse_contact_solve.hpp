@@ -51,6 +51,7 @@ struct SparseContactResult {
   std::vector<char> active;    // the final active set (contact rows; a re-solve starts from it)
   int iterations = 0;          // active-set iterations
   int factorizations = 0;      // numeric factorizations of H_P in this solve
+  int updates = 0;             // active sets solved through a low-rank update of the last factor instead
   int cg_steps = 0;            // conjugate-gradient steps (each: one forward and one backward solve)
   double violation = 0;        // largest relative violation of complementarity (as MC_INFO_COMPLEMENTARITY)
   double t_factor = 0, t_solve = 0;
@@ -63,7 +64,7 @@ public:
   // `structure` must outlive the solver (its blocks are read at each factorization).
   void analyze(const SparseContactStructure &structure, int ordering);
   // Frees the pattern and the factor.
-  void release() { cholesky_.release(), matrix_ = SymmetricCsc{}, factorized_.clear(); }
+  void release() { cholesky_.release(), matrix_ = SymmetricCsc{}, factorized_.clear(), factor_set_.clear(), update_ = {}; }
   // CHOLMOD's estimates from the analysis, for the automatic choice of path.
   double factor_flops() const { return flops_; }
   long factor_nnz() const { return cholesky_.factor_nnz(); }
@@ -80,23 +81,59 @@ public:
                             const std::function<bool(const std::vector<char> &)> &hold_modes,
                             const DualQpObserver &observe = {});
 
+  // Friction (friction_iteration.hpp; sparse_friction.cpp builds the rows): the linear system of
+  // one set of rows E (`set`: the rows held to C_r x = t_r; the equations always are), some of
+  // whose forces act along D_r = C_r + coefficient C_other instead of C_r (a slipping Coulomb
+  // row: its normal row's multiplier pushes along t too, l_t = +-mu l_n):
+  //     H x + D_E^T lambda_E = F,   C_E x = t_E.
+  // Solved exactly as the frictionless system (the same H_P; refined on its own residuals), by
+  // CG when no row is coupled, else by GMRES on the nonsymmetric C_E H_P^-1 D_E^T. x and lambda
+  // start from what they hold (lambda: a warm start; x is overwritten).
+  struct Coupling {
+    int row = 0, other = 0;
+    double coefficient = 0;
+  };
+  void solve_rows(const std::vector<double> &load, const std::vector<double> &target, const std::vector<char> &set,
+                  const std::vector<Coupling> &coupling, std::vector<double> &x, std::vector<double> &lambda,
+                  SparseContactResult &result);
+  // An estimate of row r's compliance c_r H^-1 c_r^T (Jacobi: the one P's weight is made from).
+  double row_compliance(int r) const;
+  double row_times(int r, const std::vector<double> &x) const;  // C_r x
+
 private:
+  // H_P of the rows `active` (and the equations): a low-rank update of the factor it has when
+  // few rows differ (update_from_factor), else a numeric factorization.
   void factorize(const std::vector<char> &active, SparseContactResult &result);
+  bool update_from_factor(const std::vector<char> &active, SparseContactResult &result);
+  // v = H_P^-1 v for the rows factorized_: the factor's solve, then the update's correction.
+  void apply_inverse(std::vector<double> &v, SparseContactResult &result) const;
   // The exact solution of the KKT system on the factorized active set, from lambda's start.
   void solve_on_active_set(const std::vector<double> &load, const std::vector<double> &target,
                            std::vector<double> &x, std::vector<double> &lambda, SparseContactResult &result) const;
   // CG on S_P lambda = b for the active rows; x follows lambda. Returns the steps taken.
   int conjugate_gradients(const std::vector<double> &load, const std::vector<double> &target, std::vector<double> &x,
                           std::vector<double> &lambda, SparseContactResult &result) const;
+  // GMRES on C_E H_P^-1 D_E^T lambda = b for the rows of E (coupled rows); x follows lambda.
+  int gmres(const std::vector<double> &load, const std::vector<double> &target, std::vector<double> &x,
+            std::vector<double> &lambda, SparseContactResult &result) const;
   void apply_ct(const std::vector<double> &y, std::vector<double> &out) const;  // out = C_A^T y
-  double row_times(int r, const std::vector<double> &x) const;                // C_r x
+  void apply_dt(const std::vector<double> &y, std::vector<double> &out) const;  // out = D_A^T y (coupling_)
 
   const SparseContactStructure *structure_ = nullptr;
   int position(int i, int j) const;  // of entry (min(i, j), max(i, j)) in matrix_
   SymmetricCsc matrix_;              // H_P's pattern (H + C^T C), values of the factorized set
   std::vector<double> weight_;       // P, one per row
   SparseCholesky cholesky_;
-  std::vector<char> factorized_;     // the active set of the current factor (empty: none)
+  std::vector<char> factorized_;     // the active set H_P is of (empty: none)
+  std::vector<char> factor_set_;     // the active set of the Cholesky factor (differs by update_)
+  // H_P = H_0 + sum_r sign_r P_r c_r^T c_r over the rows that differ from the factor's set
+  // (Sherman-Morrison-Woodbury): Z = H_0^-1 [c_r^T], M = diag(1 / (sign_r P_r)) + [c_r] Z, LU.
+  struct LowRankUpdate {
+    std::vector<int> rows;
+    std::vector<double> z, m;  // n x k, k x k column-major (m: its LU factors)
+    std::vector<int> pivots;
+  } update_;
+  std::vector<Coupling> coupling_;   // of the system being solved (solve_rows; empty: D = C)
   double flops_ = 0, t_analysis_ = 0;
 };
 

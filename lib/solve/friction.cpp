@@ -79,29 +79,44 @@ const char *state_name(FrictionState s) {
 
 }  // namespace
 
-// The frictional interface problem (friction_qp.hpp) on the condensed operator, and its errors.
+FrictionProblem Model::friction_problem() const {
+  const ContactSystem &cs = *contact_;
+  FrictionProblem f;
+  f.normal_rows = cs.rows.size(), f.tangent_of = cs.tangent_of, f.law = cs.friction_law, f.bound = cs.friction_bound;
+  f.ct = options.friction_ct;
+  return f;
+}
+
+FrictionObserver Model::friction_log() {
+  if (!progress.enabled()) return {};
+  return [this](const FrictionIteration &it) {
+    progress(MC_LOG_ITERATION, "friction iteration %d: %d in contact, %d stick, %d slip, %d states changed", it.iteration,
+             it.active, it.stick, it.slip, it.changed);
+  };
+}
+
+// The frictional interface problem (friction_qp.hpp) on the condensed operator.
 void Model::solve_condensed_friction(DualQp &qp, std::vector<double> &lambda, std::vector<double> &alpha) {
   ContactSystem &cs = *contact_;
-  const int q = cs.rows.size();
-  FrictionProblem f;
-  f.normal_rows = q, f.tangent_of = cs.tangent_of, f.law = cs.friction_law, f.bound = cs.friction_bound;
-  f.ct = options.friction_ct;
-  FrictionObserver observe;
-  if (progress.enabled())
-    observe = [this](const FrictionIteration &it) {
-      progress(MC_LOG_ITERATION, "friction iteration %d: %d in contact, %d stick, %d slip, %d states changed",
-               it.iteration, it.active, it.stick, it.slip, it.changed);
-    };
+  const FrictionProblem f = friction_problem();
   FrictionResult result;
   const double start = now();
   {
     Stopwatch watch(infos.t_contact);
-    result = solve_friction_qp(qp, f, options.tolerance, options.max_iterations, cs.last_active, cs.friction_state, observe);
+    result = solve_friction_qp(qp, f, options.tolerance, options.max_iterations, cs.last_active, cs.friction_state,
+                               friction_log());
   }
+  accept_friction(f, result, start, "", lambda, alpha);
+}
+
+void Model::accept_friction(const FrictionProblem &f, const FrictionResult &result, double start, const char *path,
+                            std::vector<double> &lambda, std::vector<double> &alpha) {
+  ContactSystem &cs = *contact_;
+  const int q = cs.rows.size();
   infos.iterations += result.iterations;
   static const char *const outcome[] = {"solved", "floating body not held", "not converged", "cycled"};
-  progress(MC_LOG_PHASE, "friction solve: %s, %d iterations, %ld stick, %ld slip, residuals %.3g and %.3g, %.3g s",
-           outcome[int(result.outcome)], result.iterations, result.stick, result.slip, result.violation,
+  progress(MC_LOG_PHASE, "friction solve%s: %s, %d iterations, %ld stick, %ld slip, residuals %.3g and %.3g, %.3g s",
+           path, outcome[int(result.outcome)], result.iterations, result.stick, result.slip, result.violation,
            result.friction_violation, now() - start);
   if (result.outcome == FrictionOutcome::modes_not_held) {
     // The rows that hold in the states reached: in contact, and sticking.

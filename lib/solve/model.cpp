@@ -186,9 +186,6 @@ void Model::build_structure(const std::function<void(int, BodyWork &)> &then) {
   // The sparse path when it is forced; otherwise each body is analysed for the condensed path
   // first, and the automatic choice reads those analyses (choose_interface_solver).
   const bool forced_sparse = contact_ && options.interface_solver == MC_INTERFACE_SPARSE;
-  if (forced_sparse && !contact_->tangent_of.empty())  // (docs/api.md, "Friction")
-    fail(MC_ERROR_STATE, "friction (mc_set_friction) is solved on the condensed interface path only: set "
-         "MC_OPTION_INTERFACE_SOLVER to MC_INTERFACE_AUTO or MC_INTERFACE_CONDENSED");
   for_each_body([&](int b, BodyWork &work) {
     system_[b] = assemble_body(b, work);
     reduce_body(b, work);
@@ -481,7 +478,10 @@ void Model::solve() {
       if (steps > 1) progress(MC_LOG_PHASE, "load step %d of %d", step, steps);
     }
     displacements_known = false;
-    if (contact_ && contact_->sparse) {
+    if (contact_ && contact_->sparse && friction) {
+      solve_sparse_friction(loads, lambda, alpha);
+      displacements_known = true;
+    } else if (contact_ && contact_->sparse) {
       // The sparse path, or (if its active-set iteration cycles) the condensed one, whose QP
       // solver has a fallback for that (fall_back_to_condensed).
       if (solve_sparse(loads, lambda, alpha)) displacements_known = true;

@@ -136,6 +136,7 @@ struct ContactSystem {
   std::vector<int> friction_law;
   std::vector<double> friction_bound;
   std::vector<FrictionState> friction_state;  // the last converged states (a warm start)
+  int tangent_row_offset = 0;  // the sparse structure's row of tangential row 0 (after the equations)
   int b_rows() const { return rows.size() + int(tangent_of.size()); }  // B's rows: normal, then tangential
   const ContactGroup &group_of_position(int pos) const { return groups[position_group[pos]]; }
 };
@@ -321,6 +322,10 @@ private:
   // iteration cycled (then fall_back_to_condensed).
   void build_sparse_structure();
   bool solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lambda, std::vector<double> &alpha);
+  void sparse_loads(const std::vector<LoadSolve> &loads, std::vector<double> &load, std::vector<double> &target) const;
+  bool rows_hold_modes(const std::vector<char> &holding) const;
+  // The sparse path's answer x in the bodies' terms (loads[b].v) and the rigid modes' alpha.
+  void sparse_displacements(const std::vector<double> &x, std::vector<LoadSolve> &loads, std::vector<double> &alpha) const;
   // The condensed path (condensed_contact_path.cpp).
   void build_condensed(const std::function<void(int, BodyWork &)> &then);
   void fall_back_to_condensed(std::vector<LoadSolve> &loads);
@@ -340,6 +345,13 @@ private:
   void refresh_friction();
   const ContactPair &group_friction(const ContactGroup &group) const;
   void solve_condensed_friction(DualQp &qp, std::vector<double> &lambda, std::vector<double> &alpha);
+  void solve_sparse_friction(std::vector<LoadSolve> &loads, std::vector<double> &lambda, std::vector<double> &alpha);
+  FrictionProblem friction_problem() const;
+  FrictionObserver friction_log();
+  // A frictional solve's outcome: its log line, its errors, and (solved) lambda, alpha, the
+  // warm start and the infos.
+  void accept_friction(const FrictionProblem &f, const FrictionResult &result, double start, const char *path,
+                       std::vector<double> &lambda, std::vector<double> &alpha);
   double tangential_reference(int row) const;  // B row `row` (tangential) times u0, less its prescribed part
   void prepare_history();
   void step_loads(int step, int steps, const std::vector<LoadSolve> &target,

@@ -112,19 +112,7 @@ bool Model::choose_interface_solver() {
   for (int b = 0; b < n_bodies(); ++b)
     if (system_[b] && !system_[b]->cholesky.analyzed()) analysed = false;
   const bool condensed_fits = analysed && (memory <= 0 || condensed_bytes <= kCondensedMemoryShare * memory);
-  // Friction runs on the condensed path only (docs/api.md, "Friction": the sparse path's
-  // frictional iteration is not written yet).
-  if (!cs.tangent_of.empty()) {
-    if (memory > 0 && condensed_bytes > memory)
-      fail(MC_ERROR_MEMORY,
-           "friction is solved on the condensed interface path, which would need about %.3g GiB for %d normal and "
-           "tangential contact rows, and %.3g GiB are available",
-           gib(condensed_bytes), int(q), gib(memory));
-    if (options.interface_solver == MC_INTERFACE_AUTO)
-      progress(MC_LOG_PHASE, "interface solver: condensed (friction is solved on the condensed path), %.3g s",
-               now() - start);
-  }
-  if (options.interface_solver == MC_INTERFACE_CONDENSED || !cs.tangent_of.empty()) {
+  if (options.interface_solver == MC_INTERFACE_CONDENSED) {
     if (memory > 0 && condensed_bytes > memory)
       fail(MC_ERROR_MEMORY,
            "the condensed interface solver (MC_INTERFACE_CONDENSED) would need about %.3g GiB for %d contact rows "
@@ -207,7 +195,7 @@ void Model::build_sparse_structure() {
   const double start = now();
   ContactSystem &cs = *contact_;
   const ConstraintRows &rows = cs.rows;
-  const int q = rows.size();
+  const int q = rows.size(), qb = cs.b_rows();
   SparseContactStructure &st = cs.structure;
   st = SparseContactStructure{};
   int offset = 0;
@@ -261,7 +249,7 @@ void Model::build_sparse_structure() {
       entries.emplace_back(cs.aux_offset + 2 * a + 1, -rows.normal[r].y);
     }
     for (int c = 0; c < cs.modes; ++c)
-      if (cs.g[size_t(c) * q + r] != 0) entries.emplace_back(cs.mode_offset + c, cs.g[size_t(c) * q + r]);
+      if (cs.g[size_t(c) * qb + r] != 0) entries.emplace_back(cs.mode_offset + c, cs.g[size_t(c) * qb + r]);
     add_row(true);
   }
   // The mortar equations D w - R u2 = 0, per component (ConstraintRows::aux), u2 the mortar
@@ -280,6 +268,25 @@ void Model::build_sparse_structure() {
       add_row(false);
     }
   }
+  // Friction: the tangential rows (B's rows q + j) after the equations, built as their normal
+  // rows are, along t = (-n_y, n_x): -t . w_a for a mortar value. Switched in and out by the
+  // stick/slip iteration as the contact rows are by the active set (sparse_friction.cpp).
+  cs.tangent_row_offset = st.rows();
+  for (size_t j = 0; j < cs.tangent_of.size(); ++j) {
+    const int r = cs.tangent_of[j], row = q + int(j);
+    const ContactGroup &group = cs.groups[cs.row_group[r]];
+    add_body_entries(group.nonmortar, row);
+    if (rows.aux[r] < 0) {
+      add_body_entries(group.mortar, row);
+    } else {
+      const int a = rows.aux[r];
+      entries.emplace_back(cs.aux_offset + 2 * a, rows.normal[r].y);
+      entries.emplace_back(cs.aux_offset + 2 * a + 1, -rows.normal[r].x);
+    }
+    for (int c = 0; c < cs.modes; ++c)
+      if (cs.g[size_t(c) * qb + row] != 0) entries.emplace_back(cs.mode_offset + c, cs.g[size_t(c) * qb + row]);
+    add_row(true);
+  }
   {
     Stopwatch watch(infos.t_analysis);
     cs.solver.analyze(st, options.ordering);
@@ -296,35 +303,37 @@ void Model::build_sparse_structure() {
            st.n_unknowns, 2 * rows.aux_count, cs.modes, st.rows(), cs.solver.factor_nnz(), now() - start);
 }
 
-bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lambda, std::vector<double> &alpha) {
-  ContactSystem &cs = *contact_;
+// The sparse path's loads F = (f_b, 0, R^T f) and right-hand sides: a contact row's initial gap
+// less what the prescribed values already close; the mortar equations' share of the prescribed
+// values; a tangential row's B_t u0 (where its slip starts) less its prescribed part.
+// MC_ERROR_SINGULAR if no pushing contact forces can balance the loads of floating bodies.
+void Model::sparse_loads(const std::vector<LoadSolve> &loads, std::vector<double> &load, std::vector<double> &target) const {
+  const ContactSystem &cs = *contact_;
   const ConstraintRows &rows = cs.rows;
   const SparseContactStructure &st = cs.structure;
   const int q = rows.size(), nrows = st.rows(), k = cs.modes;
-  Stopwatch watch(infos.t_contact);
-  const double start = now();
-  // 1. Loads F = (f_1, f_2, 0, R^T f) and the rows' right-hand sides: the initial gaps less
-  //    what the prescribed values already close; the mortar equations' share of them.
-  std::vector<double> load(st.n_unknowns, 0.0), target(nrows, 0.0), e(k, 0.0);
+  load.assign(st.n_unknowns, 0.0), target.assign(nrows, 0.0);
   for (int b = 0; b < n_bodies(); ++b) {
     if (!system_[b]) continue;
     const BodySystem &sys = *system_[b];
     for (size_t i = 0; i < sys.solve_dofs.size(); ++i) load[cs.column_offset[b] + i] = loads[b].lifted[sys.solve_dofs[i]];
   }
-  e = rigid_mode_loads(loads);
+  const std::vector<double> e = rigid_mode_loads(loads);
   for (int c = 0; c < k; ++c) load[cs.mode_offset + c] = e[c];
-  for (int r = 0; r < q; ++r) {
-    double g = row_initial_gap(r);
+  // A row's prescribed part: on the bodies its unknowns hold (not the mortar body of a row with
+  // a mortar value: w carries its prescribed values).
+  auto less_prescribed = [&](double g, int r, int b_row) {
     const int mortar = cs.groups[cs.row_group[r]].mortar;
     for (int b = 0; b < n_bodies(); ++b) {
-      if (b == mortar && rows.aux[r] >= 0) continue;  // w carries the mortar body's prescribed values
-      for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) {
+      if (b == mortar && rows.aux[r] >= 0) continue;
+      for (int p = cs.b_start[b][b_row]; p < cs.b_start[b][b_row + 1]; ++p) {
         const int dof = cs.b_dof[b][p];
         if (fixed_[b][dof]) g -= cs.b_value[b][p] * fixed_value_[b][dof];
       }
     }
-    target[r] = g;
-  }
+    return g;
+  };
+  for (int r = 0; r < q; ++r) target[r] = less_prescribed(row_initial_gap(r), r, r);
   for (int a = 0; a < rows.aux_count; ++a) {
     const int mortar = cs.groups[cs.aux_group[a]].mortar;
     for (int c = 0; c < 2; ++c) {
@@ -336,10 +345,23 @@ bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lam
       target[q + 2 * a + c] = t;
     }
   }
-  // 2. Floating bodies: loads that no pushing contact forces can balance have no solution.
-  if (k > 0) {
+  for (size_t j = 0; j < cs.tangent_of.size(); ++j) {
+    const int b_row = q + int(j);
+    double reference = 0;
+    if (history_.valid)
+      for (int b = 0; b < n_bodies(); ++b)
+        for (int p = cs.b_start[b][b_row]; p < cs.b_start[b][b_row + 1]; ++p)
+          reference += cs.b_value[b][p] * history_.u[b][cs.b_dof[b][p]];
+    target[cs.tangent_row_offset + int(j)] = less_prescribed(reference, cs.tangent_of[j], b_row);
+  }
+  // Floating bodies: loads that no pushing contact forces can balance have no solution (with
+  // friction the tangential forces may: its iteration says if nothing holds a body).
+  if (k > 0 && cs.tangent_of.empty()) {
     DualQp balance;
-    balance.q = q, balance.k = k, balance.g = cs.g, balance.e = e;
+    balance.q = q, balance.k = k, balance.e = e;
+    balance.g.resize(size_t(q) * k);
+    for (int c = 0; c < k; ++c)
+      std::copy_n(cs.g.begin() + size_t(c) * cs.b_rows(), q, balance.g.begin() + size_t(c) * q);
     const double imbalance = load_imbalance(balance);
     if (imbalance > 1e-8)
       fail(MC_ERROR_SINGULAR,
@@ -347,25 +369,59 @@ bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lam
            "the best nonnegative contact forces leave %.3g of the load unbalanced; add supports or change the loads",
            free_modes_description().c_str(), imbalance);
   }
+}
+
+// Whether the rows set in `holding` (the sparse structure's: contact rows in contact, sticking
+// tangential rows) hold the floating bodies: G restricted to them of full rank (judged as the
+// condensed path judges it), so that H_P is positive definite.
+bool Model::rows_hold_modes(const std::vector<char> &holding) const {
+  const ContactSystem &cs = *contact_;
+  const int k = cs.modes, q = cs.rows.size(), qb = cs.b_rows();
+  if (k == 0) return true;
+  std::vector<double> gram(size_t(k) * k, 0.0), eig(k);
+  int count = 0;
+  auto add = [&](int b_row) {
+    ++count;
+    for (int a = 0; a < k; ++a)
+      for (int b = 0; b < k; ++b) gram[size_t(b) * k + a] += cs.g[size_t(a) * qb + b_row] * cs.g[size_t(b) * qb + b_row];
+  };
+  for (int r = 0; r < q; ++r)
+    if (holding[r]) add(r);
+  for (int j = 0; j < qb - q; ++j)
+    if (holding[cs.tangent_row_offset + j]) add(q + j);
+  if (count < k) return false;
+  // k counts the rigid modes of every floating body (up to 3 each): dsyev needs 3k - 1
+  int n = k, lwork = std::max(64, 3 * k), info = 0;
+  std::vector<double> work(lwork);
+  dsyev_("N", "U", &n, gram.data(), &n, eig.data(), work.data(), &lwork, &info);
+  return info == 0 && eig[0] > 1e-12 * eig[k - 1];
+}
+
+void Model::sparse_displacements(const std::vector<double> &x, std::vector<LoadSolve> &loads,
+                                 std::vector<double> &alpha) const {
+  const ContactSystem &cs = *contact_;
+  alpha.assign(x.begin() + cs.mode_offset, x.begin() + cs.mode_offset + cs.modes);
+  for (int b = 0; b < n_bodies(); ++b) {
+    if (!system_[b]) continue;
+    const BodySystem &sys = *system_[b];
+    loads[b].v.assign(sys.stiffness.n, 0.0);
+    for (size_t i = 0; i < sys.solve_dofs.size(); ++i) loads[b].v[sys.solve_dofs[i]] = x[cs.column_offset[b] + i];
+  }
+}
+
+bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lambda, std::vector<double> &alpha) {
+  ContactSystem &cs = *contact_;
+  const ConstraintRows &rows = cs.rows;
+  const SparseContactStructure &st = cs.structure;
+  const int q = rows.size(), nrows = st.rows();
+  Stopwatch watch(infos.t_contact);
+  const double start = now();
+  // 1. Loads, the rows' right-hand sides, and whether contact can balance the loads.
+  std::vector<double> load, target;
+  sparse_loads(loads, load, target);
   // 3. The active-set iteration. An active set must hold the floating bodies (G_A of full rank,
   //    judged as the condensed path judges it) before H_P is factorized.
-  auto hold_modes = [&](const std::vector<char> &active) {
-    if (k == 0) return true;
-    std::vector<double> gram(size_t(k) * k, 0.0), eig(k);
-    int count = 0;
-    for (int r = 0; r < q; ++r) {
-      if (!active[r]) continue;
-      ++count;
-      for (int a = 0; a < k; ++a)
-        for (int b = 0; b < k; ++b) gram[size_t(b) * k + a] += cs.g[size_t(a) * q + r] * cs.g[size_t(b) * q + r];
-    }
-    if (count < k) return false;
-    // k counts the rigid modes of every floating body (up to 3 each): dsyev needs 3k - 1
-    int lwork = std::max(64, 3 * k), info = 0;
-    std::vector<double> work(lwork);
-    dsyev_("N", "U", &k, gram.data(), &k, eig.data(), work.data(), &lwork, &info);
-    return info == 0 && eig[0] > 1e-12 * eig[k - 1];
-  };
+  auto hold_modes = [&](const std::vector<char> &active) { return rows_hold_modes(active); };
   std::vector<char> start_set;
   if (int(cs.last_active.size()) == q) start_set.assign(nrows, 1), std::copy(cs.last_active.begin(), cs.last_active.end(), start_set.begin());
   const DualQpObserver observe = iteration_log(q);
@@ -395,9 +451,10 @@ bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lam
   infos.t_solve += result.t_solve;
   infos.factor_nnz += cs.solver.factor_nnz();
   progress(MC_LOG_PHASE,
-           "active-set solve (sparse): %s, %d iterations, %d factorizations, %d conjugate-gradient steps, residual %.3g, %.3g s",
+           "active-set solve (sparse): %s, %d iterations, %d factorizations, %d factor updates, %d conjugate-gradient "
+           "steps, residual %.3g, %.3g s",
            result.outcome == SparseContactOutcome::solved ? "solved" : "not converged", result.iterations,
-           result.factorizations, result.cg_steps, result.violation, now() - start);
+           result.factorizations, result.updates, result.cg_steps, result.violation, now() - start);
   if (result.outcome == SparseContactOutcome::modes_not_held) {
     const std::string unheld = unheld_modes_description();
     fail(MC_ERROR_SINGULAR,
@@ -412,13 +469,7 @@ bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lam
          result.iterations, options.max_iterations, result.violation, options.tolerance);
   // 4. The answer in the model's terms.
   lambda.assign(result.lambda.begin(), result.lambda.begin() + q);
-  alpha.assign(result.x.begin() + cs.mode_offset, result.x.begin() + cs.mode_offset + k);
-  for (int b = 0; b < n_bodies(); ++b) {
-    if (!system_[b]) continue;
-    const BodySystem &sys = *system_[b];
-    loads[b].v.assign(sys.stiffness.n, 0.0);
-    for (size_t i = 0; i < sys.solve_dofs.size(); ++i) loads[b].v[sys.solve_dofs[i]] = result.x[cs.column_offset[b] + i];
-  }
+  sparse_displacements(result.x, loads, alpha);
   infos.complementarity = result.violation;
   // The next solve starts from the set this one ended on, which is the factorized one: a
   // re-solve whose active set does not change factorizes nothing.
