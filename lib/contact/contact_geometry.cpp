@@ -1,4 +1,5 @@
 #include "contact/contact_geometry.hpp"
+#include "contact/points_between_lines.hpp"
 #include "bodies/cell_shapes.hpp"
 #include "support/error.hpp"
 #include "mortarcontact.h"
@@ -7,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <utility>
 #include <string>
 
 namespace mc {
@@ -183,6 +185,15 @@ void add_quadrature(const FaceContext &f, const CoveredPiece &p, double t0, doub
   }
 }
 
+// Room for each element's quadrature points (f.points per piece, element_of[i] piece i's):
+// grown point by point, a long interface's hundred thousand of them were copied into fresh
+// memory again and again (docs/notes/contact-geometry-cost.md).
+void reserve_points(const FaceContext &f, const std::vector<int> &element_of, ContactRun &run) {
+  std::vector<int> pieces(run.elements.size(), 0);
+  for (int e : element_of) ++pieces[e];
+  for (size_t e = 0; e < run.elements.size(); ++e) run.elements[e].reserve(size_t(pieces[e]) * f.points);
+}
+
 // Turns one maximal covered interval of a face into a run.
 ContactRun open_run(const FaceContext &f, const std::vector<CoveredPiece> &pieces, std::vector<double> &tributary) {
   ContactRun run;
@@ -200,10 +211,16 @@ ContactRun open_run(const FaceContext &f, const std::vector<CoveredPiece> &piece
   trace_t.push_back(t_end);
   run.trace.push_back(trace_point(f, t_end, pieces.back()));
   run.elements.resize(run.trace.size() - 1);
+  std::vector<int> element_of(pieces.size());  // each piece's element
   size_t element = 0;
-  for (const CoveredPiece &p : pieces) {
-    while (element + 1 < run.elements.size() && p.t0() >= trace_t[element + 1] - kSnap) ++element;
-    add_quadrature(f, p, trace_t[element], trace_t[element + 1], run.elements[element], tributary);
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    while (element + 1 < run.elements.size() && pieces[i].t0() >= trace_t[element + 1] - kSnap) ++element;
+    element_of[i] = int(element);
+  }
+  reserve_points(f, element_of, run);
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    const int e = element_of[i];
+    add_quadrature(f, pieces[i], trace_t[e], trace_t[e + 1], run.elements[e], tributary);
   }
   return run;
 }
@@ -213,12 +230,15 @@ ContactRun closed_run(const FaceContext &f, const std::vector<CoveredPiece> &pie
   ContactRun run;
   run.closed = true;
   run.elements.resize(f.edges);
+  size_t first_on_edge = 0;  // the pieces come along the face: edge k's first piece (a scan of all cost O(edges^2))
   for (int k = 0; k < f.edges; ++k) {
-    const CoveredPiece *adjacent = &pieces.front();
-    for (const CoveredPiece &p : pieces)
-      if (p.k == k) { adjacent = &p; break; }
-    run.trace.push_back(trace_point(f, k, *adjacent));
+    while (first_on_edge < pieces.size() && pieces[first_on_edge].k < k) ++first_on_edge;
+    const bool on_edge = first_on_edge < pieces.size() && pieces[first_on_edge].k == k;
+    run.trace.push_back(trace_point(f, k, on_edge ? pieces[first_on_edge] : pieces.front()));
   }
+  std::vector<int> element_of(pieces.size());  // element k: edge k
+  for (size_t i = 0; i < pieces.size(); ++i) element_of[i] = pieces[i].k;
+  reserve_points(f, element_of, run);
   for (const CoveredPiece &p : pieces) add_quadrature(f, p, p.k, p.k + 1, run.elements[p.k], tributary);
   return run;
 }
@@ -426,14 +446,16 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
 
   // Segmentation of each body-1 segment: breakpoints where body-2 nodes project, then each
   // piece facing one body-2 segment (tested at its midpoint).
-  std::vector<Point> body2_points;
-  {
-    std::vector<int> ids;
-    for (const CurveSegment &c : curve2.segments()) ids.push_back(c.a), ids.push_back(c.b);
-    std::sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    for (int id : ids) body2_points.push_back(body2.node(id));
-  }
+  // Body 2's nodes (each once) in surface order, so that the tree's boxes are short pieces of it.
+  const PointsBetweenLines body2_points = [&] {
+    std::vector<char> taken(body2.n_nodes(), 0);
+    std::vector<Point> points;
+    for (const CurveSegment &c : curve2.segments())
+      for (int id : {c.a, c.b})
+        if (!taken[id]) taken[id] = 1, points.push_back(body2.node(id));
+    return PointsBetweenLines(std::move(points));
+  }();
+  std::vector<Point> between;
   g.tributary.assign(n, 0.0);
   for (int face = 0; face < int(curve1.faces().size()); ++face) {
     const SurfaceFace &sf = curve1.faces()[face];
@@ -448,12 +470,10 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
       const int seg = curve1.segment_of(face, k);
       std::vector<double> breaks{0.0, 1.0};
       // A body-2 node can project inside the segment only if it lies between the look lines
-      // of the segment's ends (a sign change of the bracketing function): a cheap test first.
+      // of the segment's ends (a sign change of the bracketing function).
       const Point xa = curve1.segments()[seg].pa, xb = curve1.segments()[seg].pb;
-      const Point na = look(seg, 0), nb = look(seg, 1);
-      for (Point y : body2_points) {
-        const double fa = cross(minus(y, xa), na), fb = cross(minus(y, xb), nb);
-        if (fa == 0 || fb == 0 || (fa > 0) == (fb > 0)) continue;
+      body2_points.find(xa, look(seg, 0), xb, look(seg, 1), between);
+      for (Point y : between) {
         double xi;
         if (inverse_projection(curve1, seg, look, y, xi)) breaks.push_back(xi);
       }
@@ -469,7 +489,7 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
         hint = mortar;
       }
     }
-    runs_of_face(context, pieces, g.runs, g.tributary);
+    runs_of_face(context, std::move(pieces), g.runs, g.tributary);
   }
 
   return g;

@@ -210,6 +210,7 @@ void hermite_derivative(double s, double h[4]) {
 SurfaceCurve::SurfaceCurve(const Mesh &mesh, const std::vector<SurfaceSegment> &segments, const SurfaceOptions &options)
     : smooth_(options.smooth) {
   const double feature = options.feature_angle_degrees * kPi / 180;
+  segments_.reserve(segments.size());  // one per edge (a long surface's, grown, were copied and copied)
   for (const Chain &chain : chains_of(segments))
     for (SurfaceFace &face : faces_of(mesh, chain, smooth_, feature)) {
       face_normals(mesh, face, smooth_);
