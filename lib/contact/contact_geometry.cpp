@@ -18,19 +18,30 @@ namespace {
 // The direction along which body 1 looks for body 2 at (segment, parameter) of its curve.
 using LookDirection = std::function<Point(int, double)>;
 
+// The distance from p to body-2 segment `segment` (a straight edge) and the edge's outward
+// normal n2; false if the edge does not face `facing` (n2 . facing >= 0).
+bool facing_edge(Point p, Point facing, const Mesh &body2, const SurfaceSegment &segment, double &distance, Point &n2) {
+  Point a = body2.node(segment.a), b = body2.node(segment.b), e = minus(b, a);
+  n2 = edge_normal(a, b);
+  if (facing.x * n2.x + facing.y * n2.y >= 0) return false;
+  double eta = std::clamp(((p.x - a.x) * e.x + (p.y - a.y) * e.y) / (e.x * e.x + e.y * e.y), 0.0, 1.0);
+  Point foot = lerp(a, b, eta);
+  distance = std::hypot(p.x - foot.x, p.y - foot.y);
+  return true;
+}
+
 // Minus body 2's outward normal at the point of its surface closest to p, among the segments
 // facing p's own normal; at a vertex of body 2, the mean of its two edges' normals. Keeps
-// `fallback` if no segment faces p.
-Point mortar_side_normal(Point p, Point fallback, const Mesh &body2, const std::vector<SurfaceSegment> &segments) {
+// `fallback` if no segment faces p. Scans segments[k] for k in `scan` (ascending): every
+// segment, or those that decide the answer (deciding_segments).
+Point mortar_side_normal(Point p, Point fallback, const Mesh &body2, const std::vector<SurfaceSegment> &segments,
+                         const std::vector<int> &scan) {
   double best = kNoGap;
   Point result = fallback;
-  for (size_t s = 0; s < segments.size(); ++s) {
-    Point a = body2.node(segments[s].a), b = body2.node(segments[s].b), e = minus(b, a);
-    Point n2 = edge_normal(a, b);
-    if (fallback.x * n2.x + fallback.y * n2.y >= 0) continue;
-    double eta = std::clamp(((p.x - a.x) * e.x + (p.y - a.y) * e.y) / (e.x * e.x + e.y * e.y), 0.0, 1.0);
-    Point foot = lerp(a, b, eta);
-    double distance = std::hypot(p.x - foot.x, p.y - foot.y);
+  for (int s : scan) {
+    double distance;
+    Point n2;
+    if (!facing_edge(p, fallback, body2, segments[s], distance, n2)) continue;
     if (distance < best * (1 - 1e-12)) {
       best = distance;
       result = {-n2.x, -n2.y};
@@ -39,6 +50,51 @@ Point mortar_side_normal(Point p, Point fallback, const Mesh &body2, const std::
     }
   }
   return result;
+}
+
+// The segments (ascending) whose scan gives mortar_side_normal's answer at p, from the curve's
+// grid (curve2: the same straight edges, its segment k being segments[input_of[k]]): a scan of
+// every segment for every position cost O(n1 n2). With b the distance of the nearest facing
+// one, those nearer than R are kept, R in [b (1 + 1e-9), b (1 + 2e-9)] chosen so that no
+// segment's distance is within 1e-11 R of it. The others are farther than R (1 + 1e-11): wherever
+// the full scan meets them, they can neither beat nor tie (tolerance 1e-12) a kept one, and what
+// they leave before the first kept one is reset by it. So the scan of the kept ones, in the same
+// order, ends in the same state, bit for bit. (b = 0: R = 0, the segments through p.) Every
+// segment if no such R is found (dozens of edges equally far from p: a circle about it).
+void deciding_segments(Point p, Point facing, const Mesh &body2, const std::vector<SurfaceSegment> &segments,
+                       const SurfaceCurve &curve2, const std::vector<int> &input_of, std::vector<int> &near,
+                       std::vector<int> &kept) {
+  kept.clear();
+  int seg;
+  double s;
+  if (!curve2.closest_point(p, facing, seg, s)) return;  // none faces p: the fallback
+  const double b = norm(minus(curve2.point(seg, s), p));
+  if (!std::isfinite(b)) {  // (coordinates near overflow: the scan of every segment)
+    for (size_t k = 0; k < segments.size(); ++k) kept.push_back(int(k));
+    return;
+  }
+  // (a foot's round-off can put it a little outside its edge's box: a margin of the coordinates' size)
+  curve2.segments_near(p, b * (1 + 3e-9) + 1e-12 * (std::fabs(p.x) + std::fabs(p.y)), near);
+  std::vector<std::pair<int, double>> facing_near;  // (segment, distance)
+  for (int k : near) {
+    double distance;
+    Point n2;
+    if (facing_edge(p, facing, body2, segments[input_of[k]], distance, n2)) facing_near.emplace_back(input_of[k], distance);
+  }
+  double r = b * (1 + 1e-9);
+  for (bool clear = b == 0; !clear;) {
+    clear = true;
+    for (const auto &f : facing_near)
+      if (std::fabs(f.second - r) <= 1e-11 * r) clear = false;
+    if (!clear) r *= 1 + 3e-11;
+    if (!(r <= b * (1 + 2e-9))) {  // (no room: the scan of every segment)
+      for (size_t k = 0; k < segments.size(); ++k) kept.push_back(int(k));
+      return;
+    }
+  }
+  for (const auto &f : facing_near)
+    if (f.second <= r) kept.push_back(f.first);
+  std::sort(kept.begin(), kept.end());
 }
 
 // The xi in (0,1) at which the look direction of body-1 segment `seg` passes through y:
@@ -397,11 +453,20 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
     g.segment_positions[seg] = {pa, pb, c.quadratic() ? pa + 1 : -1};
   }
   const size_t n = g.nodes.size();
+  std::vector<int> input_of, near, kept;  // (mortar_side_normal's: curve2's segment k is surface2[input_of[k]])
+  if (normal_choice == MC_NORMAL_MORTAR && !curve2.smooth() && !quadratic_mortar) {
+    std::vector<std::pair<std::pair<int, int>, int>> by_ends;
+    for (size_t i = 0; i < surface2.size(); ++i) by_ends.push_back({{surface2[i].a, surface2[i].b}, int(i)});
+    std::sort(by_ends.begin(), by_ends.end());
+    for (const CurveSegment &c : curve2.segments())
+      input_of.push_back(std::lower_bound(by_ends.begin(), by_ends.end(), std::make_pair(std::make_pair(c.a, c.b), -1))->second);
+  }
   if (normal_choice == MC_NORMAL_MORTAR)
     for (size_t j = 0; j < n; ++j) {
       Point p = body1.node(g.nodes[j]);
       if (!curve2.smooth() && !quadratic_mortar) {
-        g.normals[j] = mortar_side_normal(p, g.normals[j], body2, surface2);
+        deciding_segments(p, g.normals[j], body2, surface2, curve2, input_of, near, kept);
+        g.normals[j] = mortar_side_normal(p, g.normals[j], body2, surface2, kept);
         continue;
       }
       int seg;

@@ -484,6 +484,16 @@ bool SurfaceCurve::cast(Point p, Point n, int &seg, double &s, double &t, int hi
   return found;
 }
 
+void SurfaceCurve::segments_near(Point p, double radius, std::vector<int> &found) const {
+  found.clear();
+  visit_near(
+      p,
+      [&](int k) {
+        if (box_distance(k, p) <= radius) found.push_back(k);
+      },
+      [&](double distance) { return distance <= radius; });
+}
+
 bool SurfaceCurve::closest_point(Point p, Point facing, int &seg, double &s) const {
   double best = 1e300;
   bool found = false;
