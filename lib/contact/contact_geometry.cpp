@@ -1,4 +1,5 @@
 #include "contact/contact_geometry.hpp"
+#include "contact/points_between_lines.hpp"
 #include "bodies/cell_shapes.hpp"
 #include "support/error.hpp"
 #include "mortarcontact.h"
@@ -7,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <utility>
 #include <string>
 
 namespace mc {
@@ -16,19 +18,30 @@ namespace {
 // The direction along which body 1 looks for body 2 at (segment, parameter) of its curve.
 using LookDirection = std::function<Point(int, double)>;
 
+// The distance from p to body-2 segment `segment` (a straight edge) and the edge's outward
+// normal n2; false if the edge does not face `facing` (n2 . facing >= 0).
+bool facing_edge(Point p, Point facing, const Mesh &body2, const SurfaceSegment &segment, double &distance, Point &n2) {
+  Point a = body2.node(segment.a), b = body2.node(segment.b), e = minus(b, a);
+  n2 = edge_normal(a, b);
+  if (facing.x * n2.x + facing.y * n2.y >= 0) return false;
+  double eta = std::clamp(((p.x - a.x) * e.x + (p.y - a.y) * e.y) / (e.x * e.x + e.y * e.y), 0.0, 1.0);
+  Point foot = lerp(a, b, eta);
+  distance = std::hypot(p.x - foot.x, p.y - foot.y);
+  return true;
+}
+
 // Minus body 2's outward normal at the point of its surface closest to p, among the segments
 // facing p's own normal; at a vertex of body 2, the mean of its two edges' normals. Keeps
-// `fallback` if no segment faces p.
-Point mortar_side_normal(Point p, Point fallback, const Mesh &body2, const std::vector<SurfaceSegment> &segments) {
+// `fallback` if no segment faces p. Scans segments[k] for k in `scan` (ascending): every
+// segment, or those that decide the answer (deciding_segments).
+Point mortar_side_normal(Point p, Point fallback, const Mesh &body2, const std::vector<SurfaceSegment> &segments,
+                         const std::vector<int> &scan) {
   double best = kNoGap;
   Point result = fallback;
-  for (size_t s = 0; s < segments.size(); ++s) {
-    Point a = body2.node(segments[s].a), b = body2.node(segments[s].b), e = minus(b, a);
-    Point n2 = edge_normal(a, b);
-    if (fallback.x * n2.x + fallback.y * n2.y >= 0) continue;
-    double eta = std::clamp(((p.x - a.x) * e.x + (p.y - a.y) * e.y) / (e.x * e.x + e.y * e.y), 0.0, 1.0);
-    Point foot = lerp(a, b, eta);
-    double distance = std::hypot(p.x - foot.x, p.y - foot.y);
+  for (int s : scan) {
+    double distance;
+    Point n2;
+    if (!facing_edge(p, fallback, body2, segments[s], distance, n2)) continue;
     if (distance < best * (1 - 1e-12)) {
       best = distance;
       result = {-n2.x, -n2.y};
@@ -37,6 +50,51 @@ Point mortar_side_normal(Point p, Point fallback, const Mesh &body2, const std::
     }
   }
   return result;
+}
+
+// The segments (ascending) whose scan gives mortar_side_normal's answer at p, from the curve's
+// grid (curve2: the same straight edges, its segment k being segments[input_of[k]]): a scan of
+// every segment for every position cost O(n1 n2). With b the distance of the nearest facing
+// one, those nearer than R are kept, R in [b (1 + 1e-9), b (1 + 2e-9)] chosen so that no
+// segment's distance is within 1e-11 R of it. The others are farther than R (1 + 1e-11): wherever
+// the full scan meets them, they can neither beat nor tie (tolerance 1e-12) a kept one, and what
+// they leave before the first kept one is reset by it. So the scan of the kept ones, in the same
+// order, ends in the same state, bit for bit. (b = 0: R = 0, the segments through p.) Every
+// segment if no such R is found (dozens of edges equally far from p: a circle about it).
+void deciding_segments(Point p, Point facing, const Mesh &body2, const std::vector<SurfaceSegment> &segments,
+                       const SurfaceCurve &curve2, const std::vector<int> &input_of, std::vector<int> &near,
+                       std::vector<int> &kept) {
+  kept.clear();
+  int seg;
+  double s;
+  if (!curve2.closest_point(p, facing, seg, s)) return;  // none faces p: the fallback
+  const double b = norm(minus(curve2.point(seg, s), p));
+  if (!std::isfinite(b)) {  // (coordinates near overflow: the scan of every segment)
+    for (size_t k = 0; k < segments.size(); ++k) kept.push_back(int(k));
+    return;
+  }
+  // (a foot's round-off can put it a little outside its edge's box: a margin of the coordinates' size)
+  curve2.segments_near(p, b * (1 + 3e-9) + 1e-12 * (std::fabs(p.x) + std::fabs(p.y)), near);
+  std::vector<std::pair<int, double>> facing_near;  // (segment, distance)
+  for (int k : near) {
+    double distance;
+    Point n2;
+    if (facing_edge(p, facing, body2, segments[input_of[k]], distance, n2)) facing_near.emplace_back(input_of[k], distance);
+  }
+  double r = b * (1 + 1e-9);
+  for (bool clear = b == 0; !clear;) {
+    clear = true;
+    for (const auto &f : facing_near)
+      if (std::fabs(f.second - r) <= 1e-11 * r) clear = false;
+    if (!clear) r *= 1 + 3e-11;
+    if (!(r <= b * (1 + 2e-9))) {  // (no room: the scan of every segment)
+      for (size_t k = 0; k < segments.size(); ++k) kept.push_back(int(k));
+      return;
+    }
+  }
+  for (const auto &f : facing_near)
+    if (f.second <= r) kept.push_back(f.first);
+  std::sort(kept.begin(), kept.end());
 }
 
 // The xi in (0,1) at which the look direction of body-1 segment `seg` passes through y:
@@ -183,6 +241,15 @@ void add_quadrature(const FaceContext &f, const CoveredPiece &p, double t0, doub
   }
 }
 
+// Room for each element's quadrature points (f.points per piece, element_of[i] piece i's):
+// grown point by point, a long interface's hundred thousand of them were copied into fresh
+// memory again and again (docs/notes/contact-geometry-cost.md).
+void reserve_points(const FaceContext &f, const std::vector<int> &element_of, ContactRun &run) {
+  std::vector<int> pieces(run.elements.size(), 0);
+  for (int e : element_of) ++pieces[e];
+  for (size_t e = 0; e < run.elements.size(); ++e) run.elements[e].reserve(size_t(pieces[e]) * f.points);
+}
+
 // Turns one maximal covered interval of a face into a run.
 ContactRun open_run(const FaceContext &f, const std::vector<CoveredPiece> &pieces, std::vector<double> &tributary) {
   ContactRun run;
@@ -200,10 +267,16 @@ ContactRun open_run(const FaceContext &f, const std::vector<CoveredPiece> &piece
   trace_t.push_back(t_end);
   run.trace.push_back(trace_point(f, t_end, pieces.back()));
   run.elements.resize(run.trace.size() - 1);
+  std::vector<int> element_of(pieces.size());  // each piece's element
   size_t element = 0;
-  for (const CoveredPiece &p : pieces) {
-    while (element + 1 < run.elements.size() && p.t0() >= trace_t[element + 1] - kSnap) ++element;
-    add_quadrature(f, p, trace_t[element], trace_t[element + 1], run.elements[element], tributary);
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    while (element + 1 < run.elements.size() && pieces[i].t0() >= trace_t[element + 1] - kSnap) ++element;
+    element_of[i] = int(element);
+  }
+  reserve_points(f, element_of, run);
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    const int e = element_of[i];
+    add_quadrature(f, pieces[i], trace_t[e], trace_t[e + 1], run.elements[e], tributary);
   }
   return run;
 }
@@ -213,12 +286,15 @@ ContactRun closed_run(const FaceContext &f, const std::vector<CoveredPiece> &pie
   ContactRun run;
   run.closed = true;
   run.elements.resize(f.edges);
+  size_t first_on_edge = 0;  // the pieces come along the face: edge k's first piece (a scan of all cost O(edges^2))
   for (int k = 0; k < f.edges; ++k) {
-    const CoveredPiece *adjacent = &pieces.front();
-    for (const CoveredPiece &p : pieces)
-      if (p.k == k) { adjacent = &p; break; }
-    run.trace.push_back(trace_point(f, k, *adjacent));
+    while (first_on_edge < pieces.size() && pieces[first_on_edge].k < k) ++first_on_edge;
+    const bool on_edge = first_on_edge < pieces.size() && pieces[first_on_edge].k == k;
+    run.trace.push_back(trace_point(f, k, on_edge ? pieces[first_on_edge] : pieces.front()));
   }
+  std::vector<int> element_of(pieces.size());  // element k: edge k
+  for (size_t i = 0; i < pieces.size(); ++i) element_of[i] = pieces[i].k;
+  reserve_points(f, element_of, run);
   for (const CoveredPiece &p : pieces) add_quadrature(f, p, p.k, p.k + 1, run.elements[p.k], tributary);
   return run;
 }
@@ -377,11 +453,20 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
     g.segment_positions[seg] = {pa, pb, c.quadratic() ? pa + 1 : -1};
   }
   const size_t n = g.nodes.size();
+  std::vector<int> input_of, near, kept;  // (mortar_side_normal's: curve2's segment k is surface2[input_of[k]])
+  if (normal_choice == MC_NORMAL_MORTAR && !curve2.smooth() && !quadratic_mortar) {
+    std::vector<std::pair<std::pair<int, int>, int>> by_ends;
+    for (size_t i = 0; i < surface2.size(); ++i) by_ends.push_back({{surface2[i].a, surface2[i].b}, int(i)});
+    std::sort(by_ends.begin(), by_ends.end());
+    for (const CurveSegment &c : curve2.segments())
+      input_of.push_back(std::lower_bound(by_ends.begin(), by_ends.end(), std::make_pair(std::make_pair(c.a, c.b), -1))->second);
+  }
   if (normal_choice == MC_NORMAL_MORTAR)
     for (size_t j = 0; j < n; ++j) {
       Point p = body1.node(g.nodes[j]);
       if (!curve2.smooth() && !quadratic_mortar) {
-        g.normals[j] = mortar_side_normal(p, g.normals[j], body2, surface2);
+        deciding_segments(p, g.normals[j], body2, surface2, curve2, input_of, near, kept);
+        g.normals[j] = mortar_side_normal(p, g.normals[j], body2, surface2, kept);
         continue;
       }
       int seg;
@@ -426,14 +511,16 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
 
   // Segmentation of each body-1 segment: breakpoints where body-2 nodes project, then each
   // piece facing one body-2 segment (tested at its midpoint).
-  std::vector<Point> body2_points;
-  {
-    std::vector<int> ids;
-    for (const CurveSegment &c : curve2.segments()) ids.push_back(c.a), ids.push_back(c.b);
-    std::sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    for (int id : ids) body2_points.push_back(body2.node(id));
-  }
+  // Body 2's nodes (each once) in surface order, so that the tree's boxes are short pieces of it.
+  const PointsBetweenLines body2_points = [&] {
+    std::vector<char> taken(body2.n_nodes(), 0);
+    std::vector<Point> points;
+    for (const CurveSegment &c : curve2.segments())
+      for (int id : {c.a, c.b})
+        if (!taken[id]) taken[id] = 1, points.push_back(body2.node(id));
+    return PointsBetweenLines(std::move(points));
+  }();
+  std::vector<Point> between;
   g.tributary.assign(n, 0.0);
   for (int face = 0; face < int(curve1.faces().size()); ++face) {
     const SurfaceFace &sf = curve1.faces()[face];
@@ -448,12 +535,10 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
       const int seg = curve1.segment_of(face, k);
       std::vector<double> breaks{0.0, 1.0};
       // A body-2 node can project inside the segment only if it lies between the look lines
-      // of the segment's ends (a sign change of the bracketing function): a cheap test first.
+      // of the segment's ends (a sign change of the bracketing function).
       const Point xa = curve1.segments()[seg].pa, xb = curve1.segments()[seg].pb;
-      const Point na = look(seg, 0), nb = look(seg, 1);
-      for (Point y : body2_points) {
-        const double fa = cross(minus(y, xa), na), fb = cross(minus(y, xb), nb);
-        if (fa == 0 || fb == 0 || (fa > 0) == (fb > 0)) continue;
+      body2_points.find(xa, look(seg, 0), xb, look(seg, 1), between);
+      for (Point y : between) {
         double xi;
         if (inverse_projection(curve1, seg, look, y, xi)) breaks.push_back(xi);
       }
@@ -469,7 +554,7 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
         hint = mortar;
       }
     }
-    runs_of_face(context, pieces, g.runs, g.tributary);
+    runs_of_face(context, std::move(pieces), g.runs, g.tributary);
   }
 
   return g;

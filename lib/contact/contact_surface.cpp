@@ -210,6 +210,7 @@ void hermite_derivative(double s, double h[4]) {
 SurfaceCurve::SurfaceCurve(const Mesh &mesh, const std::vector<SurfaceSegment> &segments, const SurfaceOptions &options)
     : smooth_(options.smooth) {
   const double feature = options.feature_angle_degrees * kPi / 180;
+  segments_.reserve(segments.size());  // one per edge (a long surface's, grown, were copied and copied)
   for (const Chain &chain : chains_of(segments))
     for (SurfaceFace &face : faces_of(mesh, chain, smooth_, feature)) {
       face_normals(mesh, face, smooth_);
@@ -481,6 +482,16 @@ bool SurfaceCurve::cast(Point p, Point n, int &seg, double &s, double &t, int hi
       },
       [&](double distance) { return !found || distance <= std::fabs(best) * (1 + 1e-12); });
   return found;
+}
+
+void SurfaceCurve::segments_near(Point p, double radius, std::vector<int> &found) const {
+  found.clear();
+  visit_near(
+      p,
+      [&](int k) {
+        if (box_distance(k, p) <= radius) found.push_back(k);
+      },
+      [&](double distance) { return distance <= radius; });
 }
 
 bool SurfaceCurve::closest_point(Point p, Point facing, int &seg, double &s) const {

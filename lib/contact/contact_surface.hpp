@@ -96,6 +96,9 @@ public:
   bool cast(Point p, Point n, int &seg, double &s, double &t, int hint = -1) const;
   // The point of the surface closest to p among segments facing against `facing`.
   bool closest_point(Point p, Point facing, int &seg, double &s) const;
+  // The segments whose boxes come within `radius` of p (each once, in no particular order), into
+  // `found` (cleared first).
+  void segments_near(Point p, double radius, std::vector<int> &found) const;
 
 private:
   // Distance from p to segment seg's box: a lower bound of the distance to its curve.

@@ -74,11 +74,12 @@ void append_pointwise_row(const ContactGeometry &g, ConstraintRows &rows, const 
 // Solves the tridiagonal system rows first..last of (lower, diag, upper) for nc right-hand
 // sides stored row-major in rhs (Thomas algorithm; D is diagonally dominant on a covered run).
 // Returns the row of a vanishing pivot, or -1.
+// c_prime: scratch, resized here (a caller solving many small systems keeps one).
 int solve_tridiagonal(const std::vector<double> &lower, const std::vector<double> &diag, const std::vector<double> &upper,
-                      int first, int last, int nc, std::vector<double> &rhs) {
+                      int first, int last, int nc, std::vector<double> &rhs, std::vector<double> &c_prime) {
   double scale = 0;
   for (int i = first; i <= last; ++i) scale = std::max(scale, std::fabs(diag[i]));
-  std::vector<double> c_prime(diag.size(), 0.0);
+  c_prime.assign(diag.size(), 0.0);
   for (int i = first; i <= last; ++i) {
     const double pivot = diag[i] - (i > first ? lower[i] * c_prime[i - 1] : 0);
     if (!(std::fabs(pivot) > 1e-12 * scale)) return i;
@@ -105,9 +106,10 @@ int solve_cyclic_tridiagonal(std::vector<double> lower, std::vector<double> diag
   lower[0] = 0, upper[n - 1] = 0;
   std::vector<double> z(n, 0.0);
   z[0] = gamma, z[n - 1] = bottom_left;
-  int bad = solve_tridiagonal(lower, diag, upper, 0, n - 1, nc, rhs);
+  std::vector<double> c_prime;
+  int bad = solve_tridiagonal(lower, diag, upper, 0, n - 1, nc, rhs, c_prime);
   if (bad >= 0) return bad;
-  solve_tridiagonal(lower, diag, upper, 0, n - 1, 1, z);
+  solve_tridiagonal(lower, diag, upper, 0, n - 1, 1, z, c_prime);
   const double denominator = 1 + z[0] + top_right * z[n - 1] / gamma;
   for (int c = 0; c < nc; ++c) {
     const double factor = (rhs[c] + top_right * rhs[size_t(n - 1) * nc + c] / gamma) / denominator;
@@ -116,18 +118,61 @@ int solve_cyclic_tridiagonal(std::vector<double> lower, std::vector<double> diag
   return -1;
 }
 
+// Room in v for `more` entries after its own, at least doubling its capacity (a run after run
+// reserving just what it needs would copy the arrays once per run).
+template <class T> void make_room(std::vector<T> &v, size_t more) {
+  if (v.size() + more > v.capacity()) v.reserve(std::max(v.size() + more, 2 * v.capacity()));
+}
+
 // A sparse row: (column, value), columns ascending and distinct once merged.
 using SparseRow = std::vector<std::pair<int, double>>;
 
-void merge(SparseRow &row) {
-  std::sort(row.begin(), row.end());
-  size_t kept = 0;
-  for (size_t i = 0; i < row.size(); ++i) {
-    if (kept > 0 && row[kept - 1].first == row[i].first) row[kept - 1].second += row[i].second;
-    else row[kept++] = row[i];
+// Sums of terms per column, as a row's terms are merged: the columns ascending, each column's
+// terms added in ascending order of value (the order of sorting the (column, value) pairs and
+// summing equal columns left to right, which the rows were first built with: the same sums, bit
+// for bit). A row of pi_h collects some 300 terms over some 100 body-2 nodes: sorting them all
+// took a third of the 16001-node strips' operators; here each term goes to its column's slot,
+// and only a column's few terms, and the columns, are sorted (the columns mostly come in order).
+class ColumnSums {
+public:
+  explicit ColumnSums(int columns) : slot_(columns, -1) {}
+  void add(int column, double value) {
+    int &slot = slot_[column];
+    if (slot < 0) slot = int(column_.size()), column_.push_back(column);
+    term_.emplace_back(slot, value);
   }
-  row.resize(kept);
-}
+  // The row so far into `row` (replaced), and a fresh start.
+  void take(SparseRow &row) {
+    const int n = int(column_.size());
+    start_.assign(n + 1, 0);
+    for (const auto &t : term_) ++start_[t.first + 1];
+    for (int c = 0; c < n; ++c) start_[c + 1] += start_[c];
+    next_.assign(start_.begin(), start_.end() - 1);
+    value_.resize(term_.size());
+    for (const auto &t : term_) value_[next_[t.first]++] = t.second;
+    order_.resize(n);
+    for (int c = 0; c < n; ++c) order_[c] = c;
+    auto by_column = [&](int a, int b) { return column_[a] < column_[b]; };
+    if (!std::is_sorted(order_.begin(), order_.end(), by_column)) std::sort(order_.begin(), order_.end(), by_column);
+    row.clear();
+    for (int c : order_) {
+      double *first = value_.data() + start_[c], *last = value_.data() + start_[c + 1];
+      std::sort(first, last);
+      double sum = *first;
+      for (const double *v = first + 1; v < last; ++v) sum += *v;
+      row.emplace_back(column_[c], sum);
+      slot_[column_[c]] = -1;
+    }
+    column_.clear(), term_.clear();
+  }
+
+private:
+  std::vector<int> slot_;                      // per column: its slot in the row being summed, or -1
+  std::vector<int> column_;                    // per slot: its column
+  std::vector<std::pair<int, double>> term_;   // (slot, value) as added
+  std::vector<int> start_, next_, order_;
+  std::vector<double> value_;                  // the terms slot after slot
+};
 
 // Row k of D^-1 (D tridiagonal: lower, diag, upper; cyclic on a closed run), restricted to the
 // points whose entries are not round-off: D is diagonally dominant (a mass matrix on the trace,
@@ -135,15 +180,24 @@ void merge(SparseRow &row) {
 // point) and a window of points around k gives it to full precision. The window grows until
 // its ends are below 1e-20 of the largest entry, or it covers the run. Interior points
 // first..last (open run) or all n (closed). Cost: O(window) per row, where solving D with one
-// right-hand side per column of M cost O(n) per column, O(n^2) for a long run.
-SparseRow inverse_row(const std::vector<double> &lower, const std::vector<double> &diag, const std::vector<double> &upper,
-                      int first, int last, bool closed, int k) {
+// right-hand side per column of M cost O(n) per column, O(n^2) for a long run. Into `row`.
+// `work`: the window's scratch, kept from row to row (a long run has thousands of rows).
+struct InverseRowWork {
+  std::vector<int> point;
+  std::vector<double> lo, di, up, z, c_prime;
+};
+
+void inverse_row(const std::vector<double> &lower, const std::vector<double> &diag, const std::vector<double> &upper,
+                 int first, int last, bool closed, int k, InverseRowWork &work, SparseRow &row) {
   const int n = last - first + 1;
+  row.clear();
+  std::vector<int> &point = work.point;
+  std::vector<double> &lo = work.lo, &di = work.di, &up = work.up, &z = work.z;
   for (int half = 24;; half *= 2) {
     const bool whole = 2 * half + 1 >= n;
     // Row k of D^-1 is the solution of D^T z = e_k. Window: positions k - half .. k + half
     // (mod n on a loop), or the whole run.
-    std::vector<int> point;
+    point.clear();
     if (whole) {
       for (int i = first; i <= last; ++i) point.push_back(i);
     } else if (closed) {
@@ -153,7 +207,7 @@ SparseRow inverse_row(const std::vector<double> &lower, const std::vector<double
     }
     const int m = int(point.size());
     // D^T restricted to the window: (D^T)_{i,i-1} = upper[i-1], (D^T)_{i,i+1} = lower[i+1].
-    std::vector<double> lo(m, 0.0), di(m), up(m, 0.0), z(m, 0.0);
+    lo.assign(m, 0.0), di.assign(m, 0.0), up.assign(m, 0.0), z.assign(m, 0.0);
     for (int j = 0; j < m; ++j) {
       const int i = point[j];
       di[j] = diag[i];
@@ -164,24 +218,24 @@ SparseRow inverse_row(const std::vector<double> &lower, const std::vector<double
     }
     int bad;
     if (whole && closed) bad = solve_cyclic_tridiagonal(lo, di, up, 1, z);
-    else bad = solve_tridiagonal(lo, di, up, 0, m - 1, 1, z);
-    if (bad >= 0) return {};  // the caller has checked D's pivots over the whole run
+    else bad = solve_tridiagonal(lo, di, up, 0, m - 1, 1, z, work.c_prime);
+    if (bad >= 0) return;  // (empty) the caller has checked D's pivots over the whole run
     double largest = 0;
     for (double v : z) largest = std::max(largest, std::fabs(v));
     const bool converged = whole || ((closed || point.front() == first || std::fabs(z.front()) <= 1e-20 * largest) &&
                                      (closed || point.back() == last || std::fabs(z.back()) <= 1e-20 * largest) &&
                                      (!closed || std::max(std::fabs(z.front()), std::fabs(z.back())) <= 1e-20 * largest));
     if (!converged) continue;
-    SparseRow row;
     for (int j = 0; j < m; ++j)
       if (z[j] != 0) row.emplace_back(point[j], z[j]);
-    return row;
+    return;
   }
 }
 
 // Rows of one run for the mortar methods: the paper's pi_h^1 (3.2).
+// sums: a ColumnSums over body 2's nodes, inverse: scratch, both kept from run to run.
 void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, const LineMeasure &measure,
-                 ConstraintRows &rows) {
+                 ConstraintRows &rows, ColumnSums &sums, InverseRowWork &inverse) {
   const int n = int(run.trace.size());
   const bool closed = run.closed;
   // End rows: (pi phi)(c_i) = phi(c_i), i.e. interpolation at the projection of c_1, c_2.
@@ -225,12 +279,15 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, co
     for (auto &[node, value] : end_row[0]) r[1].emplace_back(node, -lower[1] * value);
     for (auto &[node, value] : end_row[1]) r[n - 2].emplace_back(node, -upper[n - 2] * value);
   }
-  for (SparseRow &row : r) merge(row);
+  for (SparseRow &row : r) {
+    for (const auto &[node, value] : row) sums.add(node, value);
+    sums.take(row);
+  }
   // D's pivots over the whole run (no right-hand side): a vanishing one is an error.
   const int first = closed ? 0 : 1, last = closed ? n - 1 : n - 2;
   std::vector<double> none;
   const int singular = closed ? solve_cyclic_tridiagonal(lower, diag, upper, 0, none)
-                              : solve_tridiagonal(lower, diag, upper, first, last, 0, none);
+                              : solve_tridiagonal(lower, diag, upper, first, last, 0, none, inverse.c_prime);
   if (singular >= 0)
     fail(MC_ERROR_CONTACT,
          "the mortar matrix D is singular at body-1 contact node %d: body 2's surface covers too little "
@@ -253,18 +310,26 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, co
     rows.aux_r_start.push_back(int(rows.aux_r_node.size()));
   }
   // The explicit rows pi_h = D^-1 R (row k: sum_j (D^-1)_kj R_j), for the condensed path.
+  SparseRow z_row, values;
+  auto interior_row = [&](int k) {  // into values
+    inverse_row(lower, diag, upper, first, last, closed, k, inverse, z_row);
+    for (auto &[j, z] : z_row)
+      for (auto &[node, value] : r[j]) sums.add(node, z * value);
+    sums.take(values);
+  };
+  // Room for n rows as long as the middle one (most of a long run's rows are as long; a longer
+  // one grows the arrays as before): grown row by row, they were copied into fresh memory again
+  // and again, and on a long interface first touches of new pages cost most of the operators'
+  // time (docs/notes/contact-geometry-cost.md).
+  interior_row(n / 2);
+  make_room(rows.body2_node, size_t(n) * values.size()), make_room(rows.weight2, size_t(n) * values.size());
+  std::vector<int> nodes;
+  std::vector<double> w;
   for (int k = 0; k < n; ++k) {
     const bool end = !closed && (k == 0 || k == n - 1);
-    SparseRow values;
-    if (end) {
-      values = end_row[k == 0 ? 0 : 1];
-    } else {
-      for (auto &[j, z] : inverse_row(lower, diag, upper, first, last, closed, k))
-        for (auto &[node, value] : r[j]) values.emplace_back(node, z * value);
-    }
-    merge(values);
-    std::vector<int> nodes;
-    std::vector<double> w;
+    if (end) values = end_row[k == 0 ? 0 : 1];  // (its nodes ascending and distinct: merged already)
+    else interior_row(k);
+    nodes.clear(), w.clear();
     for (auto &[node, value] : values) nodes.push_back(node), w.push_back(value);
     append_row(rows, run.trace[k], nodes.data(), w.data(), int(nodes.size()));
     if (!end) rows.aux.back() = aux0 + k;
@@ -297,6 +362,10 @@ ConstraintRows build_constraint_rows(const ContactGeometry &g, int method, int m
       }
     return rows;
   }
+  int body2_nodes = 0;  // (ids up to the largest on body 2's surface)
+  for (const CurveSegment &c : g.mortar.segments()) body2_nodes = std::max({body2_nodes, c.a + 1, c.b + 1, c.mid + 1});
+  ColumnSums sums(body2_nodes);
+  InverseRowWork inverse;
   for (const ContactRun &run : g.runs) {
     if (g.quadratic_nonmortar) {
       weak_mortar_rows(g, run, multiplier == MC_MULTIPLIER_QUADRATIC, method == MC_METHOD_DUAL_MORTAR, rows);
@@ -306,7 +375,7 @@ ConstraintRows build_constraint_rows(const ContactGeometry &g, int method, int m
     if (!run.closed && run.trace.size() <= 2) {
       for (const TracePoint &t : run.trace) append_pointwise_row(g, rows, t);
     } else {
-      mortar_rows(g, run, method, measure, rows);
+      mortar_rows(g, run, method, measure, rows, sums, inverse);
     }
     append_trace_hat_measures(run, rows);
   }

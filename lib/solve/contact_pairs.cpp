@@ -182,6 +182,26 @@ std::unique_ptr<ContactSystem> Model::build_contact_system() {
   std::vector<std::vector<int>> t_start(n, std::vector<int>{0}), t_dof(n);
   std::vector<std::vector<double>> t_value(n);
   std::vector<std::pair<int, int>> t_bodies;  // per tangential row: (non-mortar, mortar) body
+  // B's entries, at most two per weight (and as many again for the tangential rows), reserved:
+  // a long interface's B holds millions (some 60 mortar weights a row), and grown entry by entry
+  // its arrays were copied into fresh memory again and again: with first touches of new pages
+  // dear, a third of the geometry's time (docs/notes/contact-geometry-cost.md).
+  {
+    std::vector<size_t> entries(n, 0), t_entries(n, 0);
+    size_t rows = 0;
+    for (const ContactGroup &group : cs->groups) {
+      const bool friction = group_friction(group).friction_law != MC_FRICTION_NONE;
+      const size_t nonmortar = 2 * group.rows.position1.size(), mortar = 2 * group.rows.body2_node.size();
+      entries[group.nonmortar] += nonmortar, entries[group.mortar] += mortar;
+      if (friction) t_entries[group.nonmortar] += nonmortar, t_entries[group.mortar] += mortar;
+      rows += size_t(group.rows.size()) * (friction ? 2 : 1);
+    }
+    for (int b = 0; b < n; ++b) {
+      cs->b_dof[b].reserve(entries[b] + t_entries[b]), cs->b_value[b].reserve(entries[b] + t_entries[b]);
+      cs->b_start[b].reserve(rows + 1);
+      t_dof[b].reserve(t_entries[b]), t_value[b].reserve(t_entries[b]);
+    }
+  }
   for (size_t k = 0; k < cs->groups.size(); ++k) {
     ContactGroup &group = cs->groups[k];
     const ConstraintRows &rows = group.rows;
