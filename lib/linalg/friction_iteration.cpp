@@ -76,6 +76,14 @@ FrictionResult iterate_friction_states(const FrictionProblem &f, const FrictionS
         continue;
       }
       const double bound = friction_bound(f, j, lambda[r], gap[r], cn), lt = lambda[q + j], s = -gap[q + j];
+      if (f.is_prescribed(j)) {  // its slip is given: its state follows it
+        next_state[j] = std::fabs(s) <= eps * gap_ref ? FrictionState::stick
+                        : s > 0                      ? FrictionState::slip_plus
+                                                     : FrictionState::slip_minus;
+        if (next_state[j] == FrictionState::stick) ++stick;
+        else ++slip;
+        continue;
+      }
       if (f.bound[j] == 0) {  // mu = 0 or a zero Tresca bound: l_t = 0 whatever the slip's sign
         next_state[j] = FrictionState::slip_plus;
         ++slip;

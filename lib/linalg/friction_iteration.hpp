@@ -35,6 +35,13 @@ struct FrictionProblem {
   std::vector<int> law;              // MC_FRICTION_TRESCA or MC_FRICTION_COULOMB
   std::vector<double> bound;         // mu (Coulomb) or the Tresca bound as a force
   double ct = 0;                     // c_t; 0: 1 / (the largest compliance of a row)
+  // Per tangential row (or empty: none): its slip is prescribed, no unknown moves it (both
+  // sides' tangential motion held by supports there, e.g. a corner node on a support facing a
+  // supported node). Such a row is never an unknown of the linear system (its S row is zero):
+  // it sticks if its prescribed slip is zero, else slips with that slip's sign, and its force
+  // goes to the supports' reactions.
+  std::vector<char> prescribed;
+  bool is_prescribed(int j) const { return !prescribed.empty() && prescribed[j]; }
   // Whether tangential row j carries friction in the states `active` of the normal rows: a
   // Coulomb row only in contact (its bound mu l_n is 0 when open); a Tresca row always: the
   // given-bound problem of Kikuchi and Oden holds |l_t| <= g on the whole contact surface,
@@ -42,10 +49,10 @@ struct FrictionProblem {
   // couple the tangential states to the normal ones, and the iteration cycled on them).
   bool live(int j, const std::vector<char> &active) const;
   // Whether tangential row j is in the linear system of states (active, state) as an equation
-  // (s = 0): live and sticking. A live slipping row's multiplier is known instead (l_t = sign *
+  // (s = 0): live and sticking, and not prescribed. A live slipping row's multiplier is known instead (l_t = sign *
   // mu l_n, or sign * its Tresca force), an open one's is 0.
   bool sticks(int j, const std::vector<char> &active, const std::vector<FrictionState> &state) const {
-    return live(j, active) && state[j] == FrictionState::stick;
+    return live(j, active) && state[j] == FrictionState::stick && !is_prescribed(j);
   }
 };
 

@@ -84,7 +84,7 @@ bool solve_states(const DualQp &p, const FrictionProblem &f, const std::vector<c
   for (int r = 0; r < q; ++r)
     if (active[r]) index[r] = int(rows.size()), rows.push_back(r);
   for (int j = 0; j < m; ++j)
-    if (f.live(j, active) && state[j] == FrictionState::stick) index[q + j] = int(rows.size()), rows.push_back(q + j);
+    if (f.sticks(j, active, state)) index[q + j] = int(rows.size()), rows.push_back(q + j);
   const int nf = int(rows.size()), n = nf + k;
   lambda.assign(nb, 0.0);
   alpha.assign(k, 0.0);
@@ -149,7 +149,7 @@ std::vector<int> free_modes(const DualQp &p, const FrictionProblem &f, const std
   for (int r = 0; r < q; ++r)
     if (active[r]) rows.push_back(r);
   for (size_t j = 0; j < f.tangent_of.size(); ++j)
-    if (f.live(j, active) && state[j] == FrictionState::stick) rows.push_back(q + int(j));
+    if (f.sticks(int(j), active, state)) rows.push_back(q + int(j));
   std::vector<double> gram(size_t(k) * k, 0.0), eig(k);
   for (int a = 0; a < k; ++a)
     for (int b = 0; b < k; ++b)

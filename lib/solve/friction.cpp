@@ -84,6 +84,20 @@ FrictionProblem Model::friction_problem() const {
   FrictionProblem f;
   f.normal_rows = cs.rows.size(), f.tangent_of = cs.tangent_of, f.law = cs.friction_law, f.bound = cs.friction_bound;
   f.ct = options.friction_ct;
+  // A tangential row whose every term is on a prescribed freedom (or round-off beside its
+  // largest) has its slip prescribed (the rigid modes vanish at prescribed components too).
+  f.prescribed.assign(cs.tangent_of.size(), 0);
+  const int q = cs.rows.size();
+  for (size_t j = 0; j < cs.tangent_of.size(); ++j) {
+    const int row = q + int(j);
+    double largest = 0, free_part = 0;
+    for (int b = 0; b < n_bodies(); ++b)
+      for (int p = cs.b_start[b][row]; p < cs.b_start[b][row + 1]; ++p) {
+        largest = std::max(largest, std::fabs(cs.b_value[b][p]));
+        if (!fixed_[b][cs.b_dof[b][p]]) free_part = std::max(free_part, std::fabs(cs.b_value[b][p]));
+      }
+    f.prescribed[j] = !(free_part > 1e-14 * largest);
+  }
   return f;
 }
 
