@@ -34,8 +34,9 @@ FrictionResult iterate_friction_states(const FrictionProblem &f, const FrictionS
   std::vector<char> active(start_active);
   std::vector<FrictionState> state(m, FrictionState::stick);
   if (int(start_state.size()) == m) state = start_state;
-  for (int j = 0; j < m; ++j)
-    if (state[j] == FrictionState::open) state[j] = f.bound[j] == 0 ? FrictionState::slip_plus : FrictionState::stick;
+  for (int j = 0; j < m; ++j)  // (a row without a bound slips whatever happens: it starts so)
+    if (state[j] == FrictionState::open || f.bound[j] == 0)
+      state[j] = f.bound[j] == 0 ? FrictionState::slip_plus : FrictionState::stick;
 
   std::set<std::string> seen;
   auto key = [&](const std::vector<char> &a, const std::vector<FrictionState> &st) {
@@ -50,9 +51,42 @@ FrictionResult iterate_friction_states(const FrictionProblem &f, const FrictionS
     result.lambda = solution.lambda, result.alpha = solution.alpha, result.gap = solution.gap;
     result.active = active, result.state = std::move(states);
   };
+  // One change (normal row or tangential row `row`, of q + m) of the update (next_active,
+  // next_state) applied to (active, state) alone.
+  auto apply_one = [&](int row, const std::vector<char> &next_active, const std::vector<FrictionState> &next_state) {
+    if (row < q) active[row] = next_active[row];  // a row leaving contact leaves its tangential row open
+    else state[row - q] = next_state[row - q];
+    for (int j = 0; j < m; ++j)  // (a row coming into contact: its trial state, or it sticks first)
+      if (!f.live(j, active)) state[j] = FrictionState::open;
+      else if (state[j] == FrictionState::open)
+        state[j] = next_state[j] != FrictionState::open ? next_state[j] : FrictionState::stick;
+  };
+  // The last states whose system was solvable and the update they asked for: if the full update
+  // lands on states that hold no floating body's motion (a transient set, as the frictionless
+  // iteration meets too, dual_qp.cpp), the iteration steps back and takes the first of those
+  // changes that keeps the system solvable, then goes on one change at a time.
+  struct Update {
+    std::vector<char> active, next_active;
+    std::vector<FrictionState> state, next_state;
+    std::vector<int> changing;
+  } last;
+  bool stepped_back = false;
   for (int it = 1; it <= max_iterations; ++it) {
     result.iterations = it;
-    if (!solve_states(active, state, solution)) {
+    bool solved = solve_states(active, state, solution);
+    if (!solved && !stepped_back && last.changing.size() > 1) {
+      // (a single change that failed is not retried: a second step back is not taken)
+      stepped_back = true;
+      for (int row : last.changing) {
+        active = last.active, state = last.state;
+        apply_one(row, last.next_active, last.next_state);
+        if (++it > max_iterations) break;
+        result.iterations = it;
+        if ((solved = solve_states(active, state, solution))) break;
+      }
+      if (solved) single_changes = true, seen.clear();
+    }
+    if (!solved) {
       result.outcome = FrictionOutcome::modes_not_held;
       result.active = active, result.state = state;
       return result;
@@ -152,18 +186,9 @@ FrictionResult iterate_friction_states(const FrictionProblem &f, const FrictionS
       seen.insert(key(active, state));
     }
     last_changing = changing;
+    last = {active, next_active, state, next_state, changing};
     if (single_changes) {
-      const int row = changing.front();
-      if (row < q) {
-        active[row] = next_active[row];
-        // a row leaving contact leaves its tangential row open; one entering sticks first
-      } else {
-        state[row - q] = next_state[row - q];
-      }
-      for (int j = 0; j < m; ++j)  // (a row coming into contact: its trial state)
-        if (!f.live(j, active)) state[j] = FrictionState::open;
-        else if (state[j] == FrictionState::open)
-          state[j] = next_state[j] != FrictionState::open ? next_state[j] : FrictionState::stick;
+      apply_one(changing.front(), next_active, next_state);
       continue;
     }
     active = next_active, state = next_state;
