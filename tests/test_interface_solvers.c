@@ -11,8 +11,8 @@
  * and, for scenes with load steps (a load, a gap offset or a support value changed, then
  * solved again on the same model), the same after every step; a sparse re-solve whose active
  * set did not change must do no new factorization (MC_INFO_FACTORIZATIONS == 0); each scene's
- * first variant with Coulomb friction mu = 0 on every pair, on both paths: that path's
- * frictionless answer to 1e-12.
+ * first variant with Coulomb friction mu = 0, and with a Tresca bound 0, on every pair, on both
+ * paths: that path's frictionless answer to 1e-12.
  *
  * The scenes (source test in brackets) are rebuilt here from the shared scene helpers
  * (scenes.h: sc_mesh_rect and friends; contact_checks.h: hertz_build; westergaard_scene.h;
@@ -1136,12 +1136,14 @@ static int same_active_set(const answer *a, const answer *b) {
   return 1;
 }
 
-/* Friction with mu = 0 (Coulomb, on every pair) is the frictionless problem: each scene's first
-   variant solved so on both paths gives that path's frictionless answer (a) to 1e-12 relative
-   (its own round-off; the stick/slip iteration starts elsewhere and takes its own steps). */
+/* Friction with mu = 0 (Coulomb) or a Tresca bound 0, on every pair, is the frictionless
+   problem: each scene's first variant solved so on both paths gives that path's frictionless
+   answer (a) to 1e-12 relative (its own round-off; the stick/slip iteration takes its own steps). */
 static void zero_friction_is_frictionless(const scene_def *d, const answer a[2]) {
   const int path[2] = {MC_INTERFACE_CONDENSED, MC_INTERFACE_SPARSE};
-  for (int k = 0; k < 2; ++k) {
+  for (int case_ = 0; case_ < 4; ++case_) {
+    const int k = case_ % 2, law = case_ < 2 ? MC_FRICTION_COULOMB : MC_FRICTION_TRESCA;
+    const char *law_name = law == MC_FRICTION_COULOMB ? "mu = 0" : "Tresca bound 0";
     if (a[k].status != MC_OK || a[k].solver != path[k]) continue;
     run r;
     answer f;
@@ -1150,10 +1152,10 @@ static void zero_friction_is_frictionless(const scene_def *d, const answer a[2])
     mc_model *m = r.m;
     OK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, path[k]));
     int pairs = 0;
-    while (pairs < 16 && mc_set_friction(m, pairs + 1, MC_FRICTION_COULOMB, 0.0) == MC_OK) ++pairs;
+    while (pairs < 16 && mc_set_friction(m, pairs + 1, law, 0.0) == MC_OK) ++pairs;
     ck_assert_int_ge(pairs, 1);
     answer_get(&r, mc_solve(m), &f);
-    ck_assert_msg(f.status == MC_OK, "%s, mu = 0 (%s): %s", d->name, k ? "sparse" : "condensed", f.message);
+    ck_assert_msg(f.status == MC_OK, "%s, %s (%s): %s", d->name, law_name, k ? "sparse" : "condensed", f.message);
     ck_assert_int_eq(f.n, a[k].n);
     double pmax = 0, dp = 0, umax = 0, du = 0;
     for (mc_int j = 0; j < f.n; ++j)
@@ -1162,10 +1164,12 @@ static void zero_friction_is_frictionless(const scene_def *d, const answer a[2])
       for (mc_int i = 0; i < 2 * r.n_nodes[b]; ++i)
         umax = max_d(umax, fabs(a[k].u[b][i])), du = max_d(du, fabs(f.u[b][i] - a[k].u[b][i]));
     dp = pmax > 0 ? dp / pmax : 0, du = umax > 0 ? du / umax : 0;
-    printf("  [0] mu = 0 (%s): pressure diff %.2e, displacement diff %.2e from the frictionless answer\n",
+    printf("  [0] %s (%s): pressure diff %.2e, displacement diff %.2e from the frictionless answer\n", law_name,
            k ? "sparse" : "condensed", dp, du);
-    if (!r.skip_active) ck_assert_msg(dp <= 1e-12, "%s, mu = 0 (%s): pressures differ by %g", d->name, k ? "sparse" : "condensed", dp);
-    if (!r.skip_u) ck_assert_msg(du <= 1e-12, "%s, mu = 0 (%s): displacements differ by %g", d->name, k ? "sparse" : "condensed", du);
+    if (!r.skip_active)
+      ck_assert_msg(dp <= 1e-12, "%s, %s (%s): pressures differ by %g", d->name, law_name, k ? "sparse" : "condensed", dp);
+    if (!r.skip_u)
+      ck_assert_msg(du <= 1e-12, "%s, %s (%s): displacements differ by %g", d->name, law_name, k ? "sparse" : "condensed", du);
     answer_free(&f), run_free(&r);
   }
 }

@@ -382,9 +382,9 @@ def friction_blocks():
 
 SEEDS.update({
     # Coulomb in 3 load steps, the loads doubled (a step from the converged state), the history
-    # forgotten with another complementarity parameter, Tresca; then the sparse path forced
-    # (refused: friction runs on the condensed path) and the friction removed (nothing holds
-    # body 1 along x: singular)
+    # forgotten with another complementarity parameter, Tresca; then the sparse path forced (it
+    # refused friction until session 14; now it solves it) and the friction removed (nothing
+    # holds body 1 along x: singular)
     "friction_stick": friction_blocks() + friction(1, COULOMB, 0.5) + option_int(LOAD_STEPS, 3) + solve()
     + traction_side(1, TOP, 0.125, -1) + solve() + op("RESET_HISTORY") + option_real(FRICTION_CT, 10.0) + solve()
     + friction(1, TRESCA, 0.25) + solve() + option_int(INTERFACE_SOLVER, 2) + solve() + option_int(INTERFACE_SOLVER, 0)
@@ -404,6 +404,12 @@ SEEDS.update({
     + op("NULLS") + solve() + op("RESET_HISTORY") + op("RESET_HISTORY") + solve() + op("WRITE_VTU") + u8(0),
     # assemblies with friction: Tresca on pair 1, Coulomb on pair 2 of the three-block stack, in
     # two load steps, then a reset and the pairs' laws swapped
+    # friction on the sparse interface path: Coulomb sticking, then the top moved sideways (every
+    # row slips: the nonsymmetric systems, GMRES), Tresca, and the stack's two pairs
+    "friction_sparse": friction_blocks() + option_int(INTERFACE_SOLVER, 2) + friction(1, COULOMB, 0.5) + solve()
+    + fix_side(1, TOP, 1, (0.5, 0.0)) + solve() + friction(1, TRESCA, 0.25) + solve() + op("QUERY")
+    + op("NEW_MODEL") + stack3() + option_int(INTERFACE_SOLVER, 2) + friction(1, COULOMB, 0.3)
+    + friction(2, TRESCA, 0.5) + option_int(LOAD_STEPS, 2) + solve() + op("QUERY"),
     "friction_pairs": stack3() + friction(1, TRESCA, 0.5) + friction(2, COULOMB, 0.3) + option_int(LOAD_STEPS, 2)
     + solve() + op("QUERY") + op("RESET_HISTORY") + friction(1, COULOMB, 0.3) + friction(2, TRESCA, 0.5) + solve()
     + friction(3, COULOMB, 0.3) + solve(),
