@@ -1,0 +1,90 @@
+// The sparse path's low-rank updates of its factor (docs/theory.md §6b, item 4): an active set a
+// few rows away from the factor's solved through the last factor and a k x k system, instead of
+// a new factorization.
+#include "linalg/sparse_contact_solve.hpp"
+#include "support/lapack.hpp"
+#include "support/stopwatch.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace mc {
+
+// When the rows to hold differ from the factor's by a few (an active-set iteration or a load step
+// that moves the ends of the contact zone), H_P = H_0 + sum_r sign_r P_r c_r^T c_r is a rank-k
+// change of the factorized H_0: its inverse is H_0^-1 - Z M^-1 Z^T with Z = H_0^-1 C_k^T and
+// M = diag(1 / (sign_r P_r)) + C_k Z (Sherman-Morrison-Woodbury), k solves and a k x k LU
+// instead of a factorization. Taken when the k solves cost under half a factorization and Z
+// takes under half the factor's memory. The answer stays exact: the refinement works on the KKT
+// system's own residuals (solve_on_active_set), whatever H_P^-1 was applied. Removing a row
+// cancels P_r against c_r H_0^-1 c_r^T (about 1/P_r, kAugmentation larger than their
+// difference): the update loses some 3 digits, which the refinement wins back.
+bool SparseContactSolver::update_from_factor(const std::vector<char> &active, SparseContactResult &result) {
+  const SparseContactStructure &s = *structure_;
+  if (factor_set_.size() != active.size()) return false;
+  std::vector<int> rows;
+  for (int r = 0; r < s.rows(); ++r)
+    if (s.row_is_inequality[r] && active[r] != factor_set_[r]) rows.push_back(r);
+  const int n = s.n_unknowns, k = int(rows.size());
+  const double solve_flops = 4.0 * double(cholesky_.factor_nnz());
+  if (k == 0) {
+    update_ = {}, factorized_ = active;
+    return true;
+  }
+  if (double(k) * solve_flops > 0.5 * flops_ || double(k) * n > 0.5 * double(cholesky_.factor_nnz())) return false;
+  const double start = now();
+  LowRankUpdate u;
+  u.rows = rows;
+  u.z.assign(size_t(n) * k, 0.0);
+  for (int c = 0; c < k; ++c)
+    for (int p = s.row_start[rows[c]]; p < s.row_start[rows[c] + 1]; ++p) u.z[size_t(c) * n + s.column[p]] = s.value[p];
+  cholesky_.solve(u.z.data(), k);
+  u.m.assign(size_t(k) * k, 0.0);
+  double norm = 0;
+  for (int c = 0; c < k; ++c) {
+    for (int i = 0; i < k; ++i) {
+      double v = 0;
+      for (int p = s.row_start[rows[i]]; p < s.row_start[rows[i] + 1]; ++p) v += s.value[p] * u.z[size_t(c) * n + s.column[p]];
+      u.m[size_t(c) * k + i] = v;
+    }
+    const double sign = active[rows[c]] ? 1.0 : -1.0;
+    u.m[size_t(c) * k + c] += 1 / (sign * weight_[rows[c]]);
+  }
+  for (int c = 0; c < k; ++c) {
+    double sum = 0;
+    for (int i = 0; i < k; ++i) sum += std::fabs(u.m[size_t(c) * k + i]);
+    norm = std::max(norm, sum);
+  }
+  u.pivots.resize(k);
+  int info = 0, kk = k;
+  dgetrf_(&kk, &kk, u.m.data(), &kk, u.pivots.data(), &info);
+  double rcond = 0;
+  if (info == 0) {
+    std::vector<double> work(4 * size_t(k));
+    std::vector<int> iwork(k);
+    dgecon_("1", &kk, u.m.data(), &kk, &norm, &rcond, work.data(), iwork.data(), &info);
+  }
+  result.t_factor += now() - start;
+  if (info != 0 || !(rcond > 1e-12)) return false;  // (a factorization then says what is singular)
+  update_ = std::move(u);
+  factorized_ = active;
+  result.updates++;
+  return true;
+}
+
+void SparseContactSolver::apply_inverse(std::vector<double> &v, SparseContactResult &result) const {
+  const double start = now();
+  cholesky_.solve(v.data());
+  const int k = int(update_.rows.size()), n = structure_->n_unknowns;
+  if (k > 0) {
+    std::vector<double> t(k);
+    for (int i = 0; i < k; ++i) t[i] = row_times(update_.rows[i], v);
+    int one = 1, info = 0, kk = k;
+    dgetrs_("N", &kk, &one, update_.m.data(), &kk, update_.pivots.data(), t.data(), &kk, &info);
+    int nn = n;
+    double minus = -1.0, plus = 1.0;
+    dgemv_("N", &nn, &kk, &minus, update_.z.data(), &nn, t.data(), &one, &plus, v.data(), &one);
+  }
+  result.t_solve += now() - start;
+}
+
+}  // namespace mc
