@@ -83,7 +83,9 @@ static void blocks_free(blocks *b) {
 /* The upper block as a host body (its element matrices from the independent assembler,
    host_assembly.h; 2 equations per node in node order) with its side and top tractions as
    loads. (No supports: a host body's supports are freedoms without equations, at rest.) */
-static void set_host_upper(mc_model *m, const sc_mesh *mesh, const patch *s) {
+/* indefinite: the first cell's element matrix with a coupling of its first two unknowns ten times
+   their diagonal (the host's stiffness then is not positive definite; its diagonal stays). */
+static void set_host_upper_matrix(mc_model *m, const sc_mesh *mesh, const patch *s, int indefinite) {
   const int npc = mesh->npc, nv = 2 * npc;
   mc_int *equations = malloc(sizeof(mc_int) * 2 * (size_t)mesh->n_nodes);
   for (mc_int i = 0; i < 2 * mesh->n_nodes; ++i) equations[i] = i;
@@ -99,6 +101,10 @@ static void set_host_upper(mc_model *m, const sc_mesh *mesh, const patch *s) {
       eltvar[nv * c + 2 * k] = equations[2 * v], eltvar[nv * c + 2 * k + 1] = equations[2 * v + 1];
     }
     ck_assert_int_eq(ha_element_stiffness(npc, xy, 0, 1.0, D, a + (size_t)nv * nv * c), 0);
+    if (indefinite && c == 0) {  /* a coupling of its first two unknowns ten times their diagonal */
+      double *e = a + (size_t)nv * nv * c;
+      e[1] += 10 * e[0], e[nv] += 10 * e[0];
+    }
   }
   eltptr[mesh->n_cells] = nv * mesh->n_cells;
   OK(mc_add_element_matrices(m, 1, mesh->n_cells, eltptr, eltvar, a));
@@ -121,8 +127,8 @@ static mc_model *blocks_model_host(blocks *b, const patch *s, int method, int la
                                    int host_upper) {
   mc_model *m;
   OK(mc_create(&m));
-  if (host_upper) {
-    set_host_upper(m, &b->upper, s);
+  if (host_upper) {  /* 2: its first cell indefinite */
+    set_host_upper_matrix(m, &b->upper, s, host_upper == 2);
   } else {
     OK(sc_set_mesh(m, 1, &b->upper, 0));
     OK(mc_set_material(m, 1, E, NU));
@@ -620,6 +626,27 @@ START_TEST(patch_host_body) {
 }
 END_TEST
 
+/* The sparse path's factorization failing with friction: a host body whose stiffness is not
+   positive definite (one cell's matrix made indefinite) is MC_ERROR_SINGULAR naming where the
+   factorization failed (a body and its unknown; with contact coupling the bodies that need not
+   be the host body); a second solve says the same. */
+START_TEST(host_body_not_positive_definite_sparse) {
+  blocks b;
+  blocks_meshes(&b, 3, MC_METHOD_MORTAR);
+  const double mu = 0.5;
+  patch s = {P, 0.4 * mu * P, 0};
+  mc_model *m = blocks_model_host(&b, &s, MC_METHOD_MORTAR, MC_FRICTION_COULOMB, mu, 0, 2);
+  use_path(m, 1);
+  FAILS(mc_solve(m), MC_ERROR_SINGULAR, "not positive definite");
+  printf("indefinite host body, friction, sparse path: %s\n", mc_errmsg(m));
+  ck_assert_msg(strstr(mc_errmsg(m), "body ") != NULL && (strstr(mc_errmsg(m), "unknown ") || strstr(mc_errmsg(m), "equation ")),
+                "the message names no body and index: %s", mc_errmsg(m));
+  FAILS(mc_solve(m), MC_ERROR_SINGULAR, "not positive definite");  /* the handle stays usable: the same answer */
+  mc_destroy(m);
+  blocks_free(&b);
+}
+END_TEST
+
 /* Three blocks stacked, two pairs with friction, under the uniform stress state: the top and
    middle blocks are held along x by sticking contact alone; every position of both pairs
    sticks with shear -tau and pressure p, the displacements the exact field. */
@@ -815,6 +842,7 @@ Suite *friction_suite(void) {
   tcase_add_loop_test(tc, history_between_solves, 0, 6);
   tcase_add_loop_test(tc, floating_body_in_full_slip, 0, 2);
   tcase_add_loop_test(tc, paths_agree, 0, 6);
+  tcase_add_test(tc, host_body_not_positive_definite_sparse);
   suite_add_tcase(s, tc);
   tc = tcase_create("input");
   tcase_add_test(tc, bad_input);

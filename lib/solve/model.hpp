@@ -21,6 +21,8 @@
 
 namespace mc {
 
+class Error;
+
 // A node of an axisymmetric model lies on the axis when |x| <= axis_tolerance(mesh) (a
 // relative 1e-12 of the mesh's extent: a mesh generator's round-off); one with x below
 // -axis_tolerance is an error (first_node_left_of_axis finds it, -1 if none).
@@ -324,6 +326,7 @@ private:
   bool solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lambda, std::vector<double> &alpha);
   void sparse_loads(const std::vector<LoadSolve> &loads, std::vector<double> &load, std::vector<double> &target) const;
   bool rows_hold_modes(const std::vector<char> &holding) const;
+  [[noreturn]] void fail_sparse_singular(const Error &error) const;
   // The sparse path's answer x in the bodies' terms (loads[b].v) and the rigid modes' alpha.
   void sparse_displacements(const std::vector<double> &x, std::vector<LoadSolve> &loads, std::vector<double> &alpha) const;
   // The condensed path (condensed_contact_path.cpp).

@@ -236,22 +236,24 @@ void Model::build_sparse_structure() {
       if (k >= 0) entries.emplace_back(cs.column_offset[b] + k, cs.b_value[b][p]);
     }
   };
-  // The contact rows: the non-mortar body's part, the mortar body's (its weights, or -n . w_a),
-  // the rigid modes'.
-  for (int r = 0; r < q; ++r) {
+  // A contact row (B's row b_row, of contact row r): the non-mortar body's part, the mortar
+  // body's (its weights, or -direction . w_a for a mortar value), the rigid modes'. direction:
+  // the row's normal n, or t = (-n_y, n_x) for its tangential row.
+  auto add_contact_row = [&](int r, int b_row, Point direction) {
     const ContactGroup &group = cs.groups[cs.row_group[r]];
-    add_body_entries(group.nonmortar, r);
+    add_body_entries(group.nonmortar, b_row);
     if (rows.aux[r] < 0) {
-      add_body_entries(group.mortar, r);
+      add_body_entries(group.mortar, b_row);
     } else {
       const int a = rows.aux[r];
-      entries.emplace_back(cs.aux_offset + 2 * a, -rows.normal[r].x);
-      entries.emplace_back(cs.aux_offset + 2 * a + 1, -rows.normal[r].y);
+      entries.emplace_back(cs.aux_offset + 2 * a, -direction.x);
+      entries.emplace_back(cs.aux_offset + 2 * a + 1, -direction.y);
     }
     for (int c = 0; c < cs.modes; ++c)
-      if (cs.g[size_t(c) * qb + r] != 0) entries.emplace_back(cs.mode_offset + c, cs.g[size_t(c) * qb + r]);
+      if (cs.g[size_t(c) * qb + b_row] != 0) entries.emplace_back(cs.mode_offset + c, cs.g[size_t(c) * qb + b_row]);
     add_row(true);
-  }
+  };
+  for (int r = 0; r < q; ++r) add_contact_row(r, r, rows.normal[r]);
   // The mortar equations D w - R u2 = 0, per component (ConstraintRows::aux), u2 the mortar
   // body's of the point's group.
   for (int a = 0; a < rows.aux_count; ++a) {
@@ -273,19 +275,8 @@ void Model::build_sparse_structure() {
   // stick/slip iteration as the contact rows are by the active set (sparse_friction.cpp).
   cs.tangent_row_offset = st.rows();
   for (size_t j = 0; j < cs.tangent_of.size(); ++j) {
-    const int r = cs.tangent_of[j], row = q + int(j);
-    const ContactGroup &group = cs.groups[cs.row_group[r]];
-    add_body_entries(group.nonmortar, row);
-    if (rows.aux[r] < 0) {
-      add_body_entries(group.mortar, row);
-    } else {
-      const int a = rows.aux[r];
-      entries.emplace_back(cs.aux_offset + 2 * a, rows.normal[r].y);
-      entries.emplace_back(cs.aux_offset + 2 * a + 1, -rows.normal[r].x);
-    }
-    for (int c = 0; c < cs.modes; ++c)
-      if (cs.g[size_t(c) * qb + row] != 0) entries.emplace_back(cs.mode_offset + c, cs.g[size_t(c) * qb + row]);
-    add_row(true);
+    const int r = cs.tangent_of[j];
+    add_contact_row(r, q + int(j), Point{-rows.normal[r].y, rows.normal[r].x});
   }
   {
     Stopwatch watch(infos.t_analysis);
@@ -397,6 +388,37 @@ bool Model::rows_hold_modes(const std::vector<char> &holding) const {
   return info == 0 && eig[0] > 1e-12 * eig[k - 1];
 }
 
+// A factorization of the sparse path that failed (MC_ERROR_SINGULAR), named in the body's terms
+// where it can be: a host body's equation.
+void Model::fail_sparse_singular(const Error &error) const {
+  const ContactSystem &cs = *contact_;
+  const int failed = cs.solver.failed_unknown();
+  for (int b = 0; b < n_bodies() && failed >= 0; ++b) {
+    if (!system_[b] || !body[b].host) continue;
+    const int local = failed - cs.column_offset[b];
+    if (local >= 0 && local < int(system_[b]->solve_dofs.size()))
+      fail(MC_ERROR_SINGULAR,
+           "body %d: the host's stiffness is not positive definite: the sparse interface solver's factorization "
+           "fails at its equation %d (a part of the body moves without resistance, beyond %s, or the matrix is not "
+           "a stiffness)",
+           b + 1, system_[b]->solve_dofs[local] + index_base,
+           system_[b]->rigid.count > 0 ? "the rigid modes found from the coordinates" : "any rigid mode");
+  }
+  // Elsewhere the pivot that fails is where the elimination of an indefinite part ends up, which
+  // need not be in the body that causes it (contact couples the bodies' unknowns): named as the
+  // place it failed, not as the cause.
+  for (int b = 0; b < n_bodies() && failed >= 0; ++b) {
+    if (!system_[b]) continue;
+    const int local = failed - cs.column_offset[b];
+    if (local >= 0 && local < int(system_[b]->solve_dofs.size()))
+      fail(MC_ERROR_SINGULAR,
+           "sparse interface solver: %s; the factorization failed at body %d's unknown %d (every body coupled to it "
+           "through contact enters there)",
+           error.what(), b + 1, system_[b]->solve_dofs[local] + index_base);
+  }
+  fail(MC_ERROR_SINGULAR, "sparse interface solver: %s", error.what());
+}
+
 void Model::sparse_displacements(const std::vector<double> &x, std::vector<LoadSolve> &loads,
                                  std::vector<double> &alpha) const {
   const ContactSystem &cs = *contact_;
@@ -430,20 +452,7 @@ bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lam
     result = cs.solver.solve(load, target, start_set, options.tolerance, options.max_iterations, hold_modes, observe);
   } catch (const Error &error) {
     if (error.status() != MC_ERROR_SINGULAR) throw;
-    // The unknown that failed, named in the body's terms: a host body's equation.
-    const int failed = cs.solver.failed_unknown();
-    for (int b = 0; b < n_bodies() && failed >= 0; ++b) {
-      if (!system_[b] || !body[b].host) continue;
-      const int local = failed - cs.column_offset[b];
-      if (local >= 0 && local < int(system_[b]->solve_dofs.size()))
-        fail(MC_ERROR_SINGULAR,
-             "body %d: the host's stiffness is not positive definite: the sparse interface solver's factorization "
-             "fails at its equation %d (a part of the body moves without resistance, beyond %s, or the matrix is not "
-             "a stiffness)",
-             b + 1, system_[b]->solve_dofs[local] + index_base,
-             system_[b]->rigid.count > 0 ? "the rigid modes found from the coordinates" : "any rigid mode");
-    }
-    fail(MC_ERROR_SINGULAR, "sparse interface solver: %s", error.what());
+    fail_sparse_singular(error);
   }
   infos.iterations = result.iterations;
   infos.factorizations += result.factorizations;

@@ -84,7 +84,7 @@ void Model::solve_sparse_friction(std::vector<LoadSolve> &loads, std::vector<dou
                                      cs.friction_state, friction_log());
   } catch (const Error &error) {
     if (error.status() != MC_ERROR_SINGULAR) throw;
-    fail(MC_ERROR_SINGULAR, "sparse interface solver (friction): %s", error.what());
+    fail_sparse_singular(error);
   }
   infos.factorizations += linear.factorizations;
   infos.t_factor += linear.t_factor;
