@@ -67,6 +67,7 @@ static void note_parts(void *user, mc_log_level level, const char *message) {
   if (strncmp(message, "interface operator", 18) == 0) p->interface = trailing_seconds(message);
   if (strncmp(message, "active-set solve", 16) == 0) p->active_set = trailing_seconds(message);
   if (strncmp(message, "refinement", 10) == 0) p->refinement = trailing_seconds(message);
+  if (getenv("WESTERGAARD_LOG")) fprintf(stderr, "  log: %s\n", message);
 }
 
 static void usage(void) {

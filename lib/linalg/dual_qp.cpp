@@ -353,6 +353,11 @@ bool primal_active_set(const DualQp &p, double s_scale, double d_scale, std::vec
 
 }  // namespace
 
+void release_slack_rows(const std::vector<double> &lambda, double lambda_ref, std::vector<char> &active) {
+  for (size_t r = 0; r < active.size(); ++r)
+    if (active[r] && lambda[r] < kSlackForce * lambda_ref) active[r] = 0;
+}
+
 double load_imbalance(const DualQp &p) {
   if (p.k == 0) return 0;
   double e_norm = 0;
@@ -404,7 +409,8 @@ DualQpResult solve_dual_qp(const DualQp &p, double tolerance, int max_iterations
   }
 
   std::vector<char> active(q, 0);
-  if (int(start.size()) == q) active = start;
+  const bool warm_start = int(start.size()) == q;
+  if (warm_start) active = start;
   else if (p.k > 0) std::fill(active.begin(), active.end(), 1);
   else for (int i = 0; i < q; ++i) active[i] = p.d[i] > 0;
 
@@ -473,6 +479,8 @@ DualQpResult solve_dual_qp(const DualQp &p, double tolerance, int max_iterations
     if (it - fewest_at >= patience) return fall_back(active);
     previous = active;
     for (int i : violating) active[i] = !active[i];
+    // Negligible forces released with the pulling ones (release_slack_rows, dual_qp.hpp).
+    if (it == (warm_start ? 2 : 1)) release_slack_rows(lambda, lambda_ref, active);
     if (!seen.insert(active).second) return fall_back(previous);  // a cycle
   }
   double lambda_ref = 0;

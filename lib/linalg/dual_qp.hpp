@@ -52,6 +52,24 @@ using DualQpObserver = std::function<void(const DualQpIteration &)>;
 DualQpResult solve_dual_qp(const DualQp &problem, double tolerance, int max_iterations,
                            const std::vector<char> &active, const DualQpObserver &observe = {});
 
+// After the first active-set iteration of a solve without a start (the all-active set, or the
+// rows of initial interference), or the second of one started from an earlier solve's set (the
+// first solve on the rows that the new loads made penetrate): rows left active whose force is
+// below kSlackForce of the largest, positive but negligible or negative at round-off (so not
+// flipped), are released with the pulling ones. Where the bodies touch along far more of the
+// interface than carries load (a thin strip pressed over a part of its length, its free parts
+// resting on the other at zero gap, or tipped onto it when the load moves past the end of the
+// last contact zone), the solve on such a set leaves the forces of those parts at round-off or
+// at the tails of a decaying bending wave, of either sign: releasing only the pulling ones
+// keeps every other row of those parts holding them, and the primal-dual iteration then
+// wanders for dozens of sets (docs/robustness.md, "A load on a part of a long strip": 75 sets
+// and a fall-back to the condensed path before, 5 and 6 after). A row released wrongly is taken
+// back by the next iteration (its gap < 0), so the answer, checked by the same complementarity
+// test, is unchanged. Once per solve: applied after every growing step the rule itself made the
+// iteration wander on that scene (tried, 2026-11-27).
+constexpr double kSlackForce = 1e-3;
+void release_slack_rows(const std::vector<double> &lambda, double lambda_ref, std::vector<char> &active);
+
 // Floating bodies: min ||G^T l - e|| / ||e|| over l >= 0 (0 without floating bodies). Above
 // 1e-8 no contact forces (which only push) can balance the loads (DualQpOutcome::loads_not_balanced).
 // Uses p.g, p.e, p.q and p.k only.

@@ -275,8 +275,8 @@ SparseContactResult SparseContactSolver::solve(const std::vector<double> &load, 
   SparseContactResult result;
   coupling_.clear();
   std::vector<char> active(nrows, 0);
-  for (int r = 0; r < nrows; ++r)
-    active[r] = s.row_is_inequality[r] && (int(start.size()) == nrows ? start[r] : 1);
+  const bool warm_start = int(start.size()) == nrows;
+  for (int r = 0; r < nrows; ++r) active[r] = s.row_is_inequality[r] && (warm_start ? start[r] : 1);
   std::vector<double> x(s.n_unknowns, 0.0), lambda(nrows, 0.0), gap(nrows, 0.0);
   std::set<std::vector<char>> seen;
   size_t fewest_violating = size_t(nrows) + 1;
@@ -325,6 +325,8 @@ SparseContactResult SparseContactSolver::solve(const std::vector<double> &load, 
     if (violating.size() < fewest_violating) fewest_violating = violating.size(), fewest_at = it;
     if (it - fewest_at >= patience) break;
     for (int r : violating) active[r] = !active[r];
+    // Negligible forces released with the pulling ones (release_slack_rows, dual_qp.hpp).
+    if (it == (warm_start ? 2 : 1)) release_slack_rows(lambda, lambda_ref, active);
     if (!seen.insert(active).second) break;  // a cycle
   }
   result.outcome = SparseContactOutcome::not_converged;
