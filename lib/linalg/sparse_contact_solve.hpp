@@ -105,11 +105,13 @@ private:
   // few rows differ (update_from_factor), else a numeric factorization.
   void factorize(const std::vector<char> &active, SparseContactResult &result);
   bool update_from_factor(const std::vector<char> &active, SparseContactResult &result);
+  void factorize_afresh(const std::vector<char> &active, SparseContactResult &result);  // never an update
   // v = H_P^-1 v for the rows factorized_: the factor's solve, then the update's correction.
   void apply_inverse(std::vector<double> &v, SparseContactResult &result) const;
   // The exact solution of the KKT system on the factorized active set, from lambda's start.
-  void solve_on_active_set(const std::vector<double> &load, const std::vector<double> &target,
-                           std::vector<double> &x, std::vector<double> &lambda, SparseContactResult &result) const;
+  // Returns the KKT residual it reached (relative to the terms it is summed from).
+  double solve_on_active_set(const std::vector<double> &load, const std::vector<double> &target,
+                             std::vector<double> &x, std::vector<double> &lambda, SparseContactResult &result) const;
   // CG on S_P lambda = b for the active rows; x follows lambda. Returns the steps taken.
   int conjugate_gradients(const std::vector<double> &load, const std::vector<double> &target, std::vector<double> &x,
                           std::vector<double> &lambda, SparseContactResult &result) const;
