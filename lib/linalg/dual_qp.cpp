@@ -219,18 +219,7 @@ bool solve_on_active_set(const DualQp &p, const std::vector<int> &act, double g_
   lambda.assign(p.q, 0.0);
   alpha.assign(k, 0.0);
   if (n == 0) return true;
-  if (k > 0 && shift == 0) {  // rank of G_A: its Gram matrix must be well conditioned
-    if (na < k) return false;
-    std::vector<double> gram(size_t(k) * k, 0.0), eig(k);
-    for (int a = 0; a < k; ++a)
-      for (int b = 0; b < k; ++b)
-        for (int j : act) gram[size_t(b) * k + a] += p.g[size_t(a) * p.q + j] * p.g[size_t(b) * p.q + j];
-    // k counts the rigid modes of every floating body (up to 3 each): dsyev needs 3k - 1
-    int lwork = std::max(64, 3 * k), info = 0;
-    std::vector<double> work(lwork);
-    dsyev_("N", "U", &k, gram.data(), &k, eig.data(), work.data(), &lwork, &info);
-    if (info != 0 || !(eig[0] > 1e-12 * eig[k - 1])) return false;
-  }
+  if (k > 0 && shift == 0 && !rows_hold_modes(p.g.data(), p.q, k, act)) return false;
   if (!p.s.dense()) return solve_on_active_set_by_blocks(p, act, g_scale, lambda, alpha, shift);
   // Symmetric indefinite system, the G block scaled by g_scale so both blocks are of one size.
   const double *s = p.s.dense_values();
@@ -352,6 +341,28 @@ bool primal_active_set(const DualQp &p, double s_scale, double d_scale, std::vec
 }
 
 }  // namespace
+
+RowsGram rows_gram(const double *g, int ld, int k, const std::vector<int> &rows, bool vectors) {
+  RowsGram r;
+  r.gram.assign(size_t(k) * k, 0.0), r.eigenvalues.assign(k, 0.0);
+  if (k == 0) return r.ok = true, r;
+  for (int a = 0; a < k; ++a)
+    for (int b = 0; b < k; ++b)
+      for (int j : rows) r.gram[size_t(b) * k + a] += g[size_t(a) * ld + j] * g[size_t(b) * ld + j];
+  // k counts the rigid modes of every floating body (up to 3 each): dsyev needs 3k - 1
+  int n = k, lwork = std::max(64, 3 * k), info = 0;
+  std::vector<double> work(lwork);
+  dsyev_(vectors ? "V" : "N", "U", &n, r.gram.data(), &n, r.eigenvalues.data(), work.data(), &lwork, &info);
+  r.ok = info == 0;
+  return r;
+}
+
+bool rows_hold_modes(const double *g, int ld, int k, const std::vector<int> &rows) {
+  if (k == 0) return true;
+  if (int(rows.size()) < k) return false;
+  const RowsGram r = rows_gram(g, ld, k, rows, false);
+  return r.ok && r.eigenvalues[0] > 1e-12 * r.eigenvalues[k - 1];
+}
 
 void release_slack_rows(const std::vector<double> &lambda, double lambda_ref, std::vector<char> &active) {
   for (size_t r = 0; r < active.size(); ++r)

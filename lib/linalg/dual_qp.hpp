@@ -70,6 +70,19 @@ DualQpResult solve_dual_qp(const DualQp &problem, double tolerance, int max_iter
 constexpr double kSlackForce = 1e-3;
 void release_slack_rows(const std::vector<double> &lambda, double lambda_ref, std::vector<char> &active);
 
+// The Gram matrix G_R^T G_R of the rows R of G (k columns of leading dimension ld: entry
+// (r, c) at g[c * ld + r]) and its eigenvalues, ascending (LAPACK dsyev); with `vectors` the
+// eigenvectors replace `gram`, column by column. ok is false if LAPACK failed.
+struct RowsGram {
+  std::vector<double> gram, eigenvalues;
+  bool ok = false;
+};
+RowsGram rows_gram(const double *g, int ld, int k, const std::vector<int> &rows, bool vectors);
+// Whether the rows R hold the k rigid modes: G_R of full rank, judged by its Gram matrix's
+// smallest eigenvalue against 1e-12 of its largest. One test for the condensed path's active
+// sets, the sparse path's and friction's (a set that fails it leaves a floating body free).
+bool rows_hold_modes(const double *g, int ld, int k, const std::vector<int> &rows);
+
 // Floating bodies: min ||G^T l - e|| / ||e|| over l >= 0 (0 without floating bodies). Above
 // 1e-8 no contact forces (which only push) can balance the loads (DualQpOutcome::loads_not_balanced).
 // Uses p.g, p.e, p.q and p.k only.

@@ -150,20 +150,15 @@ std::vector<int> free_modes(const DualQp &p, const FrictionProblem &f, const std
     if (active[r]) rows.push_back(r);
   for (size_t j = 0; j < f.tangent_of.size(); ++j)
     if (f.sticks(int(j), active, state)) rows.push_back(q + int(j));
-  std::vector<double> gram(size_t(k) * k, 0.0), eig(k);
-  for (int a = 0; a < k; ++a)
-    for (int b = 0; b < k; ++b)
-      for (int r : rows) gram[size_t(b) * k + a] += p.g[size_t(a) * nb + r] * p.g[size_t(b) * nb + r];
-  int n = k, lwork = 64 + 3 * k, info = 0;
-  std::vector<double> work(lwork);
   std::vector<int> modes;
   if (k == 0) return modes;
-  dsyev_("V", "U", &n, gram.data(), &n, eig.data(), work.data(), &lwork, &info);
-  if (info != 0) return modes;
+  const RowsGram gram = rows_gram(p.g.data(), nb, k, rows, true);
+  if (!gram.ok) return modes;
+  const std::vector<double> &eig = gram.eigenvalues;
   std::vector<char> free(k, 0);
   for (int c = 0; c < k && eig[c] <= 1e-10 * std::max(eig[k - 1], 1e-300); ++c)
     for (int a = 0; a < k; ++a)
-      if (std::fabs(gram[size_t(c) * k + a]) >= 0.1) free[a] = 1;
+      if (std::fabs(gram.gram[size_t(c) * k + a]) >= 0.1) free[a] = 1;
   for (int a = 0; a < k; ++a)
     if (free[a]) modes.push_back(a);
   return modes;

@@ -367,25 +367,13 @@ void Model::sparse_loads(const std::vector<LoadSolve> &loads, std::vector<double
 // condensed path judges it), so that H_P is positive definite.
 bool Model::rows_hold_modes(const std::vector<char> &holding) const {
   const ContactSystem &cs = *contact_;
-  const int k = cs.modes, q = cs.rows.size(), qb = cs.b_rows();
-  if (k == 0) return true;
-  std::vector<double> gram(size_t(k) * k, 0.0), eig(k);
-  int count = 0;
-  auto add = [&](int b_row) {
-    ++count;
-    for (int a = 0; a < k; ++a)
-      for (int b = 0; b < k; ++b) gram[size_t(b) * k + a] += cs.g[size_t(a) * qb + b_row] * cs.g[size_t(b) * qb + b_row];
-  };
+  const int q = cs.rows.size(), qb = cs.b_rows();
+  std::vector<int> rows;  // B's rows: q + j for tangential row j
   for (int r = 0; r < q; ++r)
-    if (holding[r]) add(r);
+    if (holding[r]) rows.push_back(r);
   for (int j = 0; j < qb - q; ++j)
-    if (holding[cs.tangent_row_offset + j]) add(q + j);
-  if (count < k) return false;
-  // k counts the rigid modes of every floating body (up to 3 each): dsyev needs 3k - 1
-  int n = k, lwork = std::max(64, 3 * k), info = 0;
-  std::vector<double> work(lwork);
-  dsyev_("N", "U", &n, gram.data(), &n, eig.data(), work.data(), &lwork, &info);
-  return info == 0 && eig[0] > 1e-12 * eig[k - 1];
+    if (holding[cs.tangent_row_offset + j]) rows.push_back(q + j);
+  return mc::rows_hold_modes(cs.g.data(), qb, cs.modes, rows);
 }
 
 // A factorization of the sparse path that failed (MC_ERROR_SINGULAR), named in the body's terms
