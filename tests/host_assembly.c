@@ -245,6 +245,27 @@ mc_int ha_edge_middle(int npc, mc_int n_cells, const mc_int *cells, mc_int a, mc
   return -1;
 }
 
+int ha_mesh_element_matrices(int npc, mc_int n_cells, const mc_int *cells, const double *xy, const mc_int *equations,
+                             const double D[9], mc_int **eltptr, mc_int **eltvar, double **a) {
+  const int nv = 2 * npc;
+  *eltptr = malloc(sizeof(mc_int) * ((size_t)n_cells + 1));
+  *eltvar = malloc(sizeof(mc_int) * (size_t)nv * (size_t)n_cells);
+  *a = malloc(sizeof(double) * (size_t)nv * nv * (size_t)n_cells);
+  int failed = 0;
+  double cell_xy[18];
+  for (mc_int c = 0; c < n_cells; ++c) {
+    (*eltptr)[c] = c * nv;
+    for (int k = 0; k < npc; ++k) {
+      const mc_int v = cells[npc * c + k];
+      cell_xy[2 * k] = xy[2 * v], cell_xy[2 * k + 1] = xy[2 * v + 1];
+      (*eltvar)[nv * c + 2 * k] = equations[2 * v], (*eltvar)[nv * c + 2 * k + 1] = equations[2 * v + 1];
+    }
+    if (ha_element_stiffness(npc, cell_xy, 0, 1.0, D, *a + (size_t)nv * nv * c) && !failed) failed = 1 + (int)c;
+  }
+  (*eltptr)[n_cells] = nv * n_cells;
+  return failed;
+}
+
 /* ---- coordinate matrices ------------------------------------------------------------------------- */
 
 void ha_coo_add(ha_coo *a, mc_int row, mc_int col, double value) {

@@ -48,6 +48,14 @@ int ha_element_stiffness(int npc, const double *xy, int axisymmetric, double thi
 int ha_layered_stiffness(int npc, const double *xy, double thickness, int n_layers, const double *eta_bounds,
                          const double *D, double *ke);
 
+/* The element matrices of every cell of a mesh (n_cells cells of npc nodes, Gmsh order; xy 2 per
+   node) with the plane law D at thickness 1, as mc_add_element_matrices takes them: eltptr
+   (n_cells + 1 offsets), eltvar (2 npc per cell: equations[2 v], equations[2 v + 1] of its nodes
+   v), a ((2 npc)^2 per cell, row-major); each malloc'ed, the caller frees them. Returns 0, or
+   1 + the index of the first cell whose Jacobian is not positive. */
+int ha_mesh_element_matrices(int npc, mc_int n_cells, const mc_int *cells, const double *xy, const mc_int *equations,
+                             const double D[9], mc_int **eltptr, mc_int **eltvar, double **a);
+
 /* Consistent nodal forces of a uniform traction t (force per unit area of the surface, global
    axes) on an edge of n = 2 nodes (a, b) or 3 nodes (a, b, middle): f (2 per node, overwritten)
    = the integral of N_a t over the isoparametric edge, times the thickness or 2 pi r. 3-point

@@ -56,25 +56,17 @@ static void stack3_free(stack3 *s) {
 /* A block as a host body: its element matrices from the independent assembler
    (host_assembly.h), 2 equations per node in node order, the bottom-left corner's x restrained. */
 static void set_host_block(mc_model *m, int body, const sc_mesh *mesh) {
-  const int npc = mesh->npc, nv = 2 * npc;
+  const int npc = mesh->npc;
   const mc_int corner = sc_node(mesh, 0, 0);
   mc_int *equations = malloc(sizeof(mc_int) * 2 * (size_t)mesh->n_nodes), n_eq = 0;
   for (mc_int i = 0; i < mesh->n_nodes; ++i)
     for (int c = 0; c < 2; ++c) equations[2 * i + c] = i == corner && c == 0 ? -1 : n_eq++;
   OK(mc_set_host_body(m, body, mesh->n_nodes, mesh->xy, equations, n_eq));
-  mc_int *eltptr = malloc(sizeof(mc_int) * ((size_t)mesh->n_cells + 1)), *eltvar = malloc(sizeof(mc_int) * (size_t)(nv * mesh->n_cells));
-  double *a = malloc(sizeof(double) * (size_t)(nv * nv * mesh->n_cells)), D[9], xy[18];
+  mc_int *eltptr, *eltvar;
+  double *a, D[9];
   ha_law_plane_strain(STACK_E, STACK_NU, D);
-  for (mc_int c = 0; c < mesh->n_cells; ++c) {
-    eltptr[c] = c * nv;
-    for (int a_ = 0; a_ < npc; ++a_) {
-      const mc_int v = mesh->cells[npc * c + a_];
-      xy[2 * a_] = mesh->xy[2 * v], xy[2 * a_ + 1] = mesh->xy[2 * v + 1];
-      eltvar[nv * c + 2 * a_] = equations[2 * v], eltvar[nv * c + 2 * a_ + 1] = equations[2 * v + 1];
-    }
-    ck_assert_int_eq(ha_element_stiffness(npc, xy, 0, 1.0, D, a + (size_t)nv * nv * c), 0); /* symmetric: either order */
-  }
-  eltptr[mesh->n_cells] = nv * mesh->n_cells;
+  /* symmetric element matrices: either storage order */
+  ck_assert_int_eq(ha_mesh_element_matrices(npc, mesh->n_cells, mesh->cells, mesh->xy, equations, D, &eltptr, &eltvar, &a), 0);
   OK(mc_add_element_matrices(m, body, mesh->n_cells, eltptr, eltvar, a));
   free(equations), free(eltptr), free(eltvar), free(a);
 }

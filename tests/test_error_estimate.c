@@ -390,26 +390,17 @@ static void lazy_scene_free(lazy_scene *s) {
 /* Body `body` a host body of P1 element matrices on `mesh`, its bottom side's nodes without
    equations (restrained). */
 static void host_block(mc_model *m, int body, const sc_mesh *mesh) {
-  const int npc = mesh->npc, nv = 2 * npc;
+  const int npc = mesh->npc;
   char *bottom = calloc((size_t)mesh->n_nodes, 1);
   for (mc_int k = 0; k < mesh->n_side_nodes[SC_BOTTOM]; ++k) bottom[mesh->side_nodes[SC_BOTTOM][k]] = 1;
   mc_int *equations = malloc(sizeof(mc_int) * 2 * (size_t)mesh->n_nodes), n_eq = 0;
   for (mc_int i = 0; i < mesh->n_nodes; ++i)
     for (int c = 0; c < 2; ++c) equations[2 * i + c] = bottom[i] ? -1 : n_eq++;
   OK(mc_set_host_body(m, body, mesh->n_nodes, mesh->xy, equations, n_eq));
-  mc_int *eltptr = malloc(sizeof(mc_int) * ((size_t)mesh->n_cells + 1)), *eltvar = malloc(sizeof(mc_int) * (size_t)(nv * mesh->n_cells));
-  double *a = malloc(sizeof(double) * (size_t)(nv * nv * mesh->n_cells)), D[9], xy[18];
+  mc_int *eltptr, *eltvar;
+  double *a, D[9];
   ha_law_plane_strain(2, 0.3, D);
-  for (mc_int c = 0; c < mesh->n_cells; ++c) {
-    eltptr[c] = c * nv;
-    for (int k = 0; k < npc; ++k) {
-      const mc_int v = mesh->cells[npc * c + k];
-      xy[2 * k] = mesh->xy[2 * v], xy[2 * k + 1] = mesh->xy[2 * v + 1];
-      eltvar[nv * c + 2 * k] = equations[2 * v], eltvar[nv * c + 2 * k + 1] = equations[2 * v + 1];
-    }
-    ck_assert_int_eq(ha_element_stiffness(npc, xy, 0, 1.0, D, a + (size_t)nv * nv * c), 0);
-  }
-  eltptr[mesh->n_cells] = nv * mesh->n_cells;
+  ck_assert_int_eq(ha_mesh_element_matrices(npc, mesh->n_cells, mesh->cells, mesh->xy, equations, D, &eltptr, &eltvar, &a), 0);
   OK(mc_add_element_matrices(m, body, mesh->n_cells, eltptr, eltvar, a));
   free(bottom), free(equations), free(eltptr), free(eltvar), free(a);
 }

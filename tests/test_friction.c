@@ -90,23 +90,13 @@ static void set_host_upper_matrix(mc_model *m, const sc_mesh *mesh, const patch 
   mc_int *equations = malloc(sizeof(mc_int) * 2 * (size_t)mesh->n_nodes);
   for (mc_int i = 0; i < 2 * mesh->n_nodes; ++i) equations[i] = i;
   OK(mc_set_host_body(m, 1, mesh->n_nodes, mesh->xy, equations, 2 * mesh->n_nodes));
-  mc_int *eltptr = malloc(sizeof(mc_int) * ((size_t)mesh->n_cells + 1)), *eltvar = malloc(sizeof(mc_int) * (size_t)(nv * mesh->n_cells));
-  double *a = malloc(sizeof(double) * (size_t)(nv * nv * mesh->n_cells)), D[9], xy[18];
+  mc_int *eltptr, *eltvar;
+  double *a, D[9];
   ha_law_plane_strain(E, NU, D);
-  for (mc_int c = 0; c < mesh->n_cells; ++c) {
-    eltptr[c] = c * nv;
-    for (int k = 0; k < npc; ++k) {
-      const mc_int v = mesh->cells[npc * c + k];
-      xy[2 * k] = mesh->xy[2 * v], xy[2 * k + 1] = mesh->xy[2 * v + 1];
-      eltvar[nv * c + 2 * k] = equations[2 * v], eltvar[nv * c + 2 * k + 1] = equations[2 * v + 1];
-    }
-    ck_assert_int_eq(ha_element_stiffness(npc, xy, 0, 1.0, D, a + (size_t)nv * nv * c), 0);
-    if (indefinite && c == 0) {  /* a coupling of its first two unknowns ten times their diagonal */
-      double *e = a + (size_t)nv * nv * c;
-      e[1] += 10 * e[0], e[nv] += 10 * e[0];
-    }
+  ck_assert_int_eq(ha_mesh_element_matrices(npc, mesh->n_cells, mesh->cells, mesh->xy, equations, D, &eltptr, &eltvar, &a), 0);
+  if (indefinite) { /* the first cell: a coupling of its first two unknowns ten times their diagonal */
+    a[1] += 10 * a[0], a[nv] += 10 * a[0];
   }
-  eltptr[mesh->n_cells] = nv * mesh->n_cells;
   OK(mc_add_element_matrices(m, 1, mesh->n_cells, eltptr, eltvar, a));
   /* the tractions as consistent nodal loads (P1 edges: half an edge's force at each end): the
      sides (0, -+tau), the top (tau, -p) */
