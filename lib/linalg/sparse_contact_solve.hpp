@@ -109,9 +109,14 @@ private:
   // v = H_P^-1 v for the rows factorized_: the factor's solve, then the update's correction.
   void apply_inverse(std::vector<double> &v, SparseContactResult &result) const;
   // The exact solution of the KKT system on the factorized active set, from lambda's start.
-  // Returns the KKT residual it reached (relative to the terms it is summed from).
+  // With refine: then refined on the KKT residuals; returns the relative residual reached (-1
+  // without refine: not measured).
   double solve_on_active_set(const std::vector<double> &load, const std::vector<double> &target,
-                             std::vector<double> &x, std::vector<double> &lambda, SparseContactResult &result) const;
+                             std::vector<double> &x, std::vector<double> &lambda, SparseContactResult &result,
+                             bool refine = true) const;
+  double complementarity(const std::vector<double> &target, const std::vector<char> &active,
+                         const std::vector<double> &x, const std::vector<double> &lambda, std::vector<double> &gap,
+                         std::vector<int> &violating, double &lambda_ref) const;
   // CG on S_P lambda = b for the active rows; x follows lambda. Returns the steps taken.
   int conjugate_gradients(const std::vector<double> &load, const std::vector<double> &target, std::vector<double> &x,
                           std::vector<double> &lambda, SparseContactResult &result) const;
