@@ -213,7 +213,7 @@ TracePoint trace_point(const FaceContext &f, double t, const CoveredPiece &adjac
 // throughout, and with it Wohlmuth's biorthogonal basis keeps D diagonal on curved surfaces too.
 // A quadratic body-1 edge is measured on its own curve (its arc length, the measure at the curve's
 // point): the integrals then are those of the body's own trace, which its loads also use.
-void add_quadrature(const FaceContext &f, const CoveredPiece &p, double t0, double t1, QuadraturePoint *element,
+void add_quadrature(const FaceContext &f, const CoveredPiece &p, double t0, double t1, std::vector<QuadraturePoint> &element,
                     std::vector<double> &tributary) {
   const int seg = f.segment(p.k);
   const CurveSegment &c = f.g.nonmortar.segments()[seg];
@@ -234,7 +234,7 @@ void add_quadrature(const FaceContext &f, const CoveredPiece &p, double t0, doub
     double distance;
     QuadraturePoint point{(t - t0) / (t1 - t0), weight, project_onto(f.g.mortar, p.mortar, x, n, distance)};
     point.segment1 = seg, point.xi1 = xi, point.gap = distance, point.normal = n;
-    element[q] = point;
+    element.push_back(point);
     double shape[3], ds[3];
     line_shapes(c.quadratic() ? 3 : 2, xi, shape, ds);
     for (int a = 0; a < (c.quadratic() ? 3 : 2); ++a) tributary[positions[a]] += weight * shape[a];
@@ -249,11 +249,20 @@ void fill_points(const FaceContext &f, const std::vector<CoveredPiece> &pieces, 
   points.start.assign(elements + 1, 0);
   for (int e : element_of) points.start[e + 1] += f.points;
   for (int e = 0; e < elements; ++e) points.start[e + 1] += points.start[e];
+  points.points.reserve(points.start[elements]);
+  if (std::is_sorted(element_of.begin(), element_of.end())) {  // (always, the pieces come along the face)
+    for (size_t i = 0; i < pieces.size(); ++i)
+      add_quadrature(f, pieces[i], element_t[element_of[i]], element_t[element_of[i] + 1], points.points, tributary);
+    return;
+  }
   points.points.resize(points.start[elements]);
   std::vector<int> next(points.start.begin(), points.start.end() - 1);
+  std::vector<QuadraturePoint> piece_points;
   for (size_t i = 0; i < pieces.size(); ++i) {
     const int e = element_of[i];
-    add_quadrature(f, pieces[i], element_t[e], element_t[e + 1], points.points.data() + next[e], tributary);
+    piece_points.clear();
+    add_quadrature(f, pieces[i], element_t[e], element_t[e + 1], piece_points, tributary);
+    std::copy(piece_points.begin(), piece_points.end(), points.points.begin() + next[e]);
     next[e] += f.points;
   }
 }

@@ -125,6 +125,13 @@ int solve_cyclic_tridiagonal(std::vector<double> lower, std::vector<double> diag
   return -1;
 }
 
+// Room in v for `more` entries after its own, at least doubling its capacity (a run after run
+// reserving just what it needs would copy the arrays once per run; grown entry by entry, a long
+// run's were copied into fresh memory again and again).
+template <class T> void make_room(std::vector<T> &v, size_t more) {
+  if (v.size() + more > v.capacity()) v.reserve(std::max(v.size() + more, 2 * v.capacity()));
+}
+
 // A sparse row: (column, value), columns ascending and distinct once merged.
 using SparseRow = std::vector<std::pair<int, double>>;
 
@@ -256,8 +263,9 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, co
   // allocation or more per trace point).
   std::vector<int> term_row, term_node;
   std::vector<double> term_value;
-  term_row.reserve(4 * run.elements.points.size()), term_node.reserve(4 * run.elements.points.size());
-  term_value.reserve(4 * run.elements.points.size());
+  // (at most 2 test functions x 2 multipliers each x 3 body-2 nodes a point: reserved, not touched)
+  const size_t most_terms = 12 * run.elements.points.size() + 6;
+  term_row.reserve(most_terms), term_node.reserve(most_terms), term_value.reserve(most_terms);
   for (int e = 0; e < int(run.elements.size()); ++e) {
     double c[4] = {2, -1, -1, 2};
     if (method == MC_METHOD_DUAL_MORTAR) measure.dual_basis(run.trace[e].x, run.trace[(e + 1) % n].x, c);
@@ -317,6 +325,12 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, co
   // The sparse form: interior point k is auxiliary point aux0 + k (open runs: k - 1, the ends
   // have none). Its equation: D's band on the interior points, R on the body-2 nodes.
   const int aux0 = rows.aux_count - first;
+  make_room(rows.aux_d_point, 3 * size_t(n)), make_room(rows.aux_d, 3 * size_t(n));
+  make_room(rows.aux_d_start, n), make_room(rows.aux_r_start, n);
+  make_room(rows.aux_r_node, pending.r_node.size()), make_room(rows.aux_r, pending.r_node.size());
+  make_room(rows.position1, 2 * size_t(n)), make_room(rows.weight1, 2 * size_t(n));
+  make_room(rows.start1, n), make_room(rows.start2, n), make_room(rows.normal, n), make_room(rows.gap0, n);
+  make_room(rows.own_position, n), make_room(rows.aux, n);
   for (int k = first; k <= last; ++k) {
     const int neighbour[3] = {closed ? (k + n - 1) % n : k - 1, k, closed ? (k + 1) % n : k + 1};
     const double d[3] = {lower[k], diag[k], upper[k]};

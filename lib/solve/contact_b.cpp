@@ -10,6 +10,7 @@
 // (complete_b), before anything else reads B: the results (B^T lambda, the gaps) read every row.
 #include "solve/model.hpp"
 #include "bodies/plane_vectors.hpp"
+#include "support/stopwatch.hpp"
 #include <exception>
 #include <functional>
 #include <system_error>
@@ -113,28 +114,36 @@ void Model::find_interface(int b) {
 
 // B with every row's mortar weights, from a partial one (build_contact_system): on a second
 // thread while `meanwhile` runs (the caller's work that does not read B), or before it without
-// a second core or with MC_OPTION_THREADS 1. The interface unknowns follow B.
+// a second core, with MC_OPTION_THREADS 1 or without `meanwhile` (empty). The interface
+// unknowns follow B.
 void Model::complete_b(const std::function<void()> &meanwhile) {
   ContactSystem &cs = *contact_;
   if (!cs.b_partial) {
-    meanwhile();
+    if (meanwhile) meanwhile();
     return;
   }
   BArrays full;
-  if (threads_ > 1) {
+  double seconds = 0;  // (measured where it runs; logged by the caller, on the calling thread)
+  auto assemble = [&] {
+    const double start = now();
+    assemble_b(cs, true, full);
+    seconds = now() - start;
+  };
+  if (threads_ > 1 && meanwhile) {
     std::exception_ptr error;
     std::thread worker;
     try {
       worker = std::thread([&] {
         try {
-          assemble_b(cs, true, full);
+          assemble();
         } catch (...) {
           error = std::current_exception();
         }
       });
     } catch (const std::system_error &) {  // no thread to be had: before `meanwhile`
-      assemble_b(cs, true, full);
+      assemble();
     }
+    cs.b_completed_alongside = worker.joinable();
     try {
       meanwhile();
     } catch (...) {
@@ -144,9 +153,10 @@ void Model::complete_b(const std::function<void()> &meanwhile) {
     if (worker.joinable()) worker.join();
     if (error) std::rethrow_exception(error);
   } else {
-    assemble_b(cs, true, full);
-    meanwhile();
+    assemble();
+    if (meanwhile) meanwhile();
   }
+  cs.b_completion_seconds += seconds;
   cs.b_start = std::move(full.start), cs.b_dof = std::move(full.dof), cs.b_value = std::move(full.value);
   cs.b_partial = false;
   for (ContactGroup &group : cs.groups) group.rows.release_mortar_weights();

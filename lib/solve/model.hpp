@@ -110,6 +110,8 @@ struct ContactSystem {
   // B without the mortar weights of the rows with a mortar value (ConstraintRows::aux): the
   // sparse path forced builds its structure from it, and completes it meanwhile (complete_b).
   bool b_partial = false;
+  double b_completion_seconds = 0;  // what completing it took
+  bool b_completed_alongside = false;  // on a thread of its own, while the sparse path's ordering ran
   // The rows that touch each body (B_b's nonzero columns), increasing.
   std::vector<std::vector<int>> body_rows;
   // The q x q interface operator B K^+ B^T, stored by blocks of rows: block (I, J) only if a

@@ -218,7 +218,7 @@ void Model::build_sparse_structure() {
   bool g_reads_partial = false;
   for (const ContactGroup &group : cs.groups)
     if (system_[group.mortar] && system_[group.mortar]->rigid.count > 0 && !group.rows.pending.empty()) g_reads_partial = true;
-  if (g_reads_partial) complete_b([] {});
+  if (g_reads_partial) complete_b(nullptr);
   cs.g = rigid_mode_rows();
 
   std::vector<std::pair<int, double>> entries;
@@ -296,10 +296,17 @@ void Model::build_sparse_structure() {
          "the sparse interface solver's factor would need about %.3g GiB and %.3g GiB are available: the model is "
          "too large for this machine's memory",
          gib(bytes), gib(memory));
-  progress(MC_LOG_PHASE,
-           "analysis: sparse interface solver, %d unknowns (%d mortar values, %d rigid modes), %d rows, %ld nonzeros "
-           "in the factor, %.3g s",
-           st.n_unknowns, 2 * rows.aux_count, cs.modes, st.rows(), cs.solver.factor_nnz(), now() - start);
+  if (cs.b_completion_seconds > 0)
+    progress(MC_LOG_PHASE,
+             "analysis: sparse interface solver, %d unknowns (%d mortar values, %d rigid modes), %d rows, %ld nonzeros "
+             "in the factor; B's mortar weights completed %s in %.3g s; %.3g s",
+             st.n_unknowns, 2 * rows.aux_count, cs.modes, st.rows(), cs.solver.factor_nnz(),
+             cs.b_completed_alongside ? "alongside" : "before it", cs.b_completion_seconds, now() - start);
+  else
+    progress(MC_LOG_PHASE,
+             "analysis: sparse interface solver, %d unknowns (%d mortar values, %d rigid modes), %d rows, %ld nonzeros "
+             "in the factor, %.3g s",
+             st.n_unknowns, 2 * rows.aux_count, cs.modes, st.rows(), cs.solver.factor_nnz(), now() - start);
 }
 
 // The sparse path's loads F = (f_b, 0, R^T f) and right-hand sides: a contact row's initial gap
