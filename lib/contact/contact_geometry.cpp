@@ -241,13 +241,30 @@ void add_quadrature(const FaceContext &f, const CoveredPiece &p, double t0, doub
   }
 }
 
-// Room for each element's quadrature points (f.points per piece, element_of[i] piece i's):
-// grown point by point, a long interface's hundred thousand of them were copied into fresh
-// memory again and again (docs/notes/contact-geometry-cost.md).
-void reserve_points(const FaceContext &f, const std::vector<int> &element_of, ContactRun &run) {
-  std::vector<int> pieces(run.elements.size(), 0);
-  for (int e : element_of) ++pieces[e];
-  for (size_t e = 0; e < run.elements.size(); ++e) run.elements[e].reserve(size_t(pieces[e]) * f.points);
+// Each piece's quadrature points (f.points each) into its element's place in the run's array
+// (element_of[i]: piece i's element), in the order of the pieces, and the tributary measures.
+void fill_points(const FaceContext &f, const std::vector<CoveredPiece> &pieces, const std::vector<int> &element_of,
+                 const std::vector<double> &element_t, int elements, ContactRun &run, std::vector<double> &tributary) {
+  RunElements &points = run.elements;
+  points.start.assign(elements + 1, 0);
+  for (int e : element_of) points.start[e + 1] += f.points;
+  for (int e = 0; e < elements; ++e) points.start[e + 1] += points.start[e];
+  points.points.reserve(points.start[elements]);
+  if (std::is_sorted(element_of.begin(), element_of.end())) {  // (always, the pieces come along the face)
+    for (size_t i = 0; i < pieces.size(); ++i)
+      add_quadrature(f, pieces[i], element_t[element_of[i]], element_t[element_of[i] + 1], points.points, tributary);
+    return;
+  }
+  points.points.resize(points.start[elements]);
+  std::vector<int> next(points.start.begin(), points.start.end() - 1);
+  std::vector<QuadraturePoint> piece_points;
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    const int e = element_of[i];
+    piece_points.clear();
+    add_quadrature(f, pieces[i], element_t[e], element_t[e + 1], piece_points, tributary);
+    std::copy(piece_points.begin(), piece_points.end(), points.points.begin() + next[e]);
+    next[e] += f.points;
+  }
 }
 
 // Turns one maximal covered interval of a face into a run.
@@ -256,6 +273,7 @@ ContactRun open_run(const FaceContext &f, const std::vector<CoveredPiece> &piece
   auto snapped = [](double t) { return std::fabs(t - std::round(t)) <= kSnap ? std::round(t) : t; };
   const double t_begin = snapped(pieces.front().t0()), t_end = snapped(pieces.back().t1());
   std::vector<double> trace_t{t_begin};
+  trace_t.reserve(pieces.size() + 2), run.trace.reserve(pieces.size() + 2);  // (at most a node per piece, and the ends)
   run.trace.push_back(trace_point(f, t_begin, pieces.front()));
   for (const CoveredPiece &p : pieces) {  // the nodes strictly inside the interval
     const double t = snapped(p.t1());
@@ -266,18 +284,14 @@ ContactRun open_run(const FaceContext &f, const std::vector<CoveredPiece> &piece
   }
   trace_t.push_back(t_end);
   run.trace.push_back(trace_point(f, t_end, pieces.back()));
-  run.elements.resize(run.trace.size() - 1);
+  const size_t elements = run.trace.size() - 1;
   std::vector<int> element_of(pieces.size());  // each piece's element
   size_t element = 0;
   for (size_t i = 0; i < pieces.size(); ++i) {
-    while (element + 1 < run.elements.size() && pieces[i].t0() >= trace_t[element + 1] - kSnap) ++element;
+    while (element + 1 < elements && pieces[i].t0() >= trace_t[element + 1] - kSnap) ++element;
     element_of[i] = int(element);
   }
-  reserve_points(f, element_of, run);
-  for (size_t i = 0; i < pieces.size(); ++i) {
-    const int e = element_of[i];
-    add_quadrature(f, pieces[i], trace_t[e], trace_t[e + 1], run.elements[e], tributary);
-  }
+  fill_points(f, pieces, element_of, trace_t, int(elements), run, tributary);
   return run;
 }
 
@@ -285,17 +299,17 @@ ContactRun open_run(const FaceContext &f, const std::vector<CoveredPiece> &piece
 ContactRun closed_run(const FaceContext &f, const std::vector<CoveredPiece> &pieces, std::vector<double> &tributary) {
   ContactRun run;
   run.closed = true;
-  run.elements.resize(f.edges);
   size_t first_on_edge = 0;  // the pieces come along the face: edge k's first piece (a scan of all cost O(edges^2))
   for (int k = 0; k < f.edges; ++k) {
     while (first_on_edge < pieces.size() && pieces[first_on_edge].k < k) ++first_on_edge;
     const bool on_edge = first_on_edge < pieces.size() && pieces[first_on_edge].k == k;
     run.trace.push_back(trace_point(f, k, on_edge ? pieces[first_on_edge] : pieces.front()));
   }
-  std::vector<int> element_of(pieces.size());  // element k: edge k
+  std::vector<int> element_of(pieces.size());  // element k: edge k, from t = k to k + 1
   for (size_t i = 0; i < pieces.size(); ++i) element_of[i] = pieces[i].k;
-  reserve_points(f, element_of, run);
-  for (const CoveredPiece &p : pieces) add_quadrature(f, p, p.k, p.k + 1, run.elements[p.k], tributary);
+  std::vector<double> element_t(f.edges + 1);
+  for (int k = 0; k <= f.edges; ++k) element_t[k] = k;
+  fill_points(f, pieces, element_of, element_t, f.edges, run, tributary);
   return run;
 }
 
@@ -305,9 +319,15 @@ void runs_of_face(const FaceContext &f, std::vector<CoveredPiece> pieces, std::v
                   std::vector<double> &tributary) {
   if (pieces.empty()) return;
   std::vector<std::vector<CoveredPiece>> intervals;
-  for (const CoveredPiece &p : pieces) {
-    if (intervals.empty() || std::fabs(p.t0() - intervals.back().back().t1()) > 1e-12) intervals.emplace_back();
-    intervals.back().push_back(p);
+  {
+    // (each interval copied once at its size: grown piece by piece, a long one was copied into
+    // fresh memory again and again)
+    size_t begin = 0;
+    for (size_t i = 1; i <= pieces.size(); ++i)
+      if (i == pieces.size() || std::fabs(pieces[i].t0() - pieces[i - 1].t1()) > 1e-12) {
+        intervals.emplace_back(pieces.begin() + begin, pieces.begin() + i);
+        begin = i;
+      }
   }
   if (f.closed && intervals.front().front().t0() <= 1e-12 && intervals.back().back().t1() >= f.edges - 1e-12) {
     if (intervals.size() == 1) {
@@ -531,9 +551,11 @@ ContactGeometry build_contact_geometry(const Mesh &body1, const std::vector<Surf
     // linear ones keep the 3 points (degree 5) that are exact for theirs.
     context.points = g.quadratic_nonmortar || quadratic_mortar ? 5 : 3;
     std::vector<CoveredPiece> pieces;
+    pieces.reserve(size_t(sf.edges()) * 2);  // (most edges hold one to three; grown, copied into fresh memory)
+    std::vector<double> breaks;  // (kept from edge to edge: an allocation per edge was a tenth of the runs' time)
     for (int k = 0; k < sf.edges(); ++k) {
       const int seg = curve1.segment_of(face, k);
-      std::vector<double> breaks{0.0, 1.0};
+      breaks.assign({0.0, 1.0});
       // A body-2 node can project inside the segment only if it lies between the look lines
       // of the segment's ends (a sign change of the bracketing function).
       const Point xa = curve1.segments()[seg].pa, xb = curve1.segments()[seg].pb;

@@ -54,10 +54,31 @@ struct QuadraturePoint {
 
 // A connected piece of Gamma_c: the paper's Gamma_c with trace nodes c1 = trace.front(),
 // c2 = trace.back(), or a closed loop (element k joins trace k and k+1 mod size).
+// The quadrature points of one element of a run, as a range over the run's array.
+struct ElementPoints {
+  const QuadraturePoint *first, *last;
+  const QuadraturePoint *begin() const { return first; }
+  const QuadraturePoint *end() const { return last; }
+  size_t size() const { return size_t(last - first); }
+  bool empty() const { return first == last; }
+  const QuadraturePoint &front() const { return *first; }
+  const QuadraturePoint &back() const { return *(last - 1); }
+};
+
+// The points of a run's elements, element after element in one array (CSR): a long interface
+// has tens of thousands of elements, and an array each cost an allocation each, most of the
+// runs' time (docs/notes/contact-geometry-cost.md).
+struct RunElements {
+  std::vector<QuadraturePoint> points;
+  std::vector<int> start{0};  // element e: points start[e] .. start[e + 1] - 1
+  size_t size() const { return start.size() - 1; }
+  ElementPoints operator[](size_t e) const { return {points.data() + start[e], points.data() + start[e + 1]}; }
+};
+
 struct ContactRun {
   bool closed = false;
   std::vector<TracePoint> trace;
-  std::vector<std::vector<QuadraturePoint>> elements;
+  RunElements elements;
 };
 
 struct ContactGeometry {

@@ -42,18 +42,25 @@ void add_interpolation(const ContactGeometry &g, SurfacePoint at, std::map<int, 
 }
 
 
+// A row's body-2 weights as kept: weights below 1e-17 of the row's largest are left out: D^-1
+// decays geometrically away from the diagonal, so most of a long run's row is round-off, and B
+// stays sparse. Appended to (out_nodes, out_w).
+template <class Nodes, class Weights>
+void keep_weights(const int *nodes, const double *w, int n, Nodes &out_nodes, Weights &out_w) {
+  double largest = 0;
+  for (int k = 0; k < n; ++k) largest = std::max(largest, std::fabs(w[k]));
+  for (int k = 0; k < n; ++k)
+    if (w[k] != 0 && std::fabs(w[k]) >= 1e-17 * largest) out_nodes.push_back(nodes[k]), out_w.push_back(w[k]);
+}
+
 // A row: body 1 at trace point t; body 2 with weights w over nodes (both n long, nodes
-// ascending). Weights below 1e-17 of the row's largest are left out: D^-1 decays geometrically
-// away from the diagonal, so most of a long run's row is round-off, and B stays sparse.
+// ascending; n = 0 for a pending row, ConstraintRows::pending).
 void append_row(ConstraintRows &rows, const TracePoint &t, const int *nodes, const double *w, int n) {
   rows.position1.push_back(t.a);
   rows.weight1.push_back(t.is_position() ? 1.0 : 1 - t.xi);
   if (!t.is_position()) rows.position1.push_back(t.b), rows.weight1.push_back(t.xi);
   rows.start1.push_back(int(rows.position1.size()));
-  double largest = 0;
-  for (int k = 0; k < n; ++k) largest = std::max(largest, std::fabs(w[k]));
-  for (int k = 0; k < n; ++k)
-    if (w[k] != 0 && std::fabs(w[k]) >= 1e-17 * largest) rows.body2_node.push_back(nodes[k]), rows.weight2.push_back(w[k]);
+  keep_weights(nodes, w, n, rows.body2_node, rows.weight2);
   rows.start2.push_back(int(rows.body2_node.size()));
   rows.normal.push_back(t.normal);
   rows.gap0.push_back(t.gap0);
@@ -119,7 +126,8 @@ int solve_cyclic_tridiagonal(std::vector<double> lower, std::vector<double> diag
 }
 
 // Room in v for `more` entries after its own, at least doubling its capacity (a run after run
-// reserving just what it needs would copy the arrays once per run).
+// reserving just what it needs would copy the arrays once per run; grown entry by entry, a long
+// run's were copied into fresh memory again and again).
 template <class T> void make_room(std::vector<T> &v, size_t more) {
   if (v.size() + more > v.capacity()) v.reserve(std::max(v.size() + more, 2 * v.capacity()));
 }
@@ -251,7 +259,13 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, co
   // D (band: trace points i-1, i, i+1 of row i, cyclic on a loop) and M (sparse: row i over the
   // body-2 nodes that its multiplier's support faces).
   std::vector<double> lower(n, 0.0), diag(n, 0.0), upper(n, 0.0);
-  std::vector<SparseRow> mm(n);
+  // M's terms as they come, (row, node, value), grouped by row below (an array per row cost an
+  // allocation or more per trace point).
+  std::vector<int> term_row, term_node;
+  std::vector<double> term_value;
+  // (at most 2 test functions x 2 multipliers each x 3 body-2 nodes a point: reserved, not touched)
+  const size_t most_terms = 12 * run.elements.points.size() + 6;
+  term_row.reserve(most_terms), term_node.reserve(most_terms), term_value.reserve(most_terms);
   for (int e = 0; e < int(run.elements.size()); ++e) {
     double c[4] = {2, -1, -1, 2};
     if (method == MC_METHOD_DUAL_MORTAR) measure.dual_basis(run.trace[e].x, run.trace[(e + 1) % n].x, c);
@@ -269,19 +283,33 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, co
             const int offset = closed ? ((trace - i) % n + n + 1) % n - 1 : trace - i;  // -1, 0 or +1
             (offset == 0 ? diag : offset > 0 ? upper : lower)[i] += w * phi[j];
           }
-          for (int j = 0; j < count2; ++j) mm[i].emplace_back(node2[j], w * phi2[j]);
+          for (int j = 0; j < count2; ++j) term_row.push_back(i), term_node.push_back(node2[j]), term_value.push_back(w * phi2[j]);
         });
     }
   }
   // R = M - D_E P_E on the interior points (open), M (closed): D_II P_I = R (3.2).
-  std::vector<SparseRow> r(std::move(mm));
+  // Merged per row (each row's terms in the order they came) into the run's R (CSR), which also
+  // computes its explicit rows later (ConstraintRows::PendingRun).
   if (!closed) {
-    for (auto &[node, value] : end_row[0]) r[1].emplace_back(node, -lower[1] * value);
-    for (auto &[node, value] : end_row[1]) r[n - 2].emplace_back(node, -upper[n - 2] * value);
+    for (auto &[node, value] : end_row[0]) term_row.push_back(1), term_node.push_back(node), term_value.push_back(-lower[1] * value);
+    for (auto &[node, value] : end_row[1])
+      term_row.push_back(n - 2), term_node.push_back(node), term_value.push_back(-upper[n - 2] * value);
   }
-  for (SparseRow &row : r) {
-    for (const auto &[node, value] : row) sums.add(node, value);
-    sums.take(row);
+  ConstraintRows::PendingRun pending;
+  {
+    std::vector<int> term_start(n + 1, 0), order(term_row.size());
+    for (int i : term_row) ++term_start[i + 1];
+    for (int i = 0; i < n; ++i) term_start[i + 1] += term_start[i];
+    std::vector<int> next(term_start.begin(), term_start.end() - 1);
+    for (size_t t = 0; t < term_row.size(); ++t) order[next[term_row[t]]++] = int(t);
+    SparseRow merged;
+    pending.r_node.reserve(term_row.size()), pending.r_value.reserve(term_row.size());
+    for (int i = 0; i < n; ++i) {
+      for (int p = term_start[i]; p < term_start[i + 1]; ++p) sums.add(term_node[order[p]], term_value[order[p]]);
+      sums.take(merged);
+      for (const auto &[node, value] : merged) pending.r_node.push_back(node), pending.r_value.push_back(value);
+      pending.r_start.push_back(int(pending.r_node.size()));
+    }
   }
   // D's pivots over the whole run (no right-hand side): a vanishing one is an error.
   const int first = closed ? 0 : 1, last = closed ? n - 1 : n - 2;
@@ -297,6 +325,12 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, co
   // The sparse form: interior point k is auxiliary point aux0 + k (open runs: k - 1, the ends
   // have none). Its equation: D's band on the interior points, R on the body-2 nodes.
   const int aux0 = rows.aux_count - first;
+  make_room(rows.aux_d_point, 3 * size_t(n)), make_room(rows.aux_d, 3 * size_t(n));
+  make_room(rows.aux_d_start, n), make_room(rows.aux_r_start, n);
+  make_room(rows.aux_r_node, pending.r_node.size()), make_room(rows.aux_r, pending.r_node.size());
+  make_room(rows.position1, 2 * size_t(n)), make_room(rows.weight1, 2 * size_t(n));
+  make_room(rows.start1, n), make_room(rows.start2, n), make_room(rows.normal, n), make_room(rows.gap0, n);
+  make_room(rows.own_position, n), make_room(rows.aux, n);
   for (int k = first; k <= last; ++k) {
     const int neighbour[3] = {closed ? (k + n - 1) % n : k - 1, k, closed ? (k + 1) % n : k + 1};
     const double d[3] = {lower[k], diag[k], upper[k]};
@@ -305,35 +339,32 @@ void mortar_rows(const ContactGeometry &g, const ContactRun &run, int method, co
       if (d[j] != 0) rows.aux_d_point.push_back(aux0 + neighbour[j]), rows.aux_d.push_back(d[j]);
     }
     rows.aux_d_start.push_back(int(rows.aux_d_point.size()));
-    for (auto &[node, value] : r[k])
-      if (value != 0) rows.aux_r_node.push_back(node), rows.aux_r.push_back(value);
+    for (int p = pending.r_start[k]; p < pending.r_start[k + 1]; ++p)
+      if (pending.r_value[p] != 0) rows.aux_r_node.push_back(pending.r_node[p]), rows.aux_r.push_back(pending.r_value[p]);
     rows.aux_r_start.push_back(int(rows.aux_r_node.size()));
   }
-  // The explicit rows pi_h = D^-1 R (row k: sum_j (D^-1)_kj R_j), for the condensed path.
-  SparseRow z_row, values;
-  auto interior_row = [&](int k) {  // into values
-    inverse_row(lower, diag, upper, first, last, closed, k, inverse, z_row);
+  // The explicit rows pi_h = D^-1 R (row k: sum_j (D^-1)_kj R_j), for B: computed from here
+  // when B is built (MortarWeights), not stored twice. The ends' rows (interpolation) are kept.
+  pending.first_row = rows.size(), pending.n = n, pending.first = first, pending.last = last, pending.closed = closed;
+  {
+    SparseRow z_row, middle;
+    inverse_row(lower, diag, upper, first, last, closed, n / 2, inverse, z_row);
     for (auto &[j, z] : z_row)
-      for (auto &[node, value] : r[j]) sums.add(node, z * value);
-    sums.take(values);
-  };
-  // Room for n rows as long as the middle one (most of a long run's rows are as long; a longer
-  // one grows the arrays as before): grown row by row, they were copied into fresh memory again
-  // and again, and on a long interface first touches of new pages cost most of the operators'
-  // time (docs/notes/contact-geometry-cost.md).
-  interior_row(n / 2);
-  make_room(rows.body2_node, size_t(n) * values.size()), make_room(rows.weight2, size_t(n) * values.size());
-  std::vector<int> nodes;
-  std::vector<double> w;
+      for (int p = pending.r_start[j]; p < pending.r_start[j + 1]; ++p) sums.add(pending.r_node[p], z * pending.r_value[p]);
+    sums.take(middle);
+    pending.middle_length = middle.size();
+  }
+  pending.lower = std::move(lower), pending.diag = std::move(diag), pending.upper = std::move(upper);
   for (int k = 0; k < n; ++k) {
     const bool end = !closed && (k == 0 || k == n - 1);
-    if (end) values = end_row[k == 0 ? 0 : 1];  // (its nodes ascending and distinct: merged already)
-    else interior_row(k);
-    nodes.clear(), w.clear();
-    for (auto &[node, value] : values) nodes.push_back(node), w.push_back(value);
+    std::vector<int> nodes;
+    std::vector<double> w;
+    if (end)  // (its nodes ascending and distinct: merged already)
+      for (auto &[node, value] : end_row[k == 0 ? 0 : 1]) nodes.push_back(node), w.push_back(value);
     append_row(rows, run.trace[k], nodes.data(), w.data(), int(nodes.size()));
     if (!end) rows.aux.back() = aux0 + k;
   }
+  rows.pending.push_back(std::move(pending));
   rows.aux_count += last - first + 1;
 }
 
@@ -364,6 +395,7 @@ ConstraintRows build_constraint_rows(const ContactGeometry &g, int method, int m
   }
   int body2_nodes = 0;  // (ids up to the largest on body 2's surface)
   for (const CurveSegment &c : g.mortar.segments()) body2_nodes = std::max({body2_nodes, c.a + 1, c.b + 1, c.mid + 1});
+  rows.body2_columns = body2_nodes;
   ColumnSums sums(body2_nodes);
   InverseRowWork inverse;
   for (const ContactRun &run : g.runs) {
@@ -380,6 +412,56 @@ ConstraintRows build_constraint_rows(const ContactGeometry &g, int method, int m
     append_trace_hat_measures(run, rows);
   }
   return rows;
+}
+
+bool ConstraintRows::weights_pending(int r) const {
+  auto after = std::upper_bound(pending.begin(), pending.end(), r,
+                                [](int row, const PendingRun &run) { return row < run.first_row; });
+  if (after == pending.begin()) return false;
+  const PendingRun &run = *(after - 1);
+  const int k = r - run.first_row;
+  return k >= run.first && k <= run.last;
+}
+
+size_t ConstraintRows::pending_weights_estimate() const {
+  size_t total = 0;
+  for (const PendingRun &run : pending) total += size_t(run.n) * run.middle_length;
+  return total;
+}
+
+struct MortarWeights::Work {
+  explicit Work(int columns) : sums(columns) {}
+  ColumnSums sums;
+  InverseRowWork inverse;
+  SparseRow z_row, values;
+  std::vector<int> nodes;
+  std::vector<double> w;
+};
+
+MortarWeights::MortarWeights(const ConstraintRows &rows) : rows_(rows), work_(std::make_unique<Work>(rows.body2_columns)) {}
+
+MortarWeights::~MortarWeights() = default;
+
+void MortarWeights::row(int r, std::vector<int> &nodes, std::vector<double> &weights, std::vector<Point> &vectors) {
+  nodes.clear(), weights.clear(), vectors.clear();
+  if (!rows_.weights_pending(r)) {
+    nodes.assign(rows_.body2_node.begin() + rows_.start2[r], rows_.body2_node.begin() + rows_.start2[r + 1]);
+    weights.assign(rows_.weight2.begin() + rows_.start2[r], rows_.weight2.begin() + rows_.start2[r + 1]);
+    if (!rows_.vector2.empty())
+      vectors.assign(rows_.vector2.begin() + rows_.start2[r], rows_.vector2.begin() + rows_.start2[r + 1]);
+    return;
+  }
+  auto after = std::upper_bound(rows_.pending.begin(), rows_.pending.end(), r,
+                                [](int row, const ConstraintRows::PendingRun &run) { return row < run.first_row; });
+  const ConstraintRows::PendingRun &run = *(after - 1);
+  Work &w = *work_;
+  inverse_row(run.lower, run.diag, run.upper, run.first, run.last, run.closed, r - run.first_row, w.inverse, w.z_row);
+  for (auto &[j, z] : w.z_row)
+    for (int p = run.r_start[j]; p < run.r_start[j + 1]; ++p) w.sums.add(run.r_node[p], z * run.r_value[p]);
+  w.sums.take(w.values);
+  w.nodes.clear(), w.w.clear();
+  for (auto &[node, value] : w.values) w.nodes.push_back(node), w.w.push_back(value);
+  keep_weights(w.nodes.data(), w.w.data(), int(w.nodes.size()), nodes, weights);
 }
 
 }  // namespace mc

@@ -14,6 +14,7 @@
 //   node-to-segment: interpolation of u2 at the point each body-1 node projects to (no pi_h)
 #pragma once
 #include "contact/contact_geometry.hpp"
+#include <memory>
 #include <vector>
 
 namespace mc {
@@ -64,6 +65,52 @@ struct ConstraintRows {
   std::vector<double> aux_d;
   std::vector<int> aux_r_start{0}, aux_r_node;
   std::vector<double> aux_r;
+
+  // The explicit weights D^-1 R of a run's interior rows are not stored here (start2 gives those
+  // rows none): some 60 per row on a long interface, they go to B only (MortarWeights computes
+  // them), and the sparse path, which reads w_a instead, gets them later or not at all. Per such
+  // run what computes them: its rows first_row .. first_row + n - 1, interior points first..last
+  // (an interior point's row is first_row + point), D (lower, diag, upper; cyclic when closed)
+  // and R's rows per point (CSR, merged, zeros kept: the terms the weights sum).
+  struct PendingRun {
+    int first_row = 0, n = 0, first = 0, last = 0;
+    bool closed = false;
+    std::vector<double> lower, diag, upper;
+    std::vector<int> r_start{0}, r_node;
+    std::vector<double> r_value;
+    size_t middle_length = 0;  // the run's middle row's weights: n times it sizes B's arrays
+  };
+  std::vector<PendingRun> pending;
+  int body2_columns = 0;  // the body-2 node ids the weights range over (0 .. body2_columns - 1)
+  // Row r's weights are computed (not in start2): an interior row of a pending run.
+  bool weights_pending(int r) const;
+  // The body-2 weights the pending rows will have (n times each run's middle row): an estimate.
+  size_t pending_weights_estimate() const;
+  // The body-2 weights and what computes them, freed once B holds them (the stacked rows never
+  // had them).
+  void release_mortar_weights() {
+    std::vector<int>().swap(body2_node);
+    std::vector<double>().swap(weight2);
+    std::vector<Point>().swap(vector2);
+    std::vector<PendingRun>().swap(pending);
+  }
+};
+
+// The body-2 weights of rows row after row: the stored ones (start2) as they are, a pending
+// run's interior rows computed: row k is sum_j (D^-1)_kj R_j, the same arithmetic, term for term
+// and in the same order, as when they were stored.
+class MortarWeights {
+public:
+  explicit MortarWeights(const ConstraintRows &rows);
+  ~MortarWeights();
+  // Row r's body-2 nodes (ascending) and weights, and its vector2 entries (empty unless the rows
+  // have them).
+  void row(int r, std::vector<int> &nodes, std::vector<double> &weights, std::vector<Point> &vectors);
+
+private:
+  struct Work;
+  const ConstraintRows &rows_;
+  std::unique_ptr<Work> work_;
 };
 
 // measure: the weight of the mortar integrals (the dual basis is biorthogonal in it).

@@ -208,7 +208,7 @@ void weak_mortar_rows(const ContactGeometry &g, const ContactRun &run, bool quad
     if (run.trace[k1].is_position()) add_values(run.trace[k1].a, e, at_end, 1.0), elements_at[run.trace[k1].a]++;
     // The middle of the element's body-1 edge, if the element holds it: s is affine in the
     // edge's parameter xi along an element (one edge, or a part of it).
-    const std::vector<QuadraturePoint> &qs = run.elements[e];
+    const ElementPoints qs = run.elements[e];
     if (qs.size() < 2) continue;
     const QuadraturePoint &qa = qs.front(), &qb = qs.back();
     const int mid = g.segment_positions[qa.segment1][2];

@@ -117,12 +117,7 @@ void Model::reduce_body(int b, BodyWork &work) {
   sys->solve_dofs.clear();
   for (int i = 0; i < ndof; ++i)
     if (!excluded[i]) sys->solve_index[i] = int(sys->solve_dofs.size()), sys->solve_dofs.push_back(i);
-  sys->interface.clear();
-  if (contact_) {
-    std::vector<char> mark(ndof, 0);
-    for (int dof : contact_->b_dof[b])
-      if (sys->solve_index[dof] >= 0 && !mark[dof]) mark[dof] = 1, sys->interface.push_back(dof);
-  }
+  find_interface(b);  // (B partial, the sparse path forced: found again when it is complete)
   Stopwatch watch(work.infos.t_assembly);
   sys->reduced = sys->stiffness.principal_submatrix(sys->solve_index, int(sys->solve_dofs.size()));
 }

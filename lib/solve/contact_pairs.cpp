@@ -95,7 +95,7 @@ void Model::check_contact_pairs() const {
   }
 }
 
-std::unique_ptr<ContactSystem> Model::build_contact_system() {
+std::unique_ptr<ContactSystem> Model::build_contact_system(bool partial_b) {
   const double t_geometry = now();
   auto cs = std::make_unique<ContactSystem>();
   SurfaceOptions surface_options;
@@ -171,102 +171,49 @@ std::unique_ptr<ContactSystem> Model::build_contact_system() {
       }
     }
   }
-  // 3. The stacked rows and B per body: a row's non-mortar part acts on its group's non-mortar
-  //    body, its mortar part (-weights) on the mortar body.
-  //    With friction, each row of a pair with friction also gets its tangential row (the same
-  //    weights along t = (-n_y, n_x)), kept aside and stacked after all normal rows.
+  // 3. The stacked rows and B per body (contact_b.cpp): a row's non-mortar part acts on its
+  //    group's non-mortar body, its mortar part (-weights) on the mortar body. With friction,
+  //    each row of a pair with friction also gets its tangential row (the same weights along
+  //    t = (-n_y, n_x)), stacked after all normal rows.
   const int n = n_bodies();
-  cs->b_start.assign(n, std::vector<int>{0});
-  cs->b_dof.assign(n, {}), cs->b_value.assign(n, {});
   cs->body_rows.assign(n, {});
-  std::vector<std::vector<int>> t_start(n, std::vector<int>{0}), t_dof(n);
-  std::vector<std::vector<double>> t_value(n);
   std::vector<std::pair<int, int>> t_bodies;  // per tangential row: (non-mortar, mortar) body
-  // B's entries, at most two per weight (and as many again for the tangential rows), reserved:
-  // a long interface's B holds millions (some 60 mortar weights a row), and grown entry by entry
-  // its arrays were copied into fresh memory again and again: with first touches of new pages
-  // dear, a third of the geometry's time (docs/notes/contact-geometry-cost.md).
-  {
-    std::vector<size_t> entries(n, 0), t_entries(n, 0);
-    size_t rows = 0;
-    for (const ContactGroup &group : cs->groups) {
-      const bool friction = group_friction(group).friction_law != MC_FRICTION_NONE;
-      const size_t nonmortar = 2 * group.rows.position1.size(), mortar = 2 * group.rows.body2_node.size();
-      entries[group.nonmortar] += nonmortar, entries[group.mortar] += mortar;
-      if (friction) t_entries[group.nonmortar] += nonmortar, t_entries[group.mortar] += mortar;
-      rows += size_t(group.rows.size()) * (friction ? 2 : 1);
-    }
-    for (int b = 0; b < n; ++b) {
-      cs->b_dof[b].reserve(entries[b] + t_entries[b]), cs->b_value[b].reserve(entries[b] + t_entries[b]);
-      cs->b_start[b].reserve(rows + 1);
-      t_dof[b].reserve(t_entries[b]), t_value[b].reserve(t_entries[b]);
-    }
-  }
   for (size_t k = 0; k < cs->groups.size(); ++k) {
-    ContactGroup &group = cs->groups[k];
+    const ContactGroup &group = cs->groups[k];
     const ConstraintRows &rows = group.rows;
     const ContactPair &lead = group_friction(group);
     const bool friction = lead.friction_law != MC_FRICTION_NONE;
     stack_rows(cs->rows, rows, group.first_position);
     for (int j = 0; j < group.positions(); ++j) cs->position_group.push_back(int(k));
     for (int a = 0; a < rows.aux_count; ++a) cs->aux_group.push_back(int(k));
-    const bool vectors = !rows.vector1.empty();  // each entry with its own direction
     for (int r = 0; r < rows.size(); ++r) {
       cs->row_group.push_back(int(k));
-      const Point normal = rows.normal[r];
-      // (A host body's freedom without an equation is restrained: it adds nothing to B.)
-      auto add = [&](int b, int node, Point v) {
-        for (int c = 0; c < 2; ++c) {
-          const int dof = dof_of(b, node, c);
-          if (dof >= 0) cs->b_dof[b].push_back(dof), cs->b_value[b].push_back(c == 0 ? v.x : v.y);
-        }
-      };
-      for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p)
-        add(group.nonmortar, group.geometry.nodes[rows.position1[p]],
-            vectors ? rows.vector1[p] : scaled(normal, rows.weight1[p]));
-      for (int p = rows.start2[r]; p < rows.start2[r + 1]; ++p)
-        add(group.mortar, rows.body2_node[p], scaled(vectors ? rows.vector2[p] : scaled(normal, rows.weight2[p]), -1));
       const int row = group.first_row + r;
-      for (int b = 0; b < n; ++b) cs->b_start[b].push_back(int(cs->b_dof[b].size()));
       cs->body_rows[group.nonmortar].push_back(row);
       if (group.mortar != group.nonmortar) cs->body_rows[group.mortar].push_back(row);
       if (!friction) continue;
-      auto add_t = [&](int b, int node, Point v) {
-        const Point t{-v.y, v.x};
-        for (int c = 0; c < 2; ++c) {
-          const int dof = dof_of(b, node, c);
-          if (dof >= 0) t_dof[b].push_back(dof), t_value[b].push_back(c == 0 ? t.x : t.y);
-        }
-      };
-      for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p)
-        add_t(group.nonmortar, group.geometry.nodes[rows.position1[p]],
-              vectors ? rows.vector1[p] : scaled(normal, rows.weight1[p]));
-      for (int p = rows.start2[r]; p < rows.start2[r + 1]; ++p)
-        add_t(group.mortar, rows.body2_node[p], scaled(vectors ? rows.vector2[p] : scaled(normal, rows.weight2[p]), -1));
-      for (int b = 0; b < n; ++b) t_start[b].push_back(int(t_dof[b].size()));
       cs->tangent_of.push_back(row);
       cs->friction_law.push_back(lead.friction_law);
       cs->friction_bound.push_back(0);  // (set at every solve: refresh_friction)
       t_bodies.emplace_back(group.nonmortar, group.mortar);
     }
-    // B holds the mortar weights from here on: the group's copy goes (on a long interface each
-    // mortar row has some 60 of them); the stacked rows never had them.
-    std::vector<int>().swap(group.rows.body2_node);
-    std::vector<double>().swap(group.rows.weight2);
-    std::vector<Point>().swap(group.rows.vector2);
   }
-  // The tangential rows after the normal ones: row q + j.
   const int q_normal = cs->rows.size();
   for (size_t j = 0; j < cs->tangent_of.size(); ++j) {
-    for (int b = 0; b < n; ++b) {
-      for (int p = t_start[b][j]; p < t_start[b][j + 1]; ++p)
-        cs->b_dof[b].push_back(t_dof[b][p]), cs->b_value[b].push_back(t_value[b][p]);
-      cs->b_start[b].push_back(int(cs->b_dof[b].size()));
-    }
     const int row = q_normal + int(j);
     cs->body_rows[t_bodies[j].first].push_back(row);
     if (t_bodies[j].second != t_bodies[j].first) cs->body_rows[t_bodies[j].second].push_back(row);
   }
+  {
+    BArrays b;
+    assemble_b(*cs, !partial_b, b);
+    cs->b_start = std::move(b.start), cs->b_dof = std::move(b.dof), cs->b_value = std::move(b.value);
+    cs->b_partial = partial_b;
+  }
+  // B holds the mortar weights from here on: the groups' copies go (the stacked rows never had
+  // them); a partial B keeps what completes it.
+  if (!partial_b)
+    for (ContactGroup &group : cs->groups) group.rows.release_mortar_weights();
   // Stacked vectors exist for every entry or for none (a group without them: its normal times
   // its weight).
   if (!cs->rows.vector1.empty() && cs->rows.vector1.size() != cs->rows.weight1.size()) {

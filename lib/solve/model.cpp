@@ -176,9 +176,11 @@ void Model::build_structure(const std::function<void(int, BodyWork &)> &then) {
   contact_.reset();
   system_.clear();
   system_.resize(body.size());
+  // The sparse path forced reads the mortar values w_a, not B's mortar weights: B is built
+  // without them and completed while its ordering runs (build_sparse_structure, complete_b).
   if (contact_active()) {
     Stopwatch watch(infos.t_contact);
-    contact_ = build_contact_system();
+    contact_ = build_contact_system(options.interface_solver == MC_INTERFACE_SPARSE);
   }
 
   // Each body's factorization and, with contact, its share of S = sum_b s_b. The sum is formed

@@ -107,6 +107,11 @@ struct ContactSystem {
   // B per body as CSR over rows: (DOF, coefficient); a body no row touches has empty rows.
   std::vector<std::vector<int>> b_start, b_dof;
   std::vector<std::vector<double>> b_value;
+  // B without the mortar weights of the rows with a mortar value (ConstraintRows::aux): the
+  // sparse path forced builds its structure from it, and completes it meanwhile (complete_b).
+  bool b_partial = false;
+  double b_completion_seconds = 0;  // what completing it took
+  bool b_completed_alongside = false;  // on a thread of its own, while the sparse path's ordering ran
   // The rows that touch each body (B_b's nonzero columns), increasing.
   std::vector<std::vector<int>> body_rows;
   // The q x q interface operator B K^+ B^T, stored by blocks of rows: block (I, J) only if a
@@ -340,7 +345,18 @@ private:
   int mode_offset(int b) const;
   // The contact pairs joined into groups, their geometry and rows stacked, B per body
   // (contact_pairs.cpp).
-  std::unique_ptr<ContactSystem> build_contact_system();
+  // partial_b: B without the mortar weights of the rows with a mortar value (the sparse path
+  // forced: completed by complete_b before anything but its structure reads B).
+  std::unique_ptr<ContactSystem> build_contact_system(bool partial_b);
+  // B per body (contact_b.cpp): out's arrays as ContactSystem::b_start, b_dof, b_value; without
+  // the mortar weights of rows with a mortar value unless mortar_values_weights.
+  struct BArrays {
+    std::vector<std::vector<int>> start, dof;
+    std::vector<std::vector<double>> value;
+  };
+  void assemble_b(const ContactSystem &cs, bool mortar_values_weights, BArrays &out) const;
+  void complete_b(const std::function<void()> &meanwhile);
+  void find_interface(int b);
   void check_contact_pairs() const;
   void contact_results(const std::vector<double> &lambda);
   // Friction (friction.cpp): the rows' laws and bounds, the frictional condensed problem, the

@@ -213,6 +213,12 @@ void Model::build_sparse_structure() {
   cs.mode_offset = offset;
   offset += cs.modes;
   st.n_unknowns = offset;
+  // G reads B of the floating bodies: complete first if a partial B lacks mortar weights of one
+  // (a floating mortar body; the strips' floating body is the non-mortar one).
+  bool g_reads_partial = false;
+  for (const ContactGroup &group : cs.groups)
+    if (system_[group.mortar] && system_[group.mortar]->rigid.count > 0 && !group.rows.pending.empty()) g_reads_partial = true;
+  if (g_reads_partial) complete_b(nullptr);
   cs.g = rigid_mode_rows();
 
   std::vector<std::pair<int, double>> entries;
@@ -278,20 +284,29 @@ void Model::build_sparse_structure() {
     const int r = cs.tangent_of[j];
     add_contact_row(r, q + int(j), Point{-rows.normal[r].y, rows.normal[r].x});
   }
-  {
+  // The structure read B's non-mortar parts and the rows without a mortar value: a partial B
+  // is completed while the ordering runs (one thread), before anything else reads it.
+  complete_b([&] {
     Stopwatch watch(infos.t_analysis);
     cs.solver.analyze(st, options.ordering);
-  }
+  });
   const double bytes = 8.0 * double(cs.solver.factor_nnz()), memory = memory_for(bytes);
   if (memory > 0 && bytes > memory)
     fail(MC_ERROR_MEMORY,
          "the sparse interface solver's factor would need about %.3g GiB and %.3g GiB are available: the model is "
          "too large for this machine's memory",
          gib(bytes), gib(memory));
-  progress(MC_LOG_PHASE,
-           "analysis: sparse interface solver, %d unknowns (%d mortar values, %d rigid modes), %d rows, %ld nonzeros "
-           "in the factor, %.3g s",
-           st.n_unknowns, 2 * rows.aux_count, cs.modes, st.rows(), cs.solver.factor_nnz(), now() - start);
+  if (cs.b_completion_seconds > 0)
+    progress(MC_LOG_PHASE,
+             "analysis: sparse interface solver, %d unknowns (%d mortar values, %d rigid modes), %d rows, %ld nonzeros "
+             "in the factor; B's mortar weights completed %s in %.3g s; %.3g s",
+             st.n_unknowns, 2 * rows.aux_count, cs.modes, st.rows(), cs.solver.factor_nnz(),
+             cs.b_completed_alongside ? "alongside" : "before it", cs.b_completion_seconds, now() - start);
+  else
+    progress(MC_LOG_PHASE,
+             "analysis: sparse interface solver, %d unknowns (%d mortar values, %d rigid modes), %d rows, %ld nonzeros "
+             "in the factor, %.3g s",
+             st.n_unknowns, 2 * rows.aux_count, cs.modes, st.rows(), cs.solver.factor_nnz(), now() - start);
 }
 
 // The sparse path's loads F = (f_b, 0, R^T f) and right-hand sides: a contact row's initial gap
