@@ -23,7 +23,8 @@
  *
  * Usage: cattaneo [--quick] [--levels n] [--h-over-a n1,n2,...] [--ratio r] [--method mortar|dual] [--fresh n]
  *                 [--one-step] [--normal mortar|nonmortar] [--load P] [--press-steps n] [--slide-steps n] [--press-friction]
- *        cattaneo --cost [--levels n | --h-over-a ...] [--repeat n]   (what friction costs: cost_table)
+ *        cattaneo --cost [--levels n | --h-over-a ...] [--repeat n] [--solver auto|condensed|sparse] [--history n]
+ *                                                                   (what friction costs: cost_table)
  *   --quick: h = a/10 and a/20, asserts bounds (about twice what they measure), exit 1 if one fails.
  *   --h-over-a: these meshes (h = a/n1, a/n2, ...) instead of a/10, a/20, ... (--levels of them);
  *   --ratio: this Q/(mu P) only; --method: this method only.
@@ -329,9 +330,17 @@ static double cpu_seconds(void) {
   return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
+/* --solver: MC_OPTION_INTERFACE_SOLVER of the timed solves (default: not set, automatic); --history:
+   the history's steps (default 10; 0: no history column, e.g. when only one solve's cost is
+   wanted: bench/interface_choice.py). With CATTANEO_LOG set, a line "timed solves: ..." on stderr
+   before each timed model's log. */
+static int cost_solver = MC_INTERFACE_AUTO, history_steps = 10;
+
 static double timed_solves(const scene *sc, int method, double mu, int steps, double d, double dx, double *cpu) {
+  if (getenv("CATTANEO_LOG")) fprintf(stderr, "timed solves: mu %g, %d steps\n", mu, steps);
   mc_model *m = scene_model_mu(sc, method, mu > 0 ? mu : -1);
   CHECK(mc_set_option_int(m, MC_OPTION_THREADS, 1));
+  if (cost_solver != MC_INTERFACE_AUTO) CHECK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, cost_solver));
   double *values = malloc(sizeof(double) * 2 * (size_t)sc->n_top);
   const double start = bench_wall(), cpu_start = cpu_seconds();
   for (int k = 1; k <= steps; ++k) {
@@ -348,7 +357,8 @@ static double timed_solves(const scene *sc, int method, double mu, int steps, do
 
 static void cost_table(int n_sizes, const int *sizes, int repeats) {
   const double a_nominal = sqrt(4 * p_target / (M_PI / (2 * (1 - NU * NU))));
-  printf("| h / a | DOFs | frictionless s | Coulomb s | Coulomb / frictionless | 10-step history s | history / one Coulomb solve | the same ratios from CPU time |\n");
+  printf("| h / a | DOFs | frictionless s | Coulomb s | Coulomb / frictionless | %d-step history s | history / one Coulomb solve | the same ratios from CPU time |\n",
+         history_steps);
   printf("|---|---|---|---|---|---|---|---|\n");
   for (int level = 0; level < n_sizes; ++level) {
     const double h = a_nominal / sizes[level];
@@ -363,7 +373,8 @@ static void cost_table(int n_sizes, const int *sizes, int repeats) {
     for (int k = 0; k < n; ++k) {
       t0[k] = timed_solves(&sc, MC_METHOD_MORTAR, 0, 1, d, r.dx, &c0[k]);
       t1[k] = timed_solves(&sc, MC_METHOD_MORTAR, MU, 1, d, r.dx, &c1[k]);
-      t10[k] = timed_solves(&sc, MC_METHOD_MORTAR, MU, 10, d, r.dx, &c10[k]);
+      t10[k] = history_steps > 0 ? timed_solves(&sc, MC_METHOD_MORTAR, MU, history_steps, d, r.dx, &c10[k]) : NAN;
+      if (history_steps == 0) c10[k] = NAN;
     }
     const double m0 = bench_median(t0, n), m1 = bench_median(t1, n), m10 = bench_median(t10, n);
     const double p0 = bench_median(c0, n), p1 = bench_median(c1, n), p10 = bench_median(c10, n);
@@ -387,6 +398,16 @@ int main(int argc, char **argv) {
     else if (!strcmp(argv[i], "--fresh") && i + 1 < argc) fresh = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--cost")) cost = 1;
     else if (!strcmp(argv[i], "--repeat") && i + 1 < argc) repeats = atoi(argv[++i]);
+    else if (!strcmp(argv[i], "--history") && i + 1 < argc) history_steps = atoi(argv[++i]);
+    else if (!strcmp(argv[i], "--solver") && i + 1 < argc) {
+      ++i;
+      cost_solver = !strcmp(argv[i], "auto") ? MC_INTERFACE_AUTO : !strcmp(argv[i], "condensed") ? MC_INTERFACE_CONDENSED
+                  : !strcmp(argv[i], "sparse") ? MC_INTERFACE_SPARSE : -1;
+      if (cost_solver < 0) {
+        fprintf(stderr, "--solver: auto, condensed or sparse\n");
+        return 2;
+      }
+    }
     else if (!strcmp(argv[i], "--one-step")) one_step = 1;
     else if (!strcmp(argv[i], "--normal") && i + 1 < argc) {
       ++i;

@@ -24,6 +24,7 @@
  *
  * usage: chain [--cells n] [--repeat r] [--threads t] [--solvers plain,condensed,sparse,auto] [N ...]
  *   N ... default 2 4 8 16
+ *   CHAIN_LOG=1: every contact solve's log messages on stderr
  * Exit status 1 if a contact pressure is off p by more than 1e-8 (relative).
  */
 #define _POSIX_C_SOURCE 200809L
@@ -56,6 +57,7 @@ static double trailing_seconds(const char *message) {
 static void note_parts(void *user, mc_log_level level, const char *message) {
   (void)level;
   parts *p = user;
+  if (getenv("CHAIN_LOG")) fprintf(stderr, "  log: %s\n", message); /* bench/interface_choice.py reads the choice */
   if (strncmp(message, "contact geometry", 16) == 0) p->geometry += trailing_seconds(message);
   if (strncmp(message, "interface operator", 18) == 0) p->interface += trailing_seconds(message);
   if (strncmp(message, "active-set solve", 16) == 0) {

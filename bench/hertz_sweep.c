@@ -31,7 +31,7 @@
  *                    [--json file] h1 [h1 ...]
  * (--threads: MC_OPTION_THREADS for every solve; default: the library's, automatic;
  *  --solvers: default auto, as before the option existed; the plain case runs once whatever
- *  the list, it has no interface)
+ *  the list, it has no interface; HERTZ_SWEEP_LOG=1: the contact solves' log messages on stderr)
  */
 #define _POSIX_C_SOURCE 200809L
 #include "bench_timing.h"
@@ -109,6 +109,13 @@ static double h1_norm_squared(const hertz_mesh *mesh, const double *u) {
 /* One solve of the scene (setup included in t_wall); fills r on the last repeat. */
 static int threads_option = -1; /* --threads: MC_OPTION_THREADS, or -1 for the library's default */
 
+/* HERTZ_SWEEP_LOG=1: every contact solve's log messages on stderr (bench/interface_choice.py
+   reads the automatic choice's estimates from them). */
+static void echo_log(void *user, mc_log_level level, const char *message) {
+  (void)user, (void)level;
+  fprintf(stderr, "  log: %s\n", message);
+}
+
 static void run_once(const hertz_scene *s, int method, int normal, int solver, int last, result *r, double *t_wall) {
   mc_model *m = NULL;
   double start = bench_wall();
@@ -134,6 +141,7 @@ static void run_once(const hertz_scene *s, int method, int normal, int solver, i
     TRY(mc_set_option_int(m, MC_OPTION_CONTACT_NORMAL, normal));
     /* auto: the option left at the library's default, as a host that does not set it */
     if (solver != MC_INTERFACE_AUTO) TRY(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, solver));
+    if (getenv("HERTZ_SWEEP_LOG")) TRY(mc_set_log_callback(m, echo_log, NULL));
   }
   TRY(mc_solve(m));
   /* results read back, as a host would */

@@ -30,6 +30,8 @@
  * usage: westergaard [-N wavelengths] [-n nodes per wavelength] [-r repeats]
  *                    [-s auto|condensed|sparse] [--both] [-t 3|4] [-d depth] [-g grading] [-p pm/p*] [--wavy-mesh]
  *   defaults: -N 100 -n 40 -r 1 -s auto -t 4 -d 1 -g 1.25 -p 0.3
+ *   WESTERGAARD_LOG=1: every contact solve's log messages on stderr (bench/interface_choice.py
+ *   reads the automatic choice's estimates from them)
  *   e.g. the closed form at increasing resolution, cheap:
  *     for n in 20 40 80 160; do build/bench/westergaard -N 4 -n $n -s condensed -r 3; done
  */
@@ -63,6 +65,7 @@ static double trailing_seconds(const char *message) {
 static void note_parts(void *user, mc_log_level level, const char *message) {
   (void)level;
   parts *p = user;
+  if (getenv("WESTERGAARD_LOG")) fprintf(stderr, "  log: %s\n", message);
   if (strncmp(message, "contact geometry", 16) == 0) p->geometry = trailing_seconds(message);
   if (strncmp(message, "interface operator", 18) == 0) p->interface = trailing_seconds(message);
   if (strncmp(message, "active-set solve", 16) == 0) p->active_set = trailing_seconds(message);

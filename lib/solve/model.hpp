@@ -316,6 +316,8 @@ private:
   // The automatic choice of interface solver (MC_OPTION_INTERFACE_SOLVER), after the bodies'
   // analyses for the condensed path; also refuses a path too large for memory. True: sparse.
   bool choose_interface_solver();
+  // The share of the contact rows apart at the start (the sparse path's active set opens them).
+  double rows_apart_at_start() const;
   // MC_ERROR_MEMORY if the condensed path's dense blocks (S, W_b, L_GG) would not fit.
   void check_condensed_fits() const;
   // The condensed path's interface operator as it will be stored (its pattern, no values):

@@ -55,10 +55,24 @@ double memory_for(double bytes) { return bytes < kMemoryQueryFrom ? 0 : availabl
 
 }  // namespace
 
-// Factorizations the sparse path is expected to need: one per active-set iteration. Measured
-// (docs/benchmarks.md, "Long contact interfaces"): 2 on the strips, 5 to 9 on the wavy
-// contact and on Hertz from the all-active start.
-constexpr double kSparseFactorizationsExpected = 6;
+// The automatic choice weighs each path's work in flops of the bodies' sparse factorizations
+// (docs/benchmarks.md, "The automatic choice, estimate against measurement", where these
+// constants were measured on every benchmark scene):
+// - a flop of the condensed path's dense BLAS-3 work (the trailing blocks of its factors, W_b and
+//   S, the active-set systems on S) costs about a sixth of one of a sparse factorization of a
+//   body: 0.04 to 0.1 s per Gflop against 0.45 to 0.7 on the strips, Westergaard, Hertz, the chain;
+constexpr double kDenseFlopWeight = 1.0 / 6;
+// - a flop of a triangular solve with the sparse path's factor (4 nnz per Krylov step) about
+//   twice one of its factorization: memory-bound, about 1 s per Gflop;
+constexpr double kSolveFlopWeight = 2;
+// - the sparse path starts from every row in contact: where the surfaces touch at the start
+//   (strips, chain) it needs 1 factorization and about 10 Krylov steps; where they are apart
+//   (Hertz, Westergaard, Cattaneo) 4 to 5 factorizations (and low-rank updates) and 50 to 143
+//   steps. Interpolated by the share of contact rows apart at the start. (The constant before,
+//   6 factorizations whatever the scene and no Krylov steps, took the sparse path on Westergaard
+//   at 25 wavelengths at 1.4 to 3 times the condensed path's time, docs/benchmarks.md.)
+constexpr double kFactorizationsTouching = 1, kFactorizationsApart = 5;
+constexpr double kKrylovStepsTouching = 10, kKrylovStepsApart = 100;
 // The condensed path is refused when it would take more than this share of the memory
 // available (MemAvailable), the sparse path when it would take more than all of it: the
 // operating system would otherwise kill the host process, which a library must not cause.
@@ -81,9 +95,24 @@ void Model::check_condensed_fits() const {
          gib(bytes), int(q), gib(memory));
 }
 
+// The share of the contact rows whose surfaces are apart at the start (an initial gap above 1e-8
+// of the row's length, round-off of flat surfaces that touch being far below): the sparse path's
+// active-set iteration opens them from its all-active start.
+double Model::rows_apart_at_start() const {
+  const ConstraintRows &rows = contact_->rows;
+  int apart = 0;
+  for (int r = 0; r < rows.size(); ++r) {
+    double length = 0;
+    for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p) length += std::fabs(rows.weight1[p]);
+    apart += row_initial_gap(r) > 1e-8 * length * length;  // (the row's gap is weighted by its length)
+  }
+  return rows.size() > 0 ? double(apart) / rows.size() : 0;
+}
+
 bool Model::choose_interface_solver() {
   const double start = now();
   ContactSystem &cs = *contact_;
+  merge_gap_offsets();  // (solve() merges them after the structure; rows_apart_at_start reads them)
   const double q = cs.b_rows();
   // The condensed path's cost from the bodies' analyses (interface last): their factors, each
   // body's W_b = L_GG^-1 B_G^T (ng x q) and its dense L_GG copy, S (q x q); time: the
@@ -101,12 +130,17 @@ bool Model::choose_interface_solver() {
   }
   const CondensedOperatorCost interface_operator = condensed_operator_cost();
   const double condensed_bytes = 8 * nnz + extra_bytes + interface_operator.bytes;
-  const double condensed_flops = flops + extra_flops + interface_operator.flops;
   // The sparse path: about the bodies' factorization without the dense trailing blocks, once
-  // per active-set iteration.
+  // per expected factorization, and a solve with that factor per expected Krylov step.
   const double plain_flops = std::max(flops - dense_block_flops, 0.05 * flops);
-  const double sparse_flops = kSparseFactorizationsExpected * plain_flops;
-  const double sparse_bytes = 8 * std::max(nnz - dense_block_nnz, 0.05 * nnz);
+  const double plain_nnz = std::max(nnz - dense_block_nnz, 0.05 * nnz);
+  const double dense_flops = std::min(dense_block_flops, flops) + extra_flops + interface_operator.flops;
+  const double condensed_flops = plain_flops + kDenseFlopWeight * dense_flops;
+  const double apart = rows_apart_at_start();
+  const double factorizations = kFactorizationsTouching + apart * (kFactorizationsApart - kFactorizationsTouching);
+  const double krylov_steps = kKrylovStepsTouching + apart * (kKrylovStepsApart - kKrylovStepsTouching);
+  const double sparse_flops = factorizations * plain_flops + krylov_steps * kSolveFlopWeight * 4 * plain_nnz;
+  const double sparse_bytes = 8 * plain_nnz;
   const double memory = memory_for(condensed_bytes);
   bool analysed = true;  // analyze_body skips an interface too long for the condensed path
   for (int b = 0; b < n_bodies(); ++b)
@@ -123,14 +157,17 @@ bool Model::choose_interface_solver() {
     return false;
   }
   const bool sparse = !condensed_fits || sparse_flops < condensed_flops;
+  // The estimates in flops of a sparse factorization: the condensed path's dense work weighed
+  // by kDenseFlopWeight, the sparse path's solves by kSolveFlopWeight.
   progress(MC_LOG_PHASE,
-           "interface solver: %s (automatic: %s; condensed estimated %.3g flops and %.3g GiB, sparse %.0f x %.3g flops "
-           "and %.3g GiB, for %d contact rows), %.3g s",
+           "interface solver: %s (automatic: %s; condensed estimated %.3g flops (%.3g dense) and %.3g GiB, sparse "
+           "estimated %.3g flops (%.2g factorizations of %.3g flops, %.0f Krylov steps; %.0f %% of the rows apart at "
+           "the start) and %.3g GiB, for %d contact rows), %.3g s",
            sparse ? "sparse" : "condensed",
            !condensed_fits ? "the condensed path would not fit in memory"
                            : sparse ? "fewer operations" : "fewer operations, and a re-solve is then nearly free",
-           condensed_flops, gib(condensed_bytes), kSparseFactorizationsExpected, plain_flops, gib(sparse_bytes), int(q),
-           now() - start);
+           condensed_flops, dense_flops, gib(condensed_bytes), sparse_flops, factorizations, plain_flops, krylov_steps,
+           100 * apart, gib(sparse_bytes), int(q), now() - start);
   return sparse;
 }
 
