@@ -65,7 +65,6 @@ static double trailing_seconds(const char *message) {
 static void note_parts(void *user, mc_log_level level, const char *message) {
   (void)level;
   parts *p = user;
-  if (getenv("WESTERGAARD_LOG")) fprintf(stderr, "  log: %s\n", message);
   if (strncmp(message, "contact geometry", 16) == 0) p->geometry = trailing_seconds(message);
   if (strncmp(message, "interface operator", 18) == 0) p->interface = trailing_seconds(message);
   if (strncmp(message, "active-set solve", 16) == 0) p->active_set = trailing_seconds(message);

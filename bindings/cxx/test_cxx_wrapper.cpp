@@ -774,10 +774,11 @@ void test_friction_errors() {
   m.reset_history();
   m.solve();
   const std::vector<double> sparse_shear = m.get_pair_contact(1, mc::ContactField::shear);
-  double largest = 0, differ = 0;
-  for (size_t j = 0; j < shear.size(); ++j)
-    largest = std::max(largest, std::fabs(shear[j])), differ = std::max(differ, std::fabs(sparse_shear[j] - shear[j]));
-  EXPECT(differ <= 1e-10 * std::max(largest, 1e-300));
+  // (tau = 0: the shear is 0 and what either path returns is round-off, compared at the scale of
+  // the load; the automatic choice takes the condensed path here, so this compares the two paths)
+  double differ = 0;
+  for (size_t j = 0; j < shear.size(); ++j) differ = std::max(differ, std::fabs(sparse_shear[j] - shear[j]));
+  EXPECT(differ <= 1e-10 * kFricP);
 }
 }  // namespace
 
