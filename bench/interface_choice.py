@@ -236,7 +236,7 @@ def fmt(x, digits=3):
 
 def markdown(results):
     head = ("| scene | size | DOFs | contact rows | auto took | estimate condensed Gflop | estimate sparse Gflop | "
-            "estimate c/s | plain s | condensed s | sparse s | measured c/s | auto s | auto / faster | "
+            "estimate c/s | plain s | condensed s | sparse s | measured c/s | auto took the faster path | auto s | auto / faster | "
             "condensed s/Gflop | sparse s/Gflop | sparse expected: factorizations, Krylov steps | "
             "sparse measured: factorizations, updates, Krylov steps |")
     lines = [head, "|" + "---|" * head.count(" | ") + "---|"]
@@ -247,10 +247,16 @@ def markdown(results):
         faster = min(x for x in (c, s) if x) if (c or s) else None
         ratio = a / faster if a and faster else None
         flag = "**%.2f**" % ratio if ratio and ratio > FLAG else fmt(ratio, 3)
-        lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+        if c and s:
+            better = "condensed" if c < s else "sparse"
+            right = ("yes" if ran == better else "either (within 10 %)" if max(c, s) <= FLAG * min(c, s)
+                     else "**no** (%.2f ×)" % (max(c, s) / min(c, s)))
+        else:
+            right = "—"
+        lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
             TITLES[r["scene"]], r["size"], r.get("dofs", "—"), q if q is not None else "—", ran, fmt(c_est), fmt(s_est),
             fmt(c_est / s_est if c_est and s_est else None), fmt(r["plain"]), fmt(c), fmt(s),
-            fmt(c / s if c and s else None), fmt(a), flag, fmt(c / c_est if c and c_est else None),
+            fmt(c / s if c and s else None), right, fmt(a), flag, fmt(c / c_est if c and c_est else None),
             fmt(s / s_est if s and s_est else None), expected, r["work"]))
     return "\n".join(lines)
 
