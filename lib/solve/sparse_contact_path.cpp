@@ -68,9 +68,10 @@ constexpr double kSolveFlopWeight = 2;
 // - the sparse path starts from every row in contact: where the surfaces touch at the start
 //   (strips, chain) it needs 1 factorization and about 10 Krylov steps; where they are apart
 //   (Hertz, Westergaard, Cattaneo) 4 to 5 factorizations (and low-rank updates) and 50 to 143
-//   steps. Interpolated by the share of contact rows apart at the start. (The constant before,
-//   6 factorizations whatever the scene and no Krylov steps, took the sparse path on Westergaard
-//   at 25 wavelengths at 1.4 to 3 times the condensed path's time, docs/benchmarks.md.)
+//   steps (22 to 49 frictionless since the sets on the way are judged by the Krylov solve alone;
+//   97 to 275 with friction). Interpolated by the share of contact rows apart at the start. (The
+//   constant before, 6 factorizations whatever the scene and no Krylov steps, took the sparse
+//   path on Westergaard at 25 wavelengths at 1.3 to 3 times the condensed path's time.)
 constexpr double kFactorizationsTouching = 1, kFactorizationsApart = 5;
 constexpr double kKrylovStepsTouching = 10, kKrylovStepsApart = 100;
 // The condensed path is refused when it would take more than this share of the memory
