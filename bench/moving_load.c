@@ -152,16 +152,6 @@ static int read_answer(const mc_model *m, const scene *s, double loaded, step_an
   return bad;
 }
 
-static int compare_doubles(const void *a, const void *b) {
-  const double x = *(const double *)a, y = *(const double *)b;
-  return (x > y) - (x < y);
-}
-
-static double median(double *v, int n) {
-  qsort(v, (size_t)n, sizeof *v, compare_doubles);
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 static void usage(void) {
   fprintf(stderr, "usage: moving_load [--steps n] [--repeat n] [--solver auto|condensed|sparse] [--log] [nx ...]\n");
 }
@@ -259,8 +249,8 @@ int main(int argc, char **argv) {
       }
       free(last_pressure);
     }
-    const double t_plain = median(plain, repeat), t_first = median(first, repeat), t_steps = median(sum, repeat);
-    const double t_step = median(step_time, repeat * steps);
+    const double t_plain = bench_median(plain, repeat), t_first = bench_median(first, repeat), t_steps = bench_median(sum, repeat);
+    const double t_step = bench_median(step_time, repeat * steps);
     printf("| %d | %ld | %ld | %s | %.3f | %.3f | %.2f | %.3f | %.2f | %.3f | %.1e | %.1e |\n", nx, (long)q, (long)dofs,
            ran == MC_INTERFACE_SPARSE ? "sparse" : ran == MC_INTERFACE_CONDENSED ? "condensed" : "?", t_plain, t_first,
            t_first / t_plain, t_steps, t_steps / t_first, t_step, worst_balance, fresh_difference);

@@ -57,36 +57,29 @@ void Model::assemble_b(const ContactSystem &cs, bool mortar_values_weights, BArr
     for (int r = 0; r < rows.size(); ++r) {
       const Point normal = rows.normal[r];
       // (A host body's freedom without an equation is restrained: it adds nothing to B.)
-      auto add = [&](int b, int node, Point v) {
-        for (int c = 0; c < 2; ++c) {
-          const int dof = dof_of(b, node, c);
-          if (dof >= 0) out.dof[b].push_back(dof), out.value[b].push_back(c == 0 ? v.x : v.y);
-        }
-      };
       const bool with_mortar = mortar_values_weights || rows.aux[r] < 0;
       if (with_mortar) mortar.row(r, nodes, weights, vectors2);
-      for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p)
-        add(group.nonmortar, group.geometry.nodes[rows.position1[p]],
-            vectors ? rows.vector1[p] : scaled(normal, rows.weight1[p]));
-      if (with_mortar)
-        for (size_t p = 0; p < nodes.size(); ++p)
-          add(group.mortar, nodes[p], scaled(vectors ? vectors2[p] : scaled(normal, weights[p]), -1));
-      for (int b = 0; b < n; ++b) out.start[b].push_back(int(out.dof[b].size()));
-      if (!friction) continue;
-      auto add_t = [&](int b, int node, Point v) {
-        const Point t{-v.y, v.x};
-        for (int c = 0; c < 2; ++c) {
-          const int dof = dof_of(b, node, c);
-          if (dof >= 0) t_dof[b].push_back(dof), t_value[b].push_back(c == 0 ? t.x : t.y);
-        }
-      };
-      for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p)
-        add_t(group.nonmortar, group.geometry.nodes[rows.position1[p]],
+      // One row of B into (dofs, values, starts): each entry's vector v, or t = (-v_y, v_x) for
+      // the tangential row.
+      auto add_row = [&](std::vector<std::vector<int>> &dofs, std::vector<std::vector<double>> &values,
+                         std::vector<std::vector<int>> &starts, bool tangential) {
+        auto add = [&](int b, int node, Point v) {
+          if (tangential) v = Point{-v.y, v.x};
+          for (int c = 0; c < 2; ++c) {
+            const int dof = dof_of(b, node, c);
+            if (dof >= 0) dofs[b].push_back(dof), values[b].push_back(c == 0 ? v.x : v.y);
+          }
+        };
+        for (int p = rows.start1[r]; p < rows.start1[r + 1]; ++p)
+          add(group.nonmortar, group.geometry.nodes[rows.position1[p]],
               vectors ? rows.vector1[p] : scaled(normal, rows.weight1[p]));
-      if (with_mortar)
-        for (size_t p = 0; p < nodes.size(); ++p)
-          add_t(group.mortar, nodes[p], scaled(vectors ? vectors2[p] : scaled(normal, weights[p]), -1));
-      for (int b = 0; b < n; ++b) t_start[b].push_back(int(t_dof[b].size()));
+        if (with_mortar)
+          for (size_t p = 0; p < nodes.size(); ++p)
+            add(group.mortar, nodes[p], scaled(vectors ? vectors2[p] : scaled(normal, weights[p]), -1));
+        for (int b = 0; b < n; ++b) starts[b].push_back(int(dofs[b].size()));
+      };
+      add_row(out.dof, out.value, out.start, false);
+      if (friction) add_row(t_dof, t_value, t_start, true);
     }
   }
   // The tangential rows after the normal ones: row q + j.
