@@ -40,6 +40,7 @@
 
 static const double kPressure = 0.01;
 static int echo_log;
+static double weight; /* --weight q: a pressure q on the whole top of body 1 besides the window's */
 
 /* What the log says of one solve: factorizations and factor updates of the active-set solve. */
 typedef struct solve_log {
@@ -118,11 +119,20 @@ static double load_step(mc_model *m, const scene *s, int k) {
     edges[2 * count] = a, edges[2 * count + 1] = b, p[count++] = kPressure;
     loaded += fabs(xb - xa);
   }
-  const mc_status st = mc_clear_loads(m, 1) || mc_add_pressure(m, 1, count, edges, p);
+  mc_status st = mc_clear_loads(m, 1) || mc_add_pressure(m, 1, count, edges, p);
+  if (!st && weight > 0) {
+    double *q = malloc(sizeof(double) * (size_t)n);
+    for (mc_int e = 0; e < n; ++e) q[e] = weight;
+    st = mc_add_pressure(m, 1, n, top->side_edges[SC_TOP], q);
+    free(q);
+  }
   free(edges), free(p);
   if (st) fprintf(stderr, "loads: %s\n", mc_errmsg(m));
   return st ? -1 : loaded;
 }
+
+/* The total of the loads of a step whose window covers `loaded` (the weight's share included). */
+static double total_load(const scene *s, double loaded) { return kPressure * loaded + weight * s->length; }
 
 /* 3. What one step's answer says: active rows and the zone's ends, and the balance of forces. */
 typedef struct step_answer {
@@ -144,7 +154,7 @@ static int read_answer(const mc_model *m, const scene *s, double loaded, step_an
     const double x = s->mesh[0].xy[2 * nodes[j]];
     a->active++, a->left = fmin(a->left, x), a->right = fmax(a->right, x);
   }
-  a->balance = fabs(total - kPressure * loaded) / (kPressure * loaded);
+  a->balance = fabs(total - total_load(s, loaded)) / total_load(s, loaded);
   int64_t v = 0;
   mc_get_info_int(m, MC_INFO_ITERATIONS, &v), a->iterations = (long)v;
   mc_get_info_real(m, MC_INFO_COMPLEMENTARITY, &a->complementarity);
@@ -153,7 +163,7 @@ static int read_answer(const mc_model *m, const scene *s, double loaded, step_an
 }
 
 static void usage(void) {
-  fprintf(stderr, "usage: moving_load [--steps n] [--repeat n] [--solver auto|condensed|sparse] [--log] [nx ...]\n");
+  fprintf(stderr, "usage: moving_load [--steps n] [--repeat n] [--solver auto|condensed|sparse] [--weight q] [--log] [nx ...]\n");
 }
 
 int main(int argc, char **argv) {
@@ -163,6 +173,7 @@ int main(int argc, char **argv) {
     if (!strcmp(a, "--log")) echo_log = 1;
     else if (next && !strcmp(a, "--steps")) steps = atoi(next), ++i;
     else if (next && !strcmp(a, "--repeat")) repeat = atoi(next), ++i;
+    else if (next && !strcmp(a, "--weight")) weight = atof(next), ++i;
     else if (next && !strcmp(a, "--solver")) {
       ++i;
       if (!strcmp(next, "auto")) solver = MC_INTERFACE_AUTO;

@@ -12,12 +12,31 @@ namespace mc {
 // When the rows to hold differ from the factor's by a few (an active-set iteration or a load step
 // that moves the ends of the contact zone), H_P = H_0 + sum_r sign_r P_r c_r^T c_r is a rank-k
 // change of the factorized H_0: its inverse is H_0^-1 - Z M^-1 Z^T with Z = H_0^-1 C_k^T and
-// M = diag(1 / (sign_r P_r)) + C_k Z (Sherman-Morrison-Woodbury), k solves and a k x k LU
-// instead of a factorization. Taken when the k solves cost under half a factorization and Z
-// takes under half the factor's memory. The answer stays exact: the refinement works on the KKT
-// system's own residuals (solve_on_active_set), whatever H_P^-1 was applied. Removing a row
-// cancels P_r against c_r H_0^-1 c_r^T (about 1/P_r, kAugmentation larger than their
-// difference): the update loses some 3 digits, which the refinement wins back.
+// M = diag(1 / (sign_r P_r)) + C_k Z (Sherman-Morrison-Woodbury), a k x k LU instead of a
+// factorization. Z's columns are kept from one set to the next (a row that still differs keeps
+// its column: its sign has not changed), so that an iteration pays one solve per row that
+// newly differs. The answer stays exact: the refinement works on the KKT system's own residuals
+// (solve_on_active_set), whatever H_P^-1 was applied. Removing a row cancels P_r against
+// c_r H_0^-1 c_r^T (about 1/P_r, kAugmentation larger than their difference): the update loses
+// some 3 digits, which the refinement wins back.
+namespace {
+// What a numeric factorization costs in solves with its factor (one right-hand side), measured
+// on two cores (docs/notes/interface-solver.md, "Updates against factorizations"): 28 on the
+// long strips' H_P (simplicial, 97335 unknowns, 0.129 s against 4.6 ms), 23 on Hertz at h =
+// 0.004 (supernodal, 2.2e5 unknowns, 0.52 s against 23 ms), 22 at h = 0.0025 (0.7 s against
+// 32 ms a column of an update). CHOLMOD's flop counts put them 8.6, 47 and 61 solves apart: a
+// solve runs at memory speed and a factorization of small supernodes far below BLAS-3 speed,
+// so flops would have taken updates of 29 rows on Hertz that cost as much as a factorization.
+constexpr double kFactorizationSolves = 20;
+// Below this many flops a factorization takes a few milliseconds and the counts were not
+// measured: there the flops decide, as before the measurement (every small scene of the test
+// suite: an update loses some digits that a factorization of such a size costs nothing to keep).
+constexpr double kMeasuredFromFlops = 5e7;
+// An update is taken when its new solves cost under half a factorization, and Z (n x k) takes
+// under half the factor's memory.
+constexpr double kUpdateShare = 0.5;
+}  // namespace
+
 bool SparseContactSolver::update_from_factor(const std::vector<char> &active, SparseContactResult &result) {
   const SparseContactStructure &s = *structure_;
   if (factor_set_.size() != active.size()) return false;
@@ -25,19 +44,43 @@ bool SparseContactSolver::update_from_factor(const std::vector<char> &active, Sp
   for (int r = 0; r < s.rows(); ++r)
     if (s.row_is_inequality[r] && active[r] != factor_set_[r]) rows.push_back(r);
   const int n = s.n_unknowns, k = int(rows.size());
-  const double solve_flops = 4.0 * double(cholesky_.factor_nnz());
   if (k == 0) {
     update_ = {}, factorized_ = active;
     return true;
   }
-  if (double(k) * solve_flops > 0.5 * flops_ || double(k) * n > 0.5 * double(cholesky_.factor_nnz())) return false;
+  // The columns of Z already computed (update_.rows is sorted, as rows is).
+  std::vector<int> kept(k, -1);
+  int fresh = 0;
+  for (int c = 0, o = 0; c < k; ++c) {
+    const std::vector<int> &old = update_.rows;
+    while (o < int(old.size()) && old[o] < rows[c]) ++o;
+    if (o < int(old.size()) && old[o] == rows[c]) kept[c] = o;
+    else ++fresh;
+  }
+  const double solves_per_factorization =
+      flops_ >= kMeasuredFromFlops ? kFactorizationSolves : flops_ / (4.0 * double(cholesky_.factor_nnz()));
+  if (double(fresh) > kUpdateShare * solves_per_factorization ||
+      double(k) * n > kUpdateShare * double(cholesky_.factor_nnz()))
+    return false;
   const double start = now();
   LowRankUpdate u;
   u.rows = rows;
   u.z.assign(size_t(n) * k, 0.0);
-  for (int c = 0; c < k; ++c)
-    for (int p = s.row_start[rows[c]]; p < s.row_start[rows[c] + 1]; ++p) u.z[size_t(c) * n + s.column[p]] = s.value[p];
-  cholesky_.solve(u.z.data(), k);
+  std::vector<double> block(size_t(n) * std::max(fresh, 1), 0.0);
+  std::vector<int> fresh_columns;
+  for (int c = 0; c < k; ++c) {
+    if (kept[c] >= 0) {
+      std::copy_n(update_.z.begin() + size_t(kept[c]) * n, n, u.z.begin() + size_t(c) * n);
+      continue;
+    }
+    const size_t f = fresh_columns.size();
+    fresh_columns.push_back(c);
+    for (int p = s.row_start[rows[c]]; p < s.row_start[rows[c] + 1]; ++p) block[f * n + s.column[p]] = s.value[p];
+  }
+  if (fresh > 0) cholesky_.solve(block.data(), fresh);
+  for (size_t f = 0; f < fresh_columns.size(); ++f)
+    std::copy_n(block.begin() + f * n, n, u.z.begin() + size_t(fresh_columns[f]) * n);
+  block = {};
   u.m.assign(size_t(k) * k, 0.0);
   double norm = 0;
   for (int c = 0; c < k; ++c) {
