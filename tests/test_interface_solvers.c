@@ -1449,6 +1449,82 @@ START_TEST(a_load_moved_along_a_long_strip) {
 }
 END_TEST
 
+/* A strip resting on another under a small pressure everywhere (a rail's weight) and a larger one
+   on a window moved along it, sparse path: the contact zone's ends move by a few rows per load
+   step, and the active sets on the way are solved through low-rank updates of the last
+   factorization that build on each other (each keeps the columns of the last,
+   lib/linalg/sparse_factor_update.cpp): at most 3 factorizations and at least 2 updates per step
+   (4 and 1 when each update starts afresh: measured), and the last step's pressures those of a
+   fresh handle solved for its load alone. */
+static double weighed_window_load(mc_model *m, const sc_mesh *top, double length, int step) {
+  const double window = strip_window_load(m, top, length, step);
+  const mc_int n = top->n_side_edges[SC_TOP];
+  double *q = malloc(sizeof(double) * (size_t)n);
+  for (mc_int e = 0; e < n; ++e) q[e] = 1e-4;
+  OK(mc_add_pressure(m, 1, n, top->side_edges[SC_TOP], q));
+  free(q);
+  return window + 1e-4 * length;
+}
+static mc_model *strips_on_sparse_path(sc_mesh b[2]) {
+  mc_model *m = NULL;
+  OK(mc_create(&m));
+  for (int body = 0; body < 2; ++body) OK(sc_set_mesh(m, body + 1, &b[body], 0)), OK(mc_set_material(m, body + 1, 1.0, 0.3));
+  const mc_int corner1 = b[0].side_nodes[SC_LEFT][0], corner2 = b[1].side_nodes[SC_LEFT][0];
+  OK(sc_fix_side(m, 2, &b[1], SC_BOTTOM, MC_Y, 0));
+  OK(mc_fix(m, 2, 1, &corner2, MC_X, NULL));
+  OK(mc_fix(m, 1, 1, &corner1, MC_X, NULL));
+  OK(mc_set_contact(m, 1, b[0].n_side_edges[SC_BOTTOM], b[0].side_edges[SC_BOTTOM]));
+  OK(mc_set_contact(m, 2, b[1].n_side_edges[SC_TOP], b[1].side_edges[SC_TOP]));
+  OK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, MC_INTERFACE_SPARSE));
+  return m;
+}
+START_TEST(load_steps_build_updates_on_updates) {
+  const int nx = 400, steps = 3;
+  const double length = 0.1 * nx;
+  sc_mesh b[2];
+  ck_assert_int_eq(sc_mesh_rect(&b[0], 3, nx, 4, 0, 0, length, 0.4, 0, 1), 0);
+  ck_assert_int_eq(sc_mesh_rect(&b[1], 3, (int)lround(1.37 * nx), 4, 0, -0.4, length, 0.4, 0, 2), 0);
+  mc_model *m = strips_on_sparse_path(b);
+  long updates = 0;
+  OK(mc_set_log_callback(m, count_updates, &updates));
+  mc_int q = 0;
+  for (int step = 0; step <= steps; ++step) {
+    const double load = weighed_window_load(m, &b[0], length, step);
+    const long updates_before = updates;
+    OK(mc_solve(m));
+    int64_t factorizations = 0, ran = 0;
+    OK(mc_get_info_int(m, MC_INFO_FACTORIZATIONS, &factorizations));
+    OK(mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &ran));
+    OK(mc_get_contact_count(m, &q));
+    double *f = malloc(sizeof(double) * (size_t)q), total = 0;
+    OK(mc_get_contact_force(m, f));
+    for (mc_int j = 0; j < q; ++j) total += f[j];
+    free(f);
+    printf("weighed strip, step %d: %ld factorizations, %ld factor updates, forces against the load %.2e\n", step,
+           (long)factorizations, updates - updates_before, fabs(total - load) / load);
+    ck_assert_int_eq(ran, MC_INTERFACE_SPARSE);
+    ck_assert_double_le(fabs(total - load), 1e-10 * load);
+    if (step > 0) {
+      ck_assert_int_le(factorizations, 3);
+      ck_assert_int_ge(updates - updates_before, 2);
+    }
+  }
+  double *last = malloc(sizeof(double) * (size_t)q), *fresh = malloc(sizeof(double) * (size_t)q);
+  OK(mc_get_contact_pressure(m, last));
+  mc_destroy(m);
+  m = strips_on_sparse_path(b);
+  weighed_window_load(m, &b[0], length, steps);
+  OK(mc_solve(m));
+  OK(mc_get_contact_pressure(m, fresh));
+  double worst = 0;
+  for (mc_int j = 0; j < q; ++j) worst = max_d(worst, fabs(last[j] - fresh[j]) / 0.01);
+  printf("weighed strip: the last step against a fresh solve %.2e p\n", worst);
+  ck_assert_double_le(worst, 1e-10);
+  free(last), free(fresh), mc_destroy(m);
+  sc_mesh_free(&b[0]), sc_mesh_free(&b[1]);
+}
+END_TEST
+
 int main(void) {
   setvbuf(stdout, NULL, _IOLBF, 0);
   Suite *suite = suite_create("interface_solvers");
@@ -1456,6 +1532,7 @@ int main(void) {
   tcase_set_timeout(tc, 300);
   tcase_add_loop_test(tc, both_paths_agree, 0, n_scenes);
   tcase_add_test(tc, factor_updates_are_exact);
+  tcase_add_test(tc, load_steps_build_updates_on_updates);
   tcase_add_test(tc, too_large_for_memory_is_an_error);
   tcase_add_test(tc, interface_too_long_for_the_condensed_path);
   tcase_add_test(tc, a_load_moved_along_a_long_strip);
