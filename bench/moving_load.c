@@ -22,8 +22,10 @@
  *   pressures equal those of a fresh handle solved for the last window alone (a re-solve gives
  *   the same answer as a first solve, to round-off).
  *
- * usage: moving_load [--steps n] [--repeat n] [--solver auto|condensed|sparse] [--log] [nx ...]
- *   default: --steps 10 --repeat 3, the solver not set (auto), nx 16000
+ * usage: moving_load [--steps n] [--repeat n] [--solver auto|condensed|sparse] [--weight q] [--log] [nx ...]
+ *   default: --steps 10 --repeat 3, the solver not set (auto), no weight, nx 16000
+ *   --weight q: a pressure q on the whole top of body 1 as well (a rail's weight), so that body 1
+ *   rests on body 2 everywhere but where the window lifts it (the balance check counts it).
  * Exit status 1 if a solve failed or a check is off by more than 1e-8, 2 on a bad command line.
  */
 #define _POSIX_C_SOURCE 200809L
