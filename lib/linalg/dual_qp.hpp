@@ -66,7 +66,10 @@ DualQpResult solve_dual_qp(const DualQp &problem, double tolerance, int max_iter
 // and a fall-back to the condensed path before, 5 and 6 after). A row released wrongly is taken
 // back by the next iteration (its gap < 0), so the answer, checked by the same complementarity
 // test, is unchanged. Once per solve: applied after every growing step the rule itself made the
-// iteration wander on that scene (tried, 2026-11-27).
+// iteration wander on that scene (tried, 2026-11-27). It applies to the set after the flips, so
+// a row entering there (its force 0: it was inactive) waits one more iteration; sparing those
+// rows made the same scene's load steps wander again from the second step at 4001 contact
+// nodes (tried, 2026-11-27, session 16), and is not done.
 constexpr double kSlackForce = 1e-3;
 void release_slack_rows(const std::vector<double> &lambda, double lambda_ref, std::vector<char> &active);
 
