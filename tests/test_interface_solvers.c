@@ -1374,6 +1374,35 @@ START_TEST(interface_too_long_for_the_condensed_path) {
 }
 END_TEST
 
+/* The strips of bench/long_interface (nx/10 long, 0.4 high, body 2 held on its bottom, both held
+   horizontally at their left corner), in contact, solved on `path`. */
+static void strips_mesh(sc_mesh b[2], int nx) {
+  const double length = 0.1 * nx;
+  ck_assert_int_eq(sc_mesh_rect(&b[0], 3, nx, 4, 0, 0, length, 0.4, 0, 1), 0);
+  ck_assert_int_eq(sc_mesh_rect(&b[1], 3, (int)lround(1.37 * nx), 4, 0, -0.4, length, 0.4, 0, 2), 0);
+}
+static mc_model *strips_model(sc_mesh b[2], int path) {
+  mc_model *m = NULL;
+  OK(mc_create(&m));
+  for (int body = 0; body < 2; ++body) OK(sc_set_mesh(m, body + 1, &b[body], 0)), OK(mc_set_material(m, body + 1, 1.0, 0.3));
+  const mc_int corner1 = b[0].side_nodes[SC_LEFT][0], corner2 = b[1].side_nodes[SC_LEFT][0];
+  OK(sc_fix_side(m, 2, &b[1], SC_BOTTOM, MC_Y, 0));
+  OK(mc_fix(m, 2, 1, &corner2, MC_X, NULL));
+  OK(mc_fix(m, 1, 1, &corner1, MC_X, NULL));
+  OK(mc_set_contact(m, 1, b[0].n_side_edges[SC_BOTTOM], b[0].side_edges[SC_BOTTOM]));
+  OK(mc_set_contact(m, 2, b[1].n_side_edges[SC_TOP], b[1].side_edges[SC_TOP]));
+  OK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, path));
+  return m;
+}
+/* The sum of the contact forces (mc_get_contact_force); q: the contact nodes. */
+static double total_contact_force(const mc_model *m, mc_int *q) {
+  OK(mc_get_contact_count(m, q));
+  double *f = malloc(sizeof(double) * (size_t)(*q > 0 ? *q : 1)), total = 0;
+  OK(mc_get_contact_force(m, f));
+  for (mc_int j = 0; j < *q; ++j) total += f[j];
+  free(f);
+  return total;
+}
 /* A strip pressed over a tenth of its length, the rest resting on the other strip at zero gap,
    the load then moved along it in 3 steps (bench/moving_load at 401 contact nodes;
    docs/robustness.md, "A load on a part of a long strip"). Before release_slack_rows the
@@ -1402,33 +1431,19 @@ START_TEST(a_load_moved_along_a_long_strip) {
   const int nx = 400;
   const double length = 0.1 * nx;
   sc_mesh b[2];
-  ck_assert_int_eq(sc_mesh_rect(&b[0], 3, nx, 4, 0, 0, length, 0.4, 0, 1), 0);
-  ck_assert_int_eq(sc_mesh_rect(&b[1], 3, (int)lround(1.37 * nx), 4, 0, -0.4, length, 0.4, 0, 2), 0);
+  strips_mesh(b, nx);
   const int paths[2] = {MC_INTERFACE_CONDENSED, MC_INTERFACE_SPARSE};
   double *pressure[2] = {NULL, NULL};
   mc_int q = 0;
   for (int k = 0; k < 2; ++k) {
-    mc_model *m = NULL;
-    OK(mc_create(&m));
-    for (int body = 0; body < 2; ++body) OK(sc_set_mesh(m, body + 1, &b[body], 0)), OK(mc_set_material(m, body + 1, 1.0, 0.3));
-    const mc_int corner1 = b[0].side_nodes[SC_LEFT][0], corner2 = b[1].side_nodes[SC_LEFT][0];
-    OK(sc_fix_side(m, 2, &b[1], SC_BOTTOM, MC_Y, 0));
-    OK(mc_fix(m, 2, 1, &corner2, MC_X, NULL));
-    OK(mc_fix(m, 1, 1, &corner1, MC_X, NULL));
-    OK(mc_set_contact(m, 1, b[0].n_side_edges[SC_BOTTOM], b[0].side_edges[SC_BOTTOM]));
-    OK(mc_set_contact(m, 2, b[1].n_side_edges[SC_TOP], b[1].side_edges[SC_TOP]));
-    OK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, paths[k]));
+    mc_model *m = strips_model(b, paths[k]);
     for (int step = 0; step <= 3; ++step) {
       const double load = strip_window_load(m, &b[0], length, step);
       OK(mc_solve(m));
       int64_t iterations = 0, ran = 0;
       OK(mc_get_info_int(m, MC_INFO_ITERATIONS, &iterations));
       OK(mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &ran));
-      OK(mc_get_contact_count(m, &q));
-      double *f = malloc(sizeof(double) * (size_t)q), total = 0;
-      OK(mc_get_contact_force(m, f));
-      for (mc_int j = 0; j < q; ++j) total += f[j];
-      free(f);
+      const double total = total_contact_force(m, &q);
       printf("moved load, %s path, step %d: %ld active-set iterations, ran %s, forces against the load %.2e\n",
              k ? "sparse" : "condensed", step, (long)iterations, ran == MC_INTERFACE_SPARSE ? "sparse" : "condensed",
              fabs(total - load) / load);
@@ -1496,26 +1511,12 @@ static double weighed_window_load(mc_model *m, const sc_mesh *top, double length
   free(q);
   return window + 1e-4 * length;
 }
-static mc_model *strips_on_sparse_path(sc_mesh b[2]) {
-  mc_model *m = NULL;
-  OK(mc_create(&m));
-  for (int body = 0; body < 2; ++body) OK(sc_set_mesh(m, body + 1, &b[body], 0)), OK(mc_set_material(m, body + 1, 1.0, 0.3));
-  const mc_int corner1 = b[0].side_nodes[SC_LEFT][0], corner2 = b[1].side_nodes[SC_LEFT][0];
-  OK(sc_fix_side(m, 2, &b[1], SC_BOTTOM, MC_Y, 0));
-  OK(mc_fix(m, 2, 1, &corner2, MC_X, NULL));
-  OK(mc_fix(m, 1, 1, &corner1, MC_X, NULL));
-  OK(mc_set_contact(m, 1, b[0].n_side_edges[SC_BOTTOM], b[0].side_edges[SC_BOTTOM]));
-  OK(mc_set_contact(m, 2, b[1].n_side_edges[SC_TOP], b[1].side_edges[SC_TOP]));
-  OK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, MC_INTERFACE_SPARSE));
-  return m;
-}
 START_TEST(load_steps_build_updates_on_updates) {
   const int nx = 400, steps = 3;
   const double length = 0.1 * nx;
   sc_mesh b[2];
-  ck_assert_int_eq(sc_mesh_rect(&b[0], 3, nx, 4, 0, 0, length, 0.4, 0, 1), 0);
-  ck_assert_int_eq(sc_mesh_rect(&b[1], 3, (int)lround(1.37 * nx), 4, 0, -0.4, length, 0.4, 0, 2), 0);
-  mc_model *m = strips_on_sparse_path(b);
+  strips_mesh(b, nx);
+  mc_model *m = strips_model(b, MC_INTERFACE_SPARSE);
   long updates = 0;
   OK(mc_set_log_callback(m, count_updates, &updates));
   mc_int q = 0;
@@ -1526,11 +1527,7 @@ START_TEST(load_steps_build_updates_on_updates) {
     int64_t factorizations = 0, ran = 0;
     OK(mc_get_info_int(m, MC_INFO_FACTORIZATIONS, &factorizations));
     OK(mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &ran));
-    OK(mc_get_contact_count(m, &q));
-    double *f = malloc(sizeof(double) * (size_t)q), total = 0;
-    OK(mc_get_contact_force(m, f));
-    for (mc_int j = 0; j < q; ++j) total += f[j];
-    free(f);
+    const double total = total_contact_force(m, &q);
     printf("weighed strip, step %d: %ld factorizations, %ld factor updates, forces against the load %.2e\n", step,
            (long)factorizations, updates - updates_before, fabs(total - load) / load);
     ck_assert_int_eq(ran, MC_INTERFACE_SPARSE);
@@ -1543,7 +1540,7 @@ START_TEST(load_steps_build_updates_on_updates) {
   double *last = malloc(sizeof(double) * (size_t)q), *fresh = malloc(sizeof(double) * (size_t)q);
   OK(mc_get_contact_pressure(m, last));
   mc_destroy(m);
-  m = strips_on_sparse_path(b);
+  m = strips_model(b, MC_INTERFACE_SPARSE);
   weighed_window_load(m, &b[0], length, steps);
   OK(mc_solve(m));
   OK(mc_get_contact_pressure(m, fresh));
