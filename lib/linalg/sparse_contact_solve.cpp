@@ -30,8 +30,9 @@ constexpr double kUpdateResidual = 1e-14;
 // instead of from every row: from every row the primal-dual iteration releases a band of rows
 // at each end of a zone per iteration (Hertz forced sparse: 12 iterations, 46, 29, 59, ... 1
 // rows). A guess the iteration corrects, chosen among 0.02, 0.05, 0.1 and 0.2 on Hertz (h1 =
-// 0.004 and 0.0025: 12 iterations -> 7, 7, 4, 8 and 6, 6, 5, 8) and Westergaard at 100
-// wavelengths (5 -> 5, 4, 3); docs/notes/interface-solver.md, "A start from the gaps".
+// 0.004: 12 iterations -> 7, 7, 4, 8; h1 = 0.0025: 12 -> 8, 6, 5, 8) and Westergaard at 100
+// wavelengths (5 -> 5, 4, 3 from 0.05 on); docs/notes/interface-solver.md, "A start from the
+// gaps".
 constexpr double kStartGap = 0.1;
 
 }  // namespace

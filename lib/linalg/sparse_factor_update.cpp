@@ -21,12 +21,13 @@ namespace mc {
 // some 3 digits, which the refinement wins back.
 namespace {
 // What a numeric factorization costs in solves with its factor (one right-hand side), measured
-// on two cores (docs/notes/interface-solver.md, "Updates against factorizations"): 28 on the
-// long strips' H_P (simplicial, 97335 unknowns, 0.129 s against 4.6 ms), 23 on Hertz at h =
-// 0.004 (supernodal, 2.2e5 unknowns, 0.52 s against 23 ms), 22 at h = 0.0025 (0.7 s against
+// on two cores (docs/notes/interface-solver.md, "Simplicial against supernodal"): 22 on the
+// long strips' H_P at 4001 contact nodes (97335 unknowns, 0.225 s against 10 ms), 23 on Hertz
+// at h1 = 0.004 (100090 unknowns, 0.52 s against 23 ms), 22 at h1 = 0.0025 (0.7 s against
 // 32 ms a column of an update). CHOLMOD's flop counts put them 8.6, 47 and 61 solves apart: a
 // solve runs at memory speed and a factorization of small supernodes far below BLAS-3 speed,
-// so flops would have taken updates of 29 rows on Hertz that cost as much as a factorization.
+// so flops would have taken updates of 29 rows on Hertz that cost as much as a factorization,
+// and refused updates of 5 rows on the strips.
 constexpr double kFactorizationSolves = 20;
 // Below this many flops a factorization takes a few milliseconds and the counts were not
 // measured: there the flops decide, as before the measurement (every small scene of the test
