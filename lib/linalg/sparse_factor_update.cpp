@@ -81,7 +81,10 @@ bool SparseContactSolver::update_from_factor(const std::vector<char> &active, Sp
   if (fresh > 0) cholesky_.solve(block.data(), fresh);
   for (size_t f = 0; f < fresh_columns.size(); ++f)
     std::copy_n(block.begin() + f * n, n, u.z.begin() + size_t(fresh_columns[f]) * n);
-  block = {};
+  // The old Z is not needed past here (a refused update is followed by a factorization): freed
+  // now rather than when the new one replaces it, after M's LU. (While its kept columns are
+  // copied both are held: up to the factor's memory, Z being capped at half of it.)
+  block = {}, update_ = {}, factorized_ = factor_set_;
   u.m.assign(size_t(k) * k, 0.0);
   double norm = 0;
   for (int c = 0; c < k; ++c) {
