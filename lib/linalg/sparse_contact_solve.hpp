@@ -74,12 +74,13 @@ public:
 
   // Solves for loads F (n_unknowns) and right-hand sides t (one per row). start: the active
   // contact rows to begin with (one per row, equations ignored), e.g. the previous solve's;
-  // empty: every contact row. `hold_modes(active)`, if given, says whether an active set holds
-  // the floating bodies (G_A of full rank); a set that does not is not factorized.
+  // empty: the rows whose initial gap (`initial_gap`, one per row; empty: target) is small, see
+  // kStartGap. `hold_modes(active)`, if given, says whether an active set holds the floating
+  // bodies (G_A of full rank); a set that does not is not factorized.
   SparseContactResult solve(const std::vector<double> &load, const std::vector<double> &target,
                             const std::vector<char> &start, double tolerance, int max_iterations,
                             const std::function<bool(const std::vector<char> &)> &hold_modes,
-                            const DualQpObserver &observe = {});
+                            const DualQpObserver &observe = {}, const std::vector<double> &initial_gap = {});
 
   // Friction (friction_iteration.hpp; sparse_friction.cpp builds the rows): the linear system of
   // one set of rows E (`set`: the rows held to C_r x = t_r; the equations always are), some of

@@ -125,14 +125,25 @@ struct ContactSystem {
   std::vector<int> w_rows;
   std::vector<char> last_active;
   // The sparse path (MC_INTERFACE_SPARSE; sparse_contact_path.cpp): its unknowns are each body's
-  // free unknowns from column_offset[b], the mortar values w (2 per ConstraintRows::aux point)
-  // from aux_offset, the rigid-mode amplitudes from mode_offset; its rows the q contact rows,
-  // then two mortar equations per aux point.
+  // unsupported unknowns from column_offset[b] (a floating body's pins included: its block is
+  // its whole stiffness on them, `floating`), the mortar values w (2 per ConstraintRows::aux
+  // point) from aux_offset; its rows the q contact rows, then two mortar equations per aux point.
   bool sparse = false;
   SparseContactStructure structure;
   SparseContactSolver solver;
   std::vector<int> column_offset;
-  int aux_offset = 0, mode_offset = 0, modes = 0;
+  // A floating body's block (rigid.count > 0): K on every DOF not prescribed, the pins of its
+  // rigid modes kept, so that the active rows hold its rigid motion directly (H_P is SPD once
+  // they do). With the pins removed and the modes' amplitudes as unknowns instead, the
+  // amplitudes' pivot was the difference of the rows' penalty stiffness and what the pinned
+  // body's bending gives back, which on a long strip held over a tenth of its length cancels
+  // to round-off (docs/robustness.md, "A load on a part of a long strip").
+  struct FloatingBlock {
+    SymmetricCsc stiffness;
+    std::vector<int> index, dofs;  // DOF -> column in the block (-1: prescribed); the block's DOFs
+  };
+  std::vector<FloatingBlock> floating;  // per body; empty for a held body
+  int aux_offset = 0, modes = 0;
   std::vector<double> g;           // G = B R, q x modes, column-major (both paths' floating bodies)
   // Friction (friction.cpp): B's rows q + j (j = 0 .. tangent_of.size() - 1) are the tangential
   // rows of normal rows tangent_of[j]: the same weights along t = (-n_y, n_x), so that row q + j
@@ -334,8 +345,17 @@ private:
   void sparse_loads(const std::vector<LoadSolve> &loads, std::vector<double> &load, std::vector<double> &target) const;
   bool rows_hold_modes(const std::vector<char> &holding) const;
   [[noreturn]] void fail_sparse_singular(const Error &error) const;
-  // The sparse path's answer x in the bodies' terms (loads[b].v) and the rigid modes' alpha.
-  void sparse_displacements(const std::vector<double> &x, std::vector<LoadSolve> &loads, std::vector<double> &alpha) const;
+  // The sparse path's answer x in the bodies' terms (loads[b].v, zero at the pins) and the rigid
+  // modes' alpha: a floating body's motion split into u = v + R alpha, as the condensed path's.
+  // x is y of sparse_rigid_shift: alpha = alpha_0 + the amplitudes of y.
+  void sparse_displacements(const std::vector<double> &x, const std::vector<double> &alpha_0,
+                            std::vector<LoadSolve> &loads, std::vector<double> &alpha) const;
+  std::vector<double> sparse_rigid_amplitudes(const std::vector<double> &x) const;  // of y alone
+  std::vector<double> sparse_rigid_shift(const std::vector<char> &near, std::vector<double> &target,
+                                         std::vector<double> &shift) const;
+  // Body b's columns in the sparse path: DOF -> column within its block (-1 prescribed), and back.
+  const std::vector<int> &sparse_index(int b) const;
+  const std::vector<int> &sparse_dofs(int b) const;
   // The condensed path (condensed_contact_path.cpp).
   void build_condensed(const std::function<void(int, BodyWork &)> &then);
   void fall_back_to_condensed(std::vector<LoadSolve> &loads);

@@ -233,23 +233,32 @@ void Model::build_sparse_structure() {
   const double start = now();
   ContactSystem &cs = *contact_;
   const ConstraintRows &rows = cs.rows;
-  const int q = rows.size(), qb = cs.b_rows();
+  const int q = rows.size();
   SparseContactStructure &st = cs.structure;
   st = SparseContactStructure{};
   int offset = 0;
   cs.modes = 0;
   cs.column_offset.assign(body.size(), 0);
+  cs.floating.assign(body.size(), ContactSystem::FloatingBlock{});
   for (int b = 0; b < n_bodies(); ++b) {
     cs.column_offset[b] = offset;
     if (!system_[b]) continue;
-    if (system_[b]->reduced.n > 0) st.blocks.push_back(&system_[b]->reduced), st.block_offset.push_back(offset);
-    offset += system_[b]->reduced.n;
-    cs.modes += system_[b]->rigid.count;
+    const BodySystem &sys = *system_[b];
+    const SymmetricCsc *block = &sys.reduced;
+    if (sys.rigid.count > 0) {  // K on every DOF not prescribed (ContactSystem::FloatingBlock)
+      ContactSystem::FloatingBlock &f = cs.floating[b];
+      f.index.assign(sys.stiffness.n, -1);
+      for (int i = 0; i < sys.stiffness.n; ++i)
+        if (!fixed_[b][i]) f.index[i] = int(f.dofs.size()), f.dofs.push_back(i);
+      f.stiffness = sys.stiffness.principal_submatrix(f.index, int(f.dofs.size()));
+      block = &f.stiffness;
+    }
+    if (block->n > 0) st.blocks.push_back(block), st.block_offset.push_back(offset);
+    offset += block->n;
+    cs.modes += sys.rigid.count;
   }
   cs.aux_offset = offset;
   offset += 2 * rows.aux_count;
-  cs.mode_offset = offset;
-  offset += cs.modes;
   st.n_unknowns = offset;
   // G reads B of the floating bodies: complete first if a partial B lacks mortar weights of one
   // (a floating mortar body; the strips' floating body is the non-mortar one).
@@ -274,14 +283,14 @@ void Model::build_sparse_structure() {
     entries.clear();
   };
   auto add_body_entries = [&](int b, int r) {
-    const BodySystem &sys = *system_[b];
+    const std::vector<int> &index = sparse_index(b);
     for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) {
-      const int k = sys.solve_index[cs.b_dof[b][p]];
+      const int k = index[cs.b_dof[b][p]];
       if (k >= 0) entries.emplace_back(cs.column_offset[b] + k, cs.b_value[b][p]);
     }
   };
   // A contact row (B's row b_row, of contact row r): the non-mortar body's part, the mortar
-  // body's (its weights, or -direction . w_a for a mortar value), the rigid modes'. direction:
+  // body's (its weights, or -direction . w_a for a mortar value). direction:
   // the row's normal n, or t = (-n_y, n_x) for its tangential row.
   auto add_contact_row = [&](int r, int b_row, Point direction) {
     const ContactGroup &group = cs.groups[cs.row_group[r]];
@@ -293,8 +302,6 @@ void Model::build_sparse_structure() {
       entries.emplace_back(cs.aux_offset + 2 * a, -direction.x);
       entries.emplace_back(cs.aux_offset + 2 * a + 1, -direction.y);
     }
-    for (int c = 0; c < cs.modes; ++c)
-      if (cs.g[size_t(c) * qb + b_row] != 0) entries.emplace_back(cs.mode_offset + c, cs.g[size_t(c) * qb + b_row]);
     add_row(true);
   };
   for (int r = 0; r < q; ++r) add_contact_row(r, r, rows.normal[r]);
@@ -302,13 +309,13 @@ void Model::build_sparse_structure() {
   // body's of the point's group.
   for (int a = 0; a < rows.aux_count; ++a) {
     const int mortar = cs.groups[cs.aux_group[a]].mortar;
-    const BodySystem &body2 = *system_[mortar];
+    const std::vector<int> &index2 = sparse_index(mortar);
     for (int c = 0; c < 2; ++c) {
       for (int p = rows.aux_d_start[a]; p < rows.aux_d_start[a + 1]; ++p)
         entries.emplace_back(cs.aux_offset + 2 * rows.aux_d_point[p] + c, rows.aux_d[p]);
       for (int p = rows.aux_r_start[a]; p < rows.aux_r_start[a + 1]; ++p) {
         const int dof = dof_of(mortar, rows.aux_r_node[p], c);  // (a host body's restrained freedom: none)
-        const int k = dof >= 0 ? body2.solve_index[dof] : -1;
+        const int k = dof >= 0 ? index2[dof] : -1;
         if (k >= 0) entries.emplace_back(cs.column_offset[mortar] + k, -rows.aux_r[p]);
       }
       add_row(false);
@@ -336,18 +343,18 @@ void Model::build_sparse_structure() {
          gib(bytes), gib(memory));
   if (cs.b_completion_seconds > 0)
     progress(MC_LOG_PHASE,
-             "analysis: sparse interface solver, %d unknowns (%d mortar values, %d rigid modes), %d rows, %ld nonzeros "
-             "in the factor; B's mortar weights completed %s in %.3g s; %.3g s",
+             "analysis: sparse interface solver, %d unknowns (%d mortar values, %d rigid modes held by the rows), %d "
+             "rows, %ld nonzeros in the factor; B's mortar weights completed %s in %.3g s; %.3g s",
              st.n_unknowns, 2 * rows.aux_count, cs.modes, st.rows(), cs.solver.factor_nnz(),
              cs.b_completed_alongside ? "alongside" : "before it", cs.b_completion_seconds, now() - start);
   else
     progress(MC_LOG_PHASE,
-             "analysis: sparse interface solver, %d unknowns (%d mortar values, %d rigid modes), %d rows, %ld nonzeros "
-             "in the factor, %.3g s",
+             "analysis: sparse interface solver, %d unknowns (%d mortar values, %d rigid modes held by the rows), %d "
+             "rows, %ld nonzeros in the factor, %.3g s",
              st.n_unknowns, 2 * rows.aux_count, cs.modes, st.rows(), cs.solver.factor_nnz(), now() - start);
 }
 
-// The sparse path's loads F = (f_b, 0, R^T f) and right-hand sides: a contact row's initial gap
+// The sparse path's loads F = (f_b, 0) and right-hand sides: a contact row's initial gap
 // less what the prescribed values already close; the mortar equations' share of the prescribed
 // values; a tangential row's B_t u0 (where its slip starts) less its prescribed part.
 // MC_ERROR_SINGULAR if no pushing contact forces can balance the loads of floating bodies.
@@ -359,11 +366,9 @@ void Model::sparse_loads(const std::vector<LoadSolve> &loads, std::vector<double
   load.assign(st.n_unknowns, 0.0), target.assign(nrows, 0.0);
   for (int b = 0; b < n_bodies(); ++b) {
     if (!system_[b]) continue;
-    const BodySystem &sys = *system_[b];
-    for (size_t i = 0; i < sys.solve_dofs.size(); ++i) load[cs.column_offset[b] + i] = loads[b].lifted[sys.solve_dofs[i]];
+    const std::vector<int> &dofs = sparse_dofs(b);
+    for (size_t i = 0; i < dofs.size(); ++i) load[cs.column_offset[b] + i] = loads[b].lifted[dofs[i]];
   }
-  const std::vector<double> e = rigid_mode_loads(loads);
-  for (int c = 0; c < k; ++c) load[cs.mode_offset + c] = e[c];
   // A row's prescribed part: on the bodies its unknowns hold (not the mortar body of a row with
   // a mortar value: w carries its prescribed values).
   auto less_prescribed = [&](double g, int r, int b_row) {
@@ -402,7 +407,7 @@ void Model::sparse_loads(const std::vector<LoadSolve> &loads, std::vector<double
   // friction the tangential forces may: its iteration says if nothing holds a body).
   if (k > 0 && cs.tangent_of.empty()) {
     DualQp balance;
-    balance.q = q, balance.k = k, balance.e = e;
+    balance.q = q, balance.k = k, balance.e = rigid_mode_loads(loads);
     balance.g.resize(size_t(q) * k);
     for (int c = 0; c < k; ++c)
       std::copy_n(cs.g.begin() + size_t(c) * cs.b_rows(), q, balance.g.begin() + size_t(c) * q);
@@ -437,12 +442,12 @@ void Model::fail_sparse_singular(const Error &error) const {
   for (int b = 0; b < n_bodies() && failed >= 0; ++b) {
     if (!system_[b] || !body[b].host) continue;
     const int local = failed - cs.column_offset[b];
-    if (local >= 0 && local < int(system_[b]->solve_dofs.size()))
+    if (local >= 0 && local < int(sparse_dofs(b).size()))
       fail(MC_ERROR_SINGULAR,
            "body %d: the host's stiffness is not positive definite: the sparse interface solver's factorization "
            "fails at its equation %d (a part of the body moves without resistance, beyond %s, or the matrix is not "
            "a stiffness)",
-           b + 1, system_[b]->solve_dofs[local] + index_base,
+           b + 1, sparse_dofs(b)[local] + index_base,
            system_[b]->rigid.count > 0 ? "the rigid modes found from the coordinates" : "any rigid mode");
   }
   // Elsewhere the pivot that fails is where the elimination of an indefinite part ends up, which
@@ -451,25 +456,141 @@ void Model::fail_sparse_singular(const Error &error) const {
   for (int b = 0; b < n_bodies() && failed >= 0; ++b) {
     if (!system_[b]) continue;
     const int local = failed - cs.column_offset[b];
-    if (local >= 0 && local < int(system_[b]->solve_dofs.size()))
+    if (local >= 0 && local < int(sparse_dofs(b).size()))
       fail(MC_ERROR_SINGULAR,
            "sparse interface solver: %s; the factorization failed at body %d's unknown %d (every body coupled to it "
            "through contact enters there)",
-           error.what(), b + 1, system_[b]->solve_dofs[local] + index_base);
+           error.what(), b + 1, sparse_dofs(b)[local] + index_base);
   }
   fail(MC_ERROR_SINGULAR, "sparse interface solver: %s", error.what());
 }
 
-void Model::sparse_displacements(const std::vector<double> &x, std::vector<LoadSolve> &loads,
-                                 std::vector<double> &alpha) const {
+// The floating bodies' rigid motion taken out of the sparse unknowns before the solve: x =
+// x_0 + y with x_0 = R alpha_0 on their blocks (alpha_0 the least-squares fit of G alpha to the
+// right-hand sides of the rows `near`, or of every contact row if those do not hold the modes),
+// and the rows' right-hand sides less C x_0. H x_0 is taken as 0 (K R = 0), as the condensed
+// path's u = K^+ f + R alpha does. y is then of the size of the deformation and the gaps left,
+// not of a floating body's travel: with x holding the travel (a disc 1000 cells above its
+// block, test_contact_hard) its round-off eps |x| had left 1.1e-10 of the load unbalanced.
+// Returns alpha_0 (empty if there are no floating bodies); x_0 in `shift`.
+namespace {
+// The fit's normal equations are solved when their reciprocal condition is above this (they
+// square G_S's: 1e-10 keeps 5 digits of G_S's own); else no guess is taken out (x_0 = 0).
+constexpr double kShiftConditioning = 1e-10;
+}  // namespace
+
+std::vector<double> Model::sparse_rigid_shift(const std::vector<char> &near, std::vector<double> &target,
+                                              std::vector<double> &shift) const {
   const ContactSystem &cs = *contact_;
-  alpha.assign(x.begin() + cs.mode_offset, x.begin() + cs.mode_offset + cs.modes);
+  const SparseContactStructure &st = cs.structure;
+  const int q = cs.rows.size(), qb = cs.b_rows(), k = cs.modes;
+  shift.assign(size_t(st.n_unknowns), 0.0);
+  if (k == 0) return {};
+  // 1. alpha_0: the normal equations G_S^T G_S alpha = G_S^T t_S over B's rows in S (a normal
+  //    row r < q, a tangential row q + j: friction's rows hold modes too, a shaft's rotation),
+  //    solved only if well conditioned: a mode the rows hold by round-off (a rotation of a
+  //    round shaft against its normal rows) would be fitted to round-off.
+  auto fit = [&](const std::vector<char> &rows, std::vector<double> &alpha) {
+    std::vector<double> normal(size_t(k) * k, 0.0);
+    alpha.assign(k, 0.0);
+    for (int b_row = 0; b_row < qb; ++b_row) {
+      const int row = b_row < q ? b_row : cs.tangent_row_offset + (b_row - q);  // the structure's
+      if (!rows.empty() && !rows[row]) continue;
+      for (int c = 0; c < k; ++c) {
+        const double gc = cs.g[size_t(c) * qb + b_row];
+        if (gc == 0) continue;
+        alpha[c] += gc * target[row];
+        for (int d = 0; d < k; ++d) normal[size_t(d) * k + c] += gc * cs.g[size_t(d) * qb + b_row];
+      }
+    }
+    double norm = 0;
+    for (int c = 0; c < k; ++c) {
+      double sum = 0;
+      for (int i = 0; i < k; ++i) sum += std::fabs(normal[size_t(c) * k + i]);
+      norm = std::max(norm, sum);
+    }
+    int n = k, one = 1, info = 0;
+    std::vector<int> pivots(k), iwork(k);
+    std::vector<double> work(4 * size_t(k));
+    double rcond = 0;
+    dgetrf_(&n, &n, normal.data(), &n, pivots.data(), &info);
+    if (info == 0) dgecon_("1", &n, normal.data(), &n, &norm, &rcond, work.data(), iwork.data(), &info);
+    if (info != 0 || !(rcond > kShiftConditioning)) return false;
+    dgetrs_("N", &n, &one, normal.data(), &n, pivots.data(), alpha.data(), &n, &info);
+    for (double a : alpha)
+      if (!std::isfinite(a)) info = 1;
+    return info == 0;
+  };
+  std::vector<double> alpha;
+  const bool held = (!near.empty() && fit(near, alpha)) || fit({}, alpha);
+  if (!held) return std::vector<double>(size_t(k), 0.0);  // (the iteration then says what does not hold)
+  // 2. x_0 on the floating bodies' blocks, and the right-hand sides less C x_0.
+  for (int b = 0; b < n_bodies(); ++b) {
+    if (!system_[b] || system_[b]->rigid.count == 0) continue;
+    std::vector<double> motion(system_[b]->stiffness.n, 0.0);
+    add_rigid_motion(b, alpha, motion);
+    const std::vector<int> &dofs = sparse_dofs(b);
+    for (size_t i = 0; i < dofs.size(); ++i) shift[cs.column_offset[b] + i] = motion[dofs[i]];
+  }
+  for (int r = 0; r < st.rows(); ++r) target[r] -= cs.solver.row_times(r, shift);
+  return alpha;
+}
+
+const std::vector<int> &Model::sparse_index(int b) const {
+  const ContactSystem &cs = *contact_;
+  return system_[b]->rigid.count > 0 ? cs.floating[b].index : system_[b]->solve_index;
+}
+
+const std::vector<int> &Model::sparse_dofs(int b) const {
+  const ContactSystem &cs = *contact_;
+  return system_[b]->rigid.count > 0 ? cs.floating[b].dofs : system_[b]->solve_dofs;
+}
+
+// A floating body's rigid-mode amplitudes in the sparse answer: those that carry its pins'
+// values (R restricted to the pins, k x k, is regular: the pins are chosen for that,
+// rigid_modes.cpp), so that u - R alpha vanishes at the pins as K^+'s answers do.
+std::vector<double> Model::sparse_rigid_amplitudes(const std::vector<double> &x) const {
+  const ContactSystem &cs = *contact_;
+  std::vector<double> alpha(size_t(cs.modes), 0.0);
+  for (int b = 0; b < n_bodies(); ++b) {
+    if (!system_[b] || system_[b]->rigid.count == 0) continue;
+    const RigidModes &rm = system_[b]->rigid;
+    const int k = rm.count, ndof = system_[b]->stiffness.n, offset = mode_offset(b);
+    std::vector<double> a(size_t(k) * k), rhs(k);
+    for (int i = 0; i < k; ++i) {
+      const int pin = rm.pinned_dofs[size_t(i)];
+      for (int c = 0; c < k; ++c) a[size_t(c) * k + i] = rm.modes[size_t(c) * ndof + pin];
+      const int column = cs.floating[b].index[pin];
+      rhs[i] = column >= 0 ? x[cs.column_offset[b] + column] : 0.0;
+    }
+    int n = k, one = 1, info = 0;
+    std::vector<int> pivots(k);
+    dgesv_(&n, &one, a.data(), &n, pivots.data(), rhs.data(), &n, &info);
+    if (info != 0) fail(MC_ERROR_INTERNAL, "body %d: the rigid modes at the pins are singular", b + 1);
+    for (int c = 0; c < k; ++c) alpha[size_t(offset + c)] = rhs[c];
+  }
+  return alpha;
+}
+
+void Model::sparse_displacements(const std::vector<double> &x, const std::vector<double> &alpha_0,
+                                 std::vector<LoadSolve> &loads, std::vector<double> &alpha) const {
+  const ContactSystem &cs = *contact_;
+  alpha = sparse_rigid_amplitudes(x);
   for (int b = 0; b < n_bodies(); ++b) {
     if (!system_[b]) continue;
     const BodySystem &sys = *system_[b];
-    loads[b].v.assign(sys.stiffness.n, 0.0);
-    for (size_t i = 0; i < sys.solve_dofs.size(); ++i) loads[b].v[sys.solve_dofs[i]] = x[cs.column_offset[b] + i];
+    const std::vector<int> &dofs = sparse_dofs(b);
+    std::vector<double> &v = loads[b].v;
+    v.assign(sys.stiffness.n, 0.0);
+    for (size_t i = 0; i < dofs.size(); ++i) v[dofs[i]] = x[cs.column_offset[b] + i];
+    if (sys.rigid.count == 0) continue;
+    // v = u - R alpha (the rigid modes vanish at prescribed components), exactly 0 at the pins.
+    std::vector<double> rigid_motion(sys.stiffness.n, 0.0);
+    add_rigid_motion(b, alpha, rigid_motion);
+    for (int i = 0; i < sys.stiffness.n; ++i) v[i] -= rigid_motion[i];
+    for (int pin : sys.rigid.pinned_dofs) v[pin] = 0;
   }
+  for (size_t c = 0; c < alpha_0.size(); ++c) alpha[c] += alpha_0[c];
 }
 
 bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lambda, std::vector<double> &alpha) {
@@ -487,10 +608,15 @@ bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lam
   auto hold_modes = [&](const std::vector<char> &active) { return rows_hold_modes(active); };
   std::vector<char> start_set;
   if (int(cs.last_active.size()) == q) start_set.assign(nrows, 1), std::copy(cs.last_active.begin(), cs.last_active.end(), start_set.begin());
+  // 2. The floating bodies' rigid motion guessed and taken out (sparse_rigid_shift).
+  std::vector<double> shift;
+  const std::vector<double> initial_gap(target);  // (for the start's choice of rows)
+  const std::vector<double> alpha_0 = sparse_rigid_shift(start_set, target, shift);
   const DualQpObserver observe = iteration_log(q);
   SparseContactResult result;
   try {
-    result = cs.solver.solve(load, target, start_set, options.tolerance, options.max_iterations, hold_modes, observe);
+    result = cs.solver.solve(load, target, start_set, options.tolerance, options.max_iterations, hold_modes, observe,
+                             initial_gap);
   } catch (const Error &error) {
     if (error.status() != MC_ERROR_SINGULAR) throw;
     fail_sparse_singular(error);
@@ -520,7 +646,7 @@ bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lam
          result.iterations, options.max_iterations, result.violation, options.tolerance);
   // 4. The answer in the model's terms.
   lambda.assign(result.lambda.begin(), result.lambda.begin() + q);
-  sparse_displacements(result.x, loads, alpha);
+  sparse_displacements(result.x, alpha_0, loads, alpha);
   infos.complementarity = result.violation;
   // The next solve starts from the set this one ended on, which is the factorized one: a
   // re-solve whose active set does not change factorizes nothing.

@@ -23,6 +23,13 @@ void Model::solve_sparse_friction(std::vector<LoadSolve> &loads, std::vector<dou
   Stopwatch watch(infos.t_contact);
   std::vector<double> load, target;
   sparse_loads(loads, load, target);
+  std::vector<char> start_active(cs.last_active);
+  if (int(start_active.size()) != q) start_active.assign(q, 1);  // (as the frictionless sparse path)
+  // The floating bodies' rigid motion guessed and taken out (sparse_rigid_shift).
+  std::vector<double> shift;
+  std::vector<char> near(nrows, 1);
+  std::copy(start_active.begin(), start_active.end(), near.begin());
+  const std::vector<double> alpha_0 = sparse_rigid_shift(near, target, shift);
   const FrictionProblem f = friction_problem();
   // The iteration's scales: the largest compliance of a row (the Jacobi estimate P is made from).
   FrictionScales scales;
@@ -72,12 +79,11 @@ void Model::solve_sparse_friction(std::vector<LoadSolve> &loads, std::vector<dou
         out.lambda[q + j] =
             slip_sign(state[j]) * f.bound[j] * (f.law[j] == MC_FRICTION_COULOMB ? l[f.tangent_of[j]] : 1.0);
     }
-    out.alpha.assign(x.begin() + cs.mode_offset, x.begin() + cs.mode_offset + cs.modes);
+    out.alpha = sparse_rigid_amplitudes(x);
+    for (size_t c = 0; c < alpha_0.size(); ++c) out.alpha[c] += alpha_0[c];
     out.gap_scale = gap_size;
     return true;
   };
-  std::vector<char> start_active(cs.last_active);
-  if (int(start_active.size()) != q) start_active.assign(q, 1);  // (as the frictionless sparse path)
   FrictionResult result;
   try {
     result = iterate_friction_states(f, solve_states, scales, options.tolerance, options.max_iterations, start_active,
@@ -93,7 +99,7 @@ void Model::solve_sparse_friction(std::vector<LoadSolve> &loads, std::vector<dou
   progress(MC_LOG_PHASE, "sparse friction solve: %d factorizations, %d factor updates, %d Krylov steps",
            linear.factorizations, linear.updates, linear.cg_steps);
   accept_friction(f, result, start, " (sparse)", lambda, alpha);
-  sparse_displacements(x, loads, alpha);
+  sparse_displacements(x, alpha_0, loads, alpha);
 }
 
 }  // namespace mc
