@@ -2,10 +2,9 @@
 // values and the active rows together, at the cost of a few sparse factorizations whatever the
 // length of the interface (docs/theory.md, "Two interface solvers").
 //
-// Unknowns x = (u_1, u_2, w, alpha): each body's free unknowns (supports and the pins of its
-// rigid modes removed: K_b is SPD), the mortar values w of the interior trace points
-// (ConstraintRows::aux), and the amplitudes alpha of the free rigid modes. H = diag(K_1, K_2,
-// 0, 0). Rows C x = t, each an equation (w's mortar equations, always kept) or an inequality
+// Unknowns x = (u_1, u_2, w): each body's unknowns not prescribed (a floating body's K_b is
+// singular: the active rows hold its rigid motion), and the mortar values w of the interior
+// trace points (ConstraintRows::aux). H = diag(K_1, K_2, 0) (`blocks`). Rows C x = t, each an equation (w's mortar equations, always kept) or an inequality
 // (the contact rows, C x <= t: the paper's cone K_h, (3.2)-(3.5)). The KKT system on an active
 // set A is
 //     H x + C_A^T lambda_A = F,   C_A x = t_A,   lambda = 0 off A.
