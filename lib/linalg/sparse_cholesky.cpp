@@ -123,6 +123,15 @@ void SparseCholesky::analyze(const SymmetricCsc &a, const std::vector<int> &inte
   d.interface = interface;
   if (n_ == 0) return;  // every unknown prescribed (a fully supported body): nothing to factor
   cholmod_sparse s = d.view(a);
+  // Without an interface block, CHOLMOD's own choice between a simplicial and a supernodal
+  // factor (supernodal from 40 flops per entry of L: supernodes big enough for the BLAS): a
+  // slender body's factor, or the sparse interface path's H_P of two strips, has supernodes of
+  // some 9 columns, where the BLAS calls cost more than their arithmetic (H_P of the strips at
+  // 4001 contact nodes: 0.225 s supernodal, 0.129 s simplicial LL^T; docs/notes/interface-
+  // solver.md). LL^T either way: forward() and backward() are L's own solves. The condensed
+  // path's factors (interface last) stay supernodal: interface_factor reads their trailing block.
+  d.common.supernodal = interface.empty() ? CHOLMOD_AUTO : CHOLMOD_SUPERNODAL;
+  d.common.final_ll = 1;
   if (interface.empty()) {
     d.common.nmethods = 1;
     d.common.method[0].ordering = ordering == MC_ORDERING_METIS ? CHOLMOD_METIS : CHOLMOD_AMD;
