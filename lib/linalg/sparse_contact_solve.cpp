@@ -29,7 +29,8 @@ constexpr double kUpdateResidual = 1e-14;
 // without a start begins from the rows whose initial gap is at most this share of the way from
 // the smallest (or 0, if some rows overlap) to the largest, instead of from every row (measured
 // from the smallest: a disc 10 to 1000 cells above its block took 9 to 10 iterations from the
-// largest's share, which then held every row; test_contact_hard's gaps with the sparse path): from every row the primal-dual iteration releases a band of rows
+// largest's share, which then held every row; test_contact_hard's gaps with the sparse path).
+// From every row the primal-dual iteration releases a band of rows
 // at each end of a zone per iteration (Hertz forced sparse: 12 iterations, 46, 29, 59, ... 1
 // rows). A guess the iteration corrects, chosen among 0.02, 0.05, 0.1 and 0.2 on Hertz (h1 =
 // 0.004: 12 iterations -> 7, 7, 4, 8; h1 = 0.0025: 12 -> 8, 6, 5, 8) and Westergaard at 100
@@ -334,8 +335,8 @@ SparseContactResult SparseContactSolver::solve(const std::vector<double> &load, 
   const bool warm_start = int(start.size()) == nrows;
   for (int r = 0; r < nrows; ++r) active[r] = s.row_is_inequality[r] && (warm_start ? start[r] : 1);
   // A solve without a start begins from the rows whose initial gap is within kStartGap of the
-  // way from the smallest to the largest (all of them where the surfaces touch along their length), if those hold the
-  // floating bodies, else from every row; if the iteration from there cycles, wanders or reaches
+  // way from the smallest to the largest (all of them where the surfaces touch along their
+  // length), if those hold the floating bodies, else from every row; if the iteration from there cycles, wanders or reaches
   // a set that does not hold the floating bodies, it starts again from every row.
   bool started = warm_start, from_gaps = false;
   if (!warm_start) {

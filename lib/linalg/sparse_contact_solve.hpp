@@ -4,7 +4,8 @@
 //
 // Unknowns x = (u_1, u_2, w): each body's unknowns not prescribed (a floating body's K_b is
 // singular: the active rows hold its rigid motion), and the mortar values w of the interior
-// trace points (ConstraintRows::aux). H = diag(K_1, K_2, 0) (`blocks`). Rows C x = t, each an equation (w's mortar equations, always kept) or an inequality
+// trace points (ConstraintRows::aux). H = diag(K_1, K_2, 0) (`blocks`). Rows C x = t, each an
+// equation (w's mortar equations, always kept) or an inequality
 // (the contact rows, C x <= t: the paper's cone K_h, (3.2)-(3.5)). The KKT system on an active
 // set A is
 //     H x + C_A^T lambda_A = F,   C_A x = t_A,   lambda = 0 off A.

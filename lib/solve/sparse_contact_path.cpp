@@ -465,6 +465,12 @@ void Model::fail_sparse_singular(const Error &error) const {
   fail(MC_ERROR_SINGULAR, "sparse interface solver: %s", error.what());
 }
 
+namespace {
+// The rigid-motion guess's normal equations square G_S's condition: 1e-10 keeps 5 digits of
+// G_S's own; below it no guess is taken out (x_0 = 0).
+constexpr double kShiftConditioning = 1e-10;
+}  // namespace
+
 // The floating bodies' rigid motion taken out of the sparse unknowns before the solve: x =
 // x_0 + y with x_0 = R alpha_0 on their blocks (alpha_0 the least-squares fit of G alpha to the
 // right-hand sides of the rows `near`, or of every contact row if those do not hold the modes),
@@ -472,12 +478,8 @@ void Model::fail_sparse_singular(const Error &error) const {
 // path's u = K^+ f + R alpha does. y is then of the size of the deformation and the gaps left,
 // not of a floating body's travel: with x holding the travel (a disc 1000 cells above its
 // block, test_contact_hard) its round-off eps |x| had left 1.1e-10 of the load unbalanced.
-// Returns alpha_0 (empty if there are no floating bodies); x_0 in `shift`.
-namespace {
-// The fit's normal equations are solved when their reciprocal condition is above this (they
-// square G_S's: 1e-10 keeps 5 digits of G_S's own); else no guess is taken out (x_0 = 0).
-constexpr double kShiftConditioning = 1e-10;
-}  // namespace
+// Returns alpha_0 (empty if there are no floating bodies); x_0 in `shift`. The fit's normal
+// equations are solved when their reciprocal condition is above kShiftConditioning.
 
 std::vector<double> Model::sparse_rigid_shift(const std::vector<char> &near, std::vector<double> &target,
                                               std::vector<double> &shift) const {
