@@ -93,8 +93,16 @@ def choice_of(log):
         return None
     factor = float(m.group(3)) if m.group(3) else 1.0
     expected = EXPECTED.search(log)
+    # "clear without analysing": bounds, not estimates (a lower one on the condensed path, an
+    # upper one on the sparse path; sparse_path_clear_unanalysed)
+    bounds = "clear without analysing" in m.group(0)
     return (m.group(1), float(m.group(2)) / 1e9, factor * float(m.group(4)) / 1e9, int(m.group(5)),
-            "%s, %s" % expected.groups() if expected else "%g, -" % factor)
+            "%s, %s" % expected.groups() if expected else "%g, -" % factor, bounds)
+
+
+def is_bound(choice):
+    """The choice's figures are bounds (older --json files have no such field)."""
+    return bool(choice and len(choice) > 5 and choice[5])
 
 
 def sparse_work(log):
@@ -242,7 +250,8 @@ def markdown(results):
     lines = [head, "|" + "---|" * head.count(" | ") + "---|"]
     for r in results:
         t = r["time"]
-        ran, c_est, s_est, q, expected = r["choice"] if r["choice"] else ("?", None, None, None, "-")
+        ran, c_est, s_est, q, expected = r["choice"][:5] if r["choice"] else ("?", None, None, None, "-")
+        bound = is_bound(r["choice"])
         c, s, a = t.get("condensed"), t.get("sparse"), t.get("auto")
         faster = min(x for x in (c, s) if x) if (c or s) else None
         ratio = a / faster if a and faster else None
@@ -254,10 +263,12 @@ def markdown(results):
         else:
             right = "—"
         lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
-            TITLES[r["scene"]], r["size"], r.get("dofs", "—"), q if q is not None else "—", ran, fmt(c_est), fmt(s_est),
-            fmt(c_est / s_est if c_est and s_est else None), fmt(r["plain"]), fmt(c), fmt(s),
-            fmt(c / s if c and s else None), right, fmt(a), flag, fmt(c / c_est if c and c_est else None),
-            fmt(s / s_est if s and s_est else None), expected, r["work"]))
+            TITLES[r["scene"]], r["size"], r.get("dofs", "—"), q if q is not None else "—", ran,
+            ("≥ " if bound else "") + fmt(c_est), ("≤ " if bound else "") + fmt(s_est),
+            ("≥ " if bound else "") + fmt(c_est / s_est if c_est and s_est else None), fmt(r["plain"]), fmt(c), fmt(s),
+            fmt(c / s if c and s else None), right, fmt(a), flag,
+            fmt(c / c_est if c and c_est and not bound else None),
+            fmt(s / s_est if s and s_est and not bound else None), expected, r["work"]))
     return "\n".join(lines)
 
 
@@ -278,7 +289,7 @@ def summary(results):
         if ch[0] != better and max(t["condensed"], t["sparse"]) > FLAG * faster:
             wrong.append(r)
         for path, est in (("condensed", ch[1]), ("sparse", ch[2])):
-            if est > 0:
+            if est > 0 and not is_bound(ch):
                 per_path[path].append(t[path] / est)
     spread = {p: (min(v), max(v)) for p, v in per_path.items() if v}
     return worst, wrong, spread

@@ -1612,6 +1612,79 @@ START_TEST(load_steps_build_updates_on_updates) {
 }
 END_TEST
 
+/* The automatic choice bounds each body's factorization by its envelope first (bodies' reverse
+   Cuthill-McKee envelopes, lib/linalg/envelope_bound.hpp): on the strips at 401 contact nodes
+   the condensed path's dense work alone outweighs that bound on the sparse path's, so the
+   bodies are not analysed for the condensed path (no "analysis: body" line; the choice's line
+   says so), and the answer is the sparse path's forced, bit for bit (the same computation). A
+   block with a 5-node interface on a block 10 times wider is not clear from the bounds: the
+   bodies are analysed and the condensed path chosen as before. */
+typedef struct choice_log {
+  int clear, body_analyses, condensed;
+} choice_log;
+static void note_choice(void *user, mc_log_level level, const char *message) {
+  (void)level;
+  choice_log *log = user;
+  if (strstr(message, "interface solver: sparse (automatic: fewer operations, clear without analysing")) ++log->clear;
+  if (strncmp(message, "analysis: body", 14) == 0) ++log->body_analyses;
+  if (strstr(message, "interface solver: condensed (automatic")) ++log->condensed;
+}
+START_TEST(the_automatic_choice_bounds_the_bodies_first) {
+  const int nx = 400;
+  sc_mesh b[2];
+  strips_mesh(b, nx);
+  double *pressure[2] = {NULL, NULL};
+  mc_int q[2] = {0, 0};
+  const int paths[2] = {MC_INTERFACE_AUTO, MC_INTERFACE_SPARSE};
+  choice_log log = {0, 0, 0};
+  for (int k = 0; k < 2; ++k) {
+    mc_model *m = strips_model(b, paths[k]);
+    press(m, 1, &b[0], SC_TOP, 0.01);
+    if (k == 0) OK(mc_set_log_callback(m, note_choice, &log));
+    OK(mc_solve(m));
+    int64_t ran = 0;
+    OK(mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &ran));
+    ck_assert_int_eq(ran, MC_INTERFACE_SPARSE);
+    OK(mc_get_contact_count(m, &q[k]));
+    pressure[k] = malloc(sizeof(double) * (size_t)q[k]);
+    OK(mc_get_contact_pressure(m, pressure[k]));
+    mc_destroy(m);
+  }
+  printf("automatic choice on the strips (%d contact nodes): %d clear-from-the-bounds lines, %d body analyses\n",
+         (int)q[0], log.clear, log.body_analyses);
+  ck_assert_int_eq(log.clear, 1);
+  ck_assert_int_eq(log.body_analyses, 0);
+  ck_assert_int_eq(q[0], q[1]);
+  for (mc_int j = 0; j < q[0]; ++j) ck_assert_double_eq(pressure[0][j], pressure[1][j]);
+  free(pressure[0]), free(pressure[1]);
+  sc_mesh_free(&b[0]), sc_mesh_free(&b[1]);
+
+  /* a short interface: a 4 x 2 block on a 40 x 20 one */
+  sc_mesh c[2];
+  ck_assert_int_eq(sc_mesh_rect(&c[0], 3, 4, 2, 4.5, 0, 1, 0.5, 0, 1), 0);
+  ck_assert_int_eq(sc_mesh_rect(&c[1], 3, 40, 20, 0, -5, 10, 5, 0, 2), 0);
+  mc_model *m = NULL;
+  OK(mc_create(&m));
+  for (int body = 0; body < 2; ++body) OK(sc_set_mesh(m, body + 1, &c[body], 0)), OK(mc_set_material(m, body + 1, 1.0, 0.3));
+  const mc_int corner = c[0].side_nodes[SC_LEFT][0];
+  OK(sc_fix_side(m, 2, &c[1], SC_BOTTOM, MC_X | MC_Y, 0));
+  OK(mc_fix(m, 1, 1, &corner, MC_X, NULL));
+  press(m, 1, &c[0], SC_TOP, 0.01);
+  OK(mc_set_contact(m, 1, c[0].n_side_edges[SC_BOTTOM], c[0].side_edges[SC_BOTTOM]));
+  OK(mc_set_contact(m, 2, c[1].n_side_edges[SC_TOP], c[1].side_edges[SC_TOP]));
+  choice_log short_log = {0, 0, 0};
+  OK(mc_set_log_callback(m, note_choice, &short_log));
+  OK(mc_solve(m));
+  printf("automatic choice on a short interface: %d clear-from-the-bounds lines, %d body analyses, condensed %d\n",
+         short_log.clear, short_log.body_analyses, short_log.condensed);
+  ck_assert_int_eq(short_log.clear, 0);
+  ck_assert_int_eq(short_log.body_analyses, 2);
+  ck_assert_int_eq(short_log.condensed, 1);
+  mc_destroy(m);
+  sc_mesh_free(&c[0]), sc_mesh_free(&c[1]);
+}
+END_TEST
+
 int main(void) {
   setvbuf(stdout, NULL, _IOLBF, 0);
   Suite *suite = suite_create("interface_solvers");
@@ -1625,6 +1698,7 @@ int main(void) {
   tcase_add_test(tc, interface_too_long_for_the_condensed_path);
   tcase_add_test(tc, a_load_moved_along_a_long_strip);
   tcase_add_test(tc, a_slender_strip_held_over_a_tenth);
+  tcase_add_test(tc, the_automatic_choice_bounds_the_bodies_first);
   suite_add_tcase(suite, tc);
   return sc_run_suite(suite);
 }

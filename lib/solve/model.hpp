@@ -11,6 +11,7 @@
 #include "contact/mortar_operators.hpp"
 #include "support/progress_log.hpp"
 #include "bodies/rigid_modes.hpp"
+#include "linalg/envelope_bound.hpp"
 #include "linalg/sparse_cholesky.hpp"
 #include "linalg/sparse_contact_solve.hpp"
 #include <functional>
@@ -78,6 +79,7 @@ struct BodySystem {
   SymmetricCsc reduced;
   SparseCholesky cholesky;
   std::vector<int> interface;      // DOFs (full numbering) in B, ordered last in the factor
+  EnvelopeBound envelope;          // of `reduced`, for the automatic choice (set only there)
 };
 
 // The pairs of one non-mortar and one mortar body, as one surface on each side (contact_pairs.cpp:
@@ -324,9 +326,14 @@ private:
   void check_host_rigid_candidates(int b, const RigidModes &rigid, BodyWork &work) const;
   void check_held_motions_in_factor(int b, BodyWork &work) const;
   void factorize_body(int b, BodyWork &work);
-  // The automatic choice of interface solver (MC_OPTION_INTERFACE_SOLVER), after the bodies'
-  // analyses for the condensed path; also refuses a path too large for memory. True: sparse.
-  bool choose_interface_solver();
+  // The automatic choice of interface solver (MC_OPTION_INTERFACE_SOLVER); also refuses a path
+  // too large for memory. True: sparse. It reads the bodies' analyses for the condensed path,
+  // which `analyze_bodies` makes (for the automatic choice; the condensed path forced has made
+  // them) unless the choice is clear without them (sparse_path_clear_unanalysed).
+  bool choose_interface_solver(const std::function<void()> &analyze_bodies);
+  // The condensed path's dense work alone outweighs a bound on the sparse path's (the bodies'
+  // envelopes): the sparse path, chosen without analysing the bodies for the other one.
+  bool sparse_path_clear_unanalysed(double start);
   // The share of the contact rows apart at the start (the sparse path's active set opens them).
   double rows_apart_at_start() const;
   // MC_ERROR_MEMORY if the condensed path's dense blocks (S, W_b, L_GG) would not fit.
@@ -351,8 +358,7 @@ private:
   void sparse_displacements(const std::vector<double> &x, const std::vector<double> &alpha_0,
                             std::vector<LoadSolve> &loads, std::vector<double> &alpha) const;
   std::vector<double> sparse_rigid_amplitudes(const std::vector<double> &x) const;  // of y alone
-  std::vector<double> sparse_rigid_shift(const std::vector<char> &near, std::vector<double> &target,
-                                         std::vector<double> &shift) const;
+  std::vector<double> sparse_rigid_shift(const std::vector<char> &near, std::vector<double> &target) const;
   // Body b's columns in the sparse path: DOF -> column within its block (-1 prescribed), and back.
   const std::vector<int> &sparse_index(int b) const;
   const std::vector<int> &sparse_dofs(int b) const;

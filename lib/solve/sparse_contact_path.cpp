@@ -110,10 +110,55 @@ double Model::rows_apart_at_start() const {
   return rows.size() > 0 ? double(apart) / rows.size() : 0;
 }
 
-bool Model::choose_interface_solver() {
+// The sparse path's expected factorizations and Krylov steps, by the share of the rows apart at
+// the start (the constants above).
+static double expected_factorizations(double apart) {
+  return kFactorizationsTouching + apart * (kFactorizationsApart - kFactorizationsTouching);
+}
+static double expected_krylov_steps(double apart) {
+  return kKrylovStepsTouching + apart * (kKrylovStepsApart - kKrylovStepsTouching);
+}
+
+// The choice the estimates below would make, when it is clear before the bodies are analysed
+// for the condensed path: that path's dense work (each body's trailing block, W_b and its share
+// of S, the interface operator's factorization), weighed as below, is a lower bound on its
+// estimate; the sparse path's estimate with each body's factorization bounded by its envelope
+// (envelope_bound.hpp; the minimum-degree orderings fill less) is an upper bound on its own,
+// taken kClearMargin times more. On the strips at 1001 contact nodes the lower bound is 4.5e9
+// flops and the bound on the sparse path 1e7 to 1e8: the analyses (two orderings and symbolic
+// factorizations, 15 % of the sparse path's solve) would not change the answer.
+constexpr double kClearMargin = 10;
+
+bool Model::sparse_path_clear_unanalysed(double start) {
+  const ContactSystem &cs = *contact_;
+  double dense_flops = condensed_operator_cost().flops, plain_flops = 0, plain_nnz = 0;
+  for (int b = 0; b < n_bodies(); ++b) {
+    if (!system_[b]) continue;
+    const double ng = double(system_[b]->interface.size()), qb = double(cs.body_rows[b].size());
+    dense_flops += ng * ng * ng / 3 + ng * ng * qb + ng * qb * qb;
+    plain_flops += system_[b]->envelope.flops, plain_nnz += system_[b]->envelope.nnz;
+  }
+  const double apart = rows_apart_at_start();
+  const double factorizations = expected_factorizations(apart), krylov_steps = expected_krylov_steps(apart);
+  const double condensed_at_least = kDenseFlopWeight * dense_flops;
+  const double sparse_at_most = factorizations * plain_flops + krylov_steps * kSolveFlopWeight * 4 * plain_nnz;
+  if (kClearMargin * sparse_at_most >= condensed_at_least) return false;
+  progress(MC_LOG_PHASE,
+           "interface solver: sparse (automatic: fewer operations, clear without analysing the bodies for the "
+           "condensed path; condensed estimated %.3g flops at least (%.3g dense), sparse estimated %.3g flops at "
+           "most (%.2g factorizations of %.3g flops, %.0f Krylov steps; %.0f %% of the rows apart at the start; the "
+           "bodies' envelopes), for %d contact rows), %.3g s",
+           condensed_at_least, dense_flops, sparse_at_most, factorizations, plain_flops, krylov_steps, 100 * apart,
+           cs.b_rows(), now() - start);
+  return true;
+}
+
+bool Model::choose_interface_solver(const std::function<void()> &analyze_bodies) {
   const double start = now();
   ContactSystem &cs = *contact_;
   merge_gap_offsets();  // (solve() merges them after the structure; rows_apart_at_start reads them)
+  if (options.interface_solver == MC_INTERFACE_AUTO && sparse_path_clear_unanalysed(start)) return true;
+  analyze_bodies();
   const double q = cs.b_rows();
   // The condensed path's cost from the bodies' analyses (interface last): their factors, each
   // body's W_b = L_GG^-1 B_G^T (ng x q) and its dense L_GG copy, S (q x q); time: the
@@ -138,8 +183,7 @@ bool Model::choose_interface_solver() {
   const double dense_flops = std::min(dense_block_flops, flops) + extra_flops + interface_operator.flops;
   const double condensed_flops = plain_flops + kDenseFlopWeight * dense_flops;
   const double apart = rows_apart_at_start();
-  const double factorizations = kFactorizationsTouching + apart * (kFactorizationsApart - kFactorizationsTouching);
-  const double krylov_steps = kKrylovStepsTouching + apart * (kKrylovStepsApart - kKrylovStepsTouching);
+  const double factorizations = expected_factorizations(apart), krylov_steps = expected_krylov_steps(apart);
   const double sparse_flops = factorizations * plain_flops + krylov_steps * kSolveFlopWeight * 4 * plain_nnz;
   const double sparse_bytes = 8 * plain_nnz;
   const double memory = memory_for(condensed_bytes);
@@ -478,15 +522,12 @@ constexpr double kShiftConditioning = 1e-10;
 // path's u = K^+ f + R alpha does. y is then of the size of the deformation and the gaps left,
 // not of a floating body's travel: with x holding the travel (a disc 1000 cells above its
 // block, test_contact_hard) its round-off eps |x| had left 1.1e-10 of the load unbalanced.
-// Returns alpha_0 (empty if there are no floating bodies); x_0 in `shift`. The fit's normal
-// equations are solved when their reciprocal condition is above kShiftConditioning.
-
-std::vector<double> Model::sparse_rigid_shift(const std::vector<char> &near, std::vector<double> &target,
-                                              std::vector<double> &shift) const {
+// Returns alpha_0 (empty if there are no floating bodies). The fit's normal equations are
+// solved when their reciprocal condition is above kShiftConditioning.
+std::vector<double> Model::sparse_rigid_shift(const std::vector<char> &near, std::vector<double> &target) const {
   const ContactSystem &cs = *contact_;
   const SparseContactStructure &st = cs.structure;
   const int q = cs.rows.size(), qb = cs.b_rows(), k = cs.modes;
-  shift.assign(size_t(st.n_unknowns), 0.0);
   if (k == 0) return {};
   // 1. alpha_0: the normal equations G_S^T G_S alpha = G_S^T t_S over B's rows in S (a normal
   //    row r < q, a tangential row q + j: friction's rows hold modes too, a shaft's rotation),
@@ -527,6 +568,7 @@ std::vector<double> Model::sparse_rigid_shift(const std::vector<char> &near, std
   const bool held = (!near.empty() && fit(near, alpha)) || fit({}, alpha);
   if (!held) return std::vector<double>(size_t(k), 0.0);  // (the iteration then says what does not hold)
   // 2. x_0 on the floating bodies' blocks, and the right-hand sides less C x_0.
+  std::vector<double> shift(size_t(st.n_unknowns), 0.0);
   for (int b = 0; b < n_bodies(); ++b) {
     if (!system_[b] || system_[b]->rigid.count == 0) continue;
     std::vector<double> motion(system_[b]->stiffness.n, 0.0);
@@ -611,9 +653,8 @@ bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lam
   std::vector<char> start_set;
   if (int(cs.last_active.size()) == q) start_set.assign(nrows, 1), std::copy(cs.last_active.begin(), cs.last_active.end(), start_set.begin());
   // 2. The floating bodies' rigid motion guessed and taken out (sparse_rigid_shift).
-  std::vector<double> shift;
   const std::vector<double> initial_gap(target);  // (for the start's choice of rows)
-  const std::vector<double> alpha_0 = sparse_rigid_shift(start_set, target, shift);
+  const std::vector<double> alpha_0 = sparse_rigid_shift(start_set, target);
   const DualQpObserver observe = iteration_log(q);
   SparseContactResult result;
   try {

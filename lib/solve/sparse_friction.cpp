@@ -26,10 +26,9 @@ void Model::solve_sparse_friction(std::vector<LoadSolve> &loads, std::vector<dou
   std::vector<char> start_active(cs.last_active);
   if (int(start_active.size()) != q) start_active.assign(q, 1);  // (as the frictionless sparse path)
   // The floating bodies' rigid motion guessed and taken out (sparse_rigid_shift).
-  std::vector<double> shift;
   std::vector<char> near(nrows, 1);
   std::copy(start_active.begin(), start_active.end(), near.begin());
-  const std::vector<double> alpha_0 = sparse_rigid_shift(near, target, shift);
+  const std::vector<double> alpha_0 = sparse_rigid_shift(near, target);
   const FrictionProblem f = friction_problem();
   // The iteration's scales: the largest compliance of a row (the Jacobi estimate P is made from).
   FrictionScales scales;
