@@ -118,6 +118,11 @@ void Model::reduce_body(int b, BodyWork &work) {
   for (int i = 0; i < ndof; ++i)
     if (!excluded[i]) sys->solve_index[i] = int(sys->solve_dofs.size()), sys->solve_dofs.push_back(i);
   find_interface(b);  // (B partial, the sparse path forced: found again when it is complete)
+  reduce_stiffness(b, work);
+}
+
+void Model::reduce_stiffness(int b, BodyWork &work) {
+  BodySystem *sys = system_[b].get();
   Stopwatch watch(work.infos.t_assembly);
   sys->reduced = sys->stiffness.principal_submatrix(sys->solve_index, int(sys->solve_dofs.size()));
 }

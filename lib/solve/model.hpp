@@ -320,6 +320,7 @@ private:
   void run_bodies(int threads, const std::function<void(int, BodyWork &)> &task, Infos &add_to) const;
   std::unique_ptr<BodySystem> assemble_body(int b, BodyWork &work) const;
   void reduce_body(int b, BodyWork &work);
+  void reduce_stiffness(int b, BodyWork &work);  // `reduced` from the stiffness and solve_index
   // needed: the condensed path will use it (refused if the interface is too long for it); else
   // for the automatic choice only (then skipped for such an interface, see body_phases.cpp).
   void analyze_body(int b, BodyWork &work, bool needed);

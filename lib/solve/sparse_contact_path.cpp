@@ -287,7 +287,7 @@ void Model::build_sparse_structure() {
   for (int b = 0; b < n_bodies(); ++b) {
     cs.column_offset[b] = offset;
     if (!system_[b]) continue;
-    const BodySystem &sys = *system_[b];
+    BodySystem &sys = *system_[b];
     const SymmetricCsc *block = &sys.reduced;
     if (sys.rigid.count > 0) {  // K on every DOF not prescribed (ContactSystem::FloatingBlock)
       ContactSystem::FloatingBlock &f = cs.floating[b];
@@ -296,6 +296,9 @@ void Model::build_sparse_structure() {
         if (!fixed_[b][i]) f.index[i] = int(f.dofs.size()), f.dofs.push_back(i);
       f.stiffness = sys.stiffness.principal_submatrix(f.index, int(f.dofs.size()));
       block = &f.stiffness;
+      // The condensed path's K without the pins is not used here: freed (a copy of K less), and
+      // made again if that path takes over (build_condensed).
+      sys.reduced = SymmetricCsc();
     }
     if (block->n > 0) st.blocks.push_back(block), st.block_offset.push_back(offset);
     offset += block->n;
