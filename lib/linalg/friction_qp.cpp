@@ -1,4 +1,5 @@
 #include "linalg/friction_qp.hpp"
+#include "linalg/dense_lu.hpp"
 #include "linalg/sparse_lu.hpp"
 #include "mortarcontact.h"
 #include "support/lapack.hpp"
@@ -117,22 +118,8 @@ bool solve_states(const DualQp &p, const FrictionProblem &f, const std::vector<c
     slip_terms(e, [&](int row) { return -g_scale * g(row, c); });
     rhs[e] += -g_scale * p.e[c];
   }
-  double norm = 0;  // 1-norm, for the condition estimate
-  for (int c = 0; c < n; ++c) {
-    double sum = 0;
-    for (int r = 0; r < n; ++r) sum += std::fabs(at(r, c));
-    norm = std::max(norm, sum);
-  }
-  std::vector<int> ipiv(n), iwork(n);
-  int info = 0, one = 1;
-  dgetrf_(&n, &n, a.data(), &n, ipiv.data(), &info);
-  if (info != 0) return false;
-  double rcond = 0;
-  std::vector<double> work(4 * size_t(n));
-  dgecon_("1", &n, a.data(), &n, &norm, &rcond, work.data(), iwork.data(), &info);
-  if (info != 0 || !(rcond > 1e-14)) return false;
-  dgetrs_("N", &n, &one, a.data(), &n, ipiv.data(), rhs.data(), &n, &info);
-  if (info != 0) return false;
+  DenseLu lu;
+  if (!lu.factorize(n, std::move(a), 1e-14) || !lu.solve(rhs.data())) return false;
   for (int e = 0; e < nf; ++e) lambda[rows[e]] = rhs[e];
   for (int c = 0; c < k; ++c) alpha[c] = g_scale * rhs[nf + c];
   set_slip_multipliers(f, active, state, lambda);

@@ -22,6 +22,7 @@
 // the condensed path's (dual_qp.hpp): one numeric factorization of H_P per active set, one
 // symbolic analysis for all (the pattern of H + C^T C holds every row's terms).
 #pragma once
+#include "linalg/dense_lu.hpp"
 #include "bodies/assembly.hpp"
 #include "linalg/dual_qp.hpp"
 #include "linalg/sparse_cholesky.hpp"
@@ -138,8 +139,8 @@ private:
   // (Sherman-Morrison-Woodbury): Z = H_0^-1 [c_r^T], M = diag(1 / (sign_r P_r)) + [c_r] Z, LU.
   struct LowRankUpdate {
     std::vector<int> rows;
-    std::vector<double> z, m;  // n x k, k x k column-major (m: its LU factors)
-    std::vector<int> pivots;
+    std::vector<double> z;  // n x k, column-major
+    DenseLu m;              // M, k x k
   } update_;
   std::vector<Coupling> coupling_;   // of the system being solved (solve_rows; empty: D = C)
   double flops_ = 0, t_analysis_ = 0;

@@ -85,33 +85,19 @@ bool SparseContactSolver::update_from_factor(const std::vector<char> &active, Sp
   // now rather than when the new one replaces it, after M's LU. (While its kept columns are
   // copied both are held: up to the factor's memory, Z being capped at half of it.)
   block = {}, update_ = {}, factorized_ = factor_set_;
-  u.m.assign(size_t(k) * k, 0.0);
-  double norm = 0;
+  std::vector<double> m(size_t(k) * k, 0.0);
   for (int c = 0; c < k; ++c) {
     for (int i = 0; i < k; ++i) {
       double v = 0;
       for (int p = s.row_start[rows[i]]; p < s.row_start[rows[i] + 1]; ++p) v += s.value[p] * u.z[size_t(c) * n + s.column[p]];
-      u.m[size_t(c) * k + i] = v;
+      m[size_t(c) * k + i] = v;
     }
     const double sign = active[rows[c]] ? 1.0 : -1.0;
-    u.m[size_t(c) * k + c] += 1 / (sign * weight_[rows[c]]);
+    m[size_t(c) * k + c] += 1 / (sign * weight_[rows[c]]);
   }
-  for (int c = 0; c < k; ++c) {
-    double sum = 0;
-    for (int i = 0; i < k; ++i) sum += std::fabs(u.m[size_t(c) * k + i]);
-    norm = std::max(norm, sum);
-  }
-  u.pivots.resize(k);
-  int info = 0, kk = k;
-  dgetrf_(&kk, &kk, u.m.data(), &kk, u.pivots.data(), &info);
-  double rcond = 0;
-  if (info == 0) {
-    std::vector<double> work(4 * size_t(k));
-    std::vector<int> iwork(k);
-    dgecon_("1", &kk, u.m.data(), &kk, &norm, &rcond, work.data(), iwork.data(), &info);
-  }
+  const bool regular = u.m.factorize(k, std::move(m), 1e-12);
   result.t_factor += now() - start;
-  if (info != 0 || !(rcond > 1e-12)) return false;  // (a factorization then says what is singular)
+  if (!regular) return false;  // (a factorization then says what is singular)
   update_ = std::move(u);
   factorized_ = active;
   result.updates++;
@@ -125,9 +111,8 @@ void SparseContactSolver::apply_inverse(std::vector<double> &v, SparseContactRes
   if (k > 0) {
     std::vector<double> t(k);
     for (int i = 0; i < k; ++i) t[i] = row_times(update_.rows[i], v);
-    int one = 1, info = 0, kk = k;
-    dgetrs_("N", &kk, &one, update_.m.data(), &kk, update_.pivots.data(), t.data(), &kk, &info);
-    int nn = n;
+    update_.m.solve(t.data());
+    int one = 1, kk = k, nn = n;
     double minus = -1.0, plus = 1.0;
     dgemv_("N", &nn, &kk, &minus, update_.z.data(), &nn, t.data(), &one, &plus, v.data(), &one);
   }

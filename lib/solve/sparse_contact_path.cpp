@@ -2,6 +2,7 @@
 // and the sparse path's problem built from the scene (sparse_contact_solve.hpp does the
 // solving). The condensed path is in model.cpp (its operator S) and dual_qp.cpp (its QP).
 #include "solve/model.hpp"
+#include "linalg/dense_lu.hpp"
 #include "support/error.hpp"
 #include "support/lapack.hpp"
 #include <algorithm>
@@ -549,23 +550,11 @@ std::vector<double> Model::sparse_rigid_shift(const std::vector<char> &near, std
         for (int d = 0; d < k; ++d) normal[size_t(d) * k + c] += gc * cs.g[size_t(d) * qb + b_row];
       }
     }
-    double norm = 0;
-    for (int c = 0; c < k; ++c) {
-      double sum = 0;
-      for (int i = 0; i < k; ++i) sum += std::fabs(normal[size_t(c) * k + i]);
-      norm = std::max(norm, sum);
-    }
-    int n = k, one = 1, info = 0;
-    std::vector<int> pivots(k), iwork(k);
-    std::vector<double> work(4 * size_t(k));
-    double rcond = 0;
-    dgetrf_(&n, &n, normal.data(), &n, pivots.data(), &info);
-    if (info == 0) dgecon_("1", &n, normal.data(), &n, &norm, &rcond, work.data(), iwork.data(), &info);
-    if (info != 0 || !(rcond > kShiftConditioning)) return false;
-    dgetrs_("N", &n, &one, normal.data(), &n, pivots.data(), alpha.data(), &n, &info);
+    DenseLu lu;
+    if (!lu.factorize(k, std::move(normal), kShiftConditioning) || !lu.solve(alpha.data())) return false;
     for (double a : alpha)
-      if (!std::isfinite(a)) info = 1;
-    return info == 0;
+      if (!std::isfinite(a)) return false;
+    return true;
   };
   std::vector<double> alpha;
   const bool held = (!near.empty() && fit(near, alpha)) || fit({}, alpha);
