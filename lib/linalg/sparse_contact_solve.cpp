@@ -60,7 +60,7 @@ void SparseContactSolver::analyze(const SparseContactStructure &s, int ordering)
   }
   std::vector<int> block_of(n, -1);
   for (size_t b = 0; b < s.blocks.size(); ++b)
-    for (int c = 0; c < s.blocks[b]->n; ++c) block_of[s.block_offset[b] + c] = int(b);
+    for (int c = 0; c < s.blocks[b].n; ++c) block_of[s.block_offset[b] + c] = int(b);
   std::vector<int> mark(n, -1);
   matrix_ = SymmetricCsc{};
   matrix_.n = n;
@@ -76,9 +76,8 @@ void SparseContactSolver::analyze(const SparseContactStructure &s, int ordering)
         ++top;
       };
       if (block_of[j] >= 0) {
-        const SymmetricCsc &k = *s.blocks[size_t(block_of[j])];
-        const int o = s.block_offset[size_t(block_of[j])], c = j - o;
-        for (int p = k.colptr[c]; p < k.colptr[c + 1]; ++p) keep(o + k.rows[p]);
+        const int o = s.block_offset[size_t(block_of[j])];
+        s.blocks[size_t(block_of[j])].for_each_in_column(j - o, [&](int i, double) { keep(o + i); });
       }
       keep(j);  // the diagonal, also for w and alpha
       for (int q = ct_start[j]; q < ct_start[j + 1]; ++q) {
@@ -98,12 +97,11 @@ void SparseContactSolver::analyze(const SparseContactStructure &s, int ordering)
   matrix_.values.assign(matrix_.rows.size(), 0.0);
   // 2. H's diagonal, for P's weights.
   std::vector<double> diagonal(n, 0.0);
-  for (size_t b = 0; b < s.blocks.size(); ++b) {
-    const SymmetricCsc &k = *s.blocks[b];
-    for (int c = 0; c < k.n; ++c)
-      for (int p = k.colptr[c]; p < k.colptr[c + 1]; ++p)
-        if (k.rows[p] == c) diagonal[s.block_offset[b] + c] = k.values[p];
-  }
+  for (size_t b = 0; b < s.blocks.size(); ++b)
+    for (int c = 0; c < s.blocks[b].n; ++c)
+      s.blocks[b].for_each_in_column(c, [&](int i, double value) {
+        if (i == c) diagonal[s.block_offset[b] + c] = value;
+      });
   // 3. P's weights.
   double mean_diagonal = 0;
   int counted = 0;
@@ -151,14 +149,13 @@ void SparseContactSolver::factorize_afresh(const std::vector<char> &active, Spar
   const SparseContactStructure &s = *structure_;
   std::fill(matrix_.values.begin(), matrix_.values.end(), 0.0);
   for (size_t b = 0; b < s.blocks.size(); ++b) {
-    const SymmetricCsc &k = *s.blocks[b];
     const int o = s.block_offset[b];
-    for (int c = 0; c < k.n; ++c) {
+    for (int c = 0; c < s.blocks[b].n; ++c) {
       int at = matrix_.colptr[o + c];
-      for (int p = k.colptr[c]; p < k.colptr[c + 1]; ++p) {
-        while (matrix_.rows[size_t(at)] != o + k.rows[p]) ++at;
-        matrix_.values[size_t(at)] += k.values[p];
-      }
+      s.blocks[b].for_each_in_column(c, [&](int i, double value) {
+        while (matrix_.rows[size_t(at)] != o + i) ++at;
+        matrix_.values[size_t(at)] += value;
+      });
     }
   }
   for (int r = 0; r < s.rows(); ++r) {
@@ -236,18 +233,16 @@ double SparseContactSolver::solve_on_active_set(const std::vector<double> &load,
         sum[s.column[p]] -= term, size[s.column[p]] += std::fabs(term);
       }
     for (size_t b = 0; b < s.blocks.size(); ++b) {
-      const SymmetricCsc &k = *s.blocks[b];
       const int o = s.block_offset[b];
-      for (int j = 0; j < k.n; ++j)
-        for (int p = k.colptr[j]; p < k.colptr[j + 1]; ++p) {
-          const int i = k.rows[p];
-          const long double a = (long double)k.values[p] * x[o + j];
+      for (int j = 0; j < s.blocks[b].n; ++j)
+        s.blocks[b].for_each_in_column(j, [&](int i, double value) {
+          const long double a = (long double)value * x[o + j];
           sum[o + i] -= a, size[o + i] += std::fabs(a);
           if (i != j) {
-            const long double c = (long double)k.values[p] * x[o + i];
+            const long double c = (long double)value * x[o + i];
             sum[o + j] -= c, size[o + j] += std::fabs(c);
           }
-        }
+        });
     }
     rf.assign(s.n_unknowns, 0.0);
     long double worst = 0, largest = 0;

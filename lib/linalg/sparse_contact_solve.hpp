@@ -30,11 +30,29 @@
 
 namespace mc {
 
+// One block of H: a symmetric matrix (upper triangle by columns) restricted to the unknowns
+// `index` keeps, in their order: a body's stiffness read where it is (its supports left out),
+// not copied (a copy of K per body was 8 % of the strips' peak memory).
+struct SparseBlock {
+  const SymmetricCsc *matrix = nullptr;
+  const std::vector<int> *index = nullptr;    // the matrix's unknown -> the block's (-1: left out; increasing)
+  const std::vector<int> *columns = nullptr;  // the block's unknown -> the matrix's
+  int n = 0;
+  // f(i, value) for each entry (i, c) of the block's column c, i <= c ascending.
+  template <class F> void for_each_in_column(int c, F &&f) const {
+    const int column = (*columns)[size_t(c)];
+    for (int p = matrix->colptr[column]; p < matrix->colptr[column + 1]; ++p) {
+      const int i = (*index)[size_t(matrix->rows[p])];
+      if (i >= 0) f(i, matrix->values[p]);
+    }
+  }
+};
+
 // The problem's structure: what stays when only loads or prescribed values change.
 struct SparseContactStructure {
   int n_unknowns = 0;             // columns of C and H
-  // H's nonzero blocks: symmetric matrices placed at block_offset on the diagonal.
-  std::vector<const SymmetricCsc *> blocks;
+  // H's nonzero blocks, placed at block_offset on the diagonal.
+  std::vector<SparseBlock> blocks;
   std::vector<int> block_offset;
   // C by rows (CSR); row_is_inequality[r] for the contact rows.
   std::vector<int> row_start{0}, column;

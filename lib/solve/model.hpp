@@ -141,7 +141,6 @@ struct ContactSystem {
   // body's bending gives back, which on a long strip held over a tenth of its length cancels
   // to round-off (docs/robustness.md, "A load on a part of a long strip").
   struct FloatingBlock {
-    SymmetricCsc stiffness;
     std::vector<int> index, dofs;  // DOF -> column in the block (-1: prescribed); the block's DOFs
   };
   std::vector<FloatingBlock> floating;  // per body; empty for a held body

@@ -289,20 +289,18 @@ void Model::build_sparse_structure() {
     cs.column_offset[b] = offset;
     if (!system_[b]) continue;
     BodySystem &sys = *system_[b];
-    const SymmetricCsc *block = &sys.reduced;
-    if (sys.rigid.count > 0) {  // K on every DOF not prescribed (ContactSystem::FloatingBlock)
+    if (sys.rigid.count > 0) {  // every DOF not prescribed (ContactSystem::FloatingBlock)
       ContactSystem::FloatingBlock &f = cs.floating[b];
       f.index.assign(sys.stiffness.n, -1);
       for (int i = 0; i < sys.stiffness.n; ++i)
         if (!fixed_[b][i]) f.index[i] = int(f.dofs.size()), f.dofs.push_back(i);
-      f.stiffness = sys.stiffness.principal_submatrix(f.index, int(f.dofs.size()));
-      block = &f.stiffness;
-      // The condensed path's K without the pins is not used here: freed (a copy of K less), and
-      // made again if that path takes over (build_condensed).
-      sys.reduced = SymmetricCsc();
     }
-    if (block->n > 0) st.blocks.push_back(block), st.block_offset.push_back(offset);
-    offset += block->n;
+    // The block reads K where it is (SparseBlock); the condensed path's K less supports and
+    // pins is not used here: freed, and made again if that path takes over (build_condensed).
+    sys.reduced = SymmetricCsc();
+    const SparseBlock block{&sys.stiffness, &sparse_index(b), &sparse_dofs(b), int(sparse_dofs(b).size())};
+    if (block.n > 0) st.blocks.push_back(block), st.block_offset.push_back(offset);
+    offset += block.n;
     cs.modes += sys.rigid.count;
   }
   cs.aux_offset = offset;
