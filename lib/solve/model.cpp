@@ -185,12 +185,12 @@ void Model::build_structure(const std::function<void(int, BodyWork &)> &then) {
 
   // Each body's factorization and, with contact, its share of S = sum_b s_b. The sum is formed
   // the same way whatever the thread count, so that the results do not depend on it.
-  // The sparse path when it is forced; otherwise each body is analysed for the condensed path
-  // first, and the automatic choice reads those analyses (choose_interface_solver).
-  // The automatic choice first bounds each body's factorization by its envelope (a few
-  // breadth-first searches): where the interface is long that settles it, and the analyses for
-  // the condensed path (a constrained ordering and a symbolic factorization per body, up to 15 %
-  // of a solve on the strips) are not made.
+  // The sparse path when it is forced; the condensed path's analyses when it is forced. The
+  // automatic choice first bounds each body's factorization by its envelope (a few breadth-first
+  // searches): where the interface is long that settles it, and the analyses for the condensed
+  // path (a constrained ordering and a symbolic factorization per body, up to 15 % of a solve on
+  // the strips) are not made; otherwise it analyses the bodies and reads those analyses
+  // (choose_interface_solver).
   const bool forced_sparse = contact_ && options.interface_solver == MC_INTERFACE_SPARSE;
   const bool automatic = contact_ && options.interface_solver == MC_INTERFACE_AUTO;
   for_each_body([&](int b, BodyWork &work) {
