@@ -80,7 +80,7 @@ void Model::build_condensed(const std::function<void(int, BodyWork &)> &then) {
   std::vector<double> t_operator(body.size(), 0.0);
   for_each_body([&](int b, BodyWork &work) {
     if (system_[b] && system_[b]->reduced.n != int(system_[b]->solve_dofs.size()))
-      reduce_stiffness(b, work);  // (freed by the sparse path for a floating body)
+      reduce_stiffness(b, work);  // (the sparse path frees it: its blocks read the stiffness itself)
     if (system_[b] && !system_[b]->cholesky.analyzed()) analyze_body(b, work, true);
     factorize_body(b, work);
     if (contact_ && system_[b]) {
