@@ -1,8 +1,12 @@
 #include "linalg/sparse_cholesky.hpp"
 #include "support/error.hpp"
 #include <cholmod.h>
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <utility>
+#include <vector>
 #ifdef __linux__
 #include <sys/mman.h>
 #include <unistd.h>
@@ -75,6 +79,8 @@ void populate_pages(void *data, size_t bytes) {
 struct SparseCholesky::Impl {
   cholmod_common common;
   cholmod_factor *factor = nullptr;
+  cholmod_factor *symbolic = nullptr;  // a simplicial analysis, copied (keep_aside)
+  cholmod_factor *aside = nullptr;     // keep_aside's second factor
   std::vector<int> interface;  // original indices, in the caller's order
   Impl() {
     cholmod_start(&common);
@@ -84,6 +90,8 @@ struct SparseCholesky::Impl {
   }
   ~Impl() {
     if (factor) cholmod_free_factor(&factor, &common);
+    if (symbolic) cholmod_free_factor(&symbolic, &common);
+    if (aside) cholmod_free_factor(&aside, &common);
     cholmod_finish(&common);
   }
   // A cholmod_sparse view (no copy) of the upper triangle.
@@ -118,6 +126,8 @@ void SparseCholesky::analyze(const SymmetricCsc &a, const std::vector<int> &inte
   Impl &d = *impl_;
   CholmodWithoutOpenMpTeam serial_openmp;
   if (d.factor) cholmod_free_factor(&d.factor, &d.common);
+  if (d.symbolic) cholmod_free_factor(&d.symbolic, &d.common);
+  if (d.aside) cholmod_free_factor(&d.aside, &d.common);
   n_ = a.n;
   analyzed_ = true;
   d.interface = interface;
@@ -138,6 +148,10 @@ void SparseCholesky::analyze(const SymmetricCsc &a, const std::vector<int> &inte
     d.common.postorder = 1;
     d.factor = cholmod_analyze(&s, &d.common);
     d.check("analyze");
+    if (!d.factor->is_super) {  // a few arrays of n, for keep_aside
+      d.symbolic = cholmod_copy_factor(d.factor, &d.common);
+      d.check("copying the analysis");
+    }
     return;
   }
   // Interface last: a constrained minimum-degree ordering (CAMD) when AMD is asked, or METIS
@@ -186,6 +200,8 @@ bool SparseCholesky::analyzed() const { return analyzed_; }
 void SparseCholesky::release() {
   Impl &d = *impl_;
   if (d.factor) cholmod_free_factor(&d.factor, &d.common);
+  if (d.symbolic) cholmod_free_factor(&d.symbolic, &d.common);
+  if (d.aside) cholmod_free_factor(&d.aside, &d.common);
   cholmod_free_work(&d.common);  // the workspace CHOLMOD keeps between calls (a few n-sized arrays)
   d.interface.clear();
   n_ = 0;
@@ -220,6 +236,106 @@ void SparseCholesky::factorize(const SymmetricCsc &a) {
          "rigidly, or a material is not positive definite",
          int(d.factor->minor), a.n);
   d.check("factorize");
+}
+
+bool SparseCholesky::can_keep_aside() const {
+  const cholmod_factor *f = impl_->factor;
+  return n_ > 0 && f && impl_->symbolic && !f->is_super && f->xtype != CHOLMOD_PATTERN;
+}
+
+void SparseCholesky::keep_aside() {
+  Impl &d = *impl_;
+  if (!can_keep_aside()) fail(MC_ERROR_INTERNAL, "keep_aside without a simplicial numeric factor");
+  if (!d.symbolic) fail(MC_ERROR_INTERNAL, "keep_aside without a copy of the analysis");
+  if (d.aside) cholmod_free_factor(&d.aside, &d.common);
+  d.aside = d.factor;
+  d.factor = cholmod_copy_factor(d.symbolic, &d.common);
+  if (!d.factor) std::swap(d.factor, d.aside);  // (nothing moved: the check below reports it)
+  d.check("copying the analysis");
+}
+
+void SparseCholesky::swap_aside() {
+  Impl &d = *impl_;
+  if (!d.aside) fail(MC_ERROR_INTERNAL, "swap_aside without a factor aside");
+  std::swap(d.factor, d.aside);
+}
+
+void SparseCholesky::release_aside() {
+  Impl &d = *impl_;
+  if (d.aside) cholmod_free_factor(&d.aside, &d.common);
+}
+
+bool SparseCholesky::supernodal() const { return impl_->factor && impl_->factor->is_super; }
+
+bool SparseCholesky::modify(bool add, int k, const int *colptr, const int *rows, const double *values) {
+  Impl &d = *impl_;
+  if (n_ == 0 || k == 0) return true;
+  if (!d.factor || d.factor->xtype == CHOLMOD_PATTERN) fail(MC_ERROR_INTERNAL, "modify before factorize");
+  // CHOLMOD takes C in the factor's order (rows permuted by L->Perm), each column sorted.
+  const int *perm = static_cast<const int *>(d.factor->Perm);
+  std::vector<int> inverse(static_cast<size_t>(n_));
+  for (int i = 0; i < n_; ++i) inverse[size_t(perm[i])] = i;
+  const int nnz = colptr[k];
+  std::vector<int> p(colptr, colptr + k + 1), i(static_cast<size_t>(nnz));
+  std::vector<double> x(static_cast<size_t>(nnz));
+  std::vector<std::pair<int, double>> column;
+  for (int c = 0; c < k; ++c) {
+    column.clear();
+    for (int q = colptr[c]; q < colptr[c + 1]; ++q) column.emplace_back(inverse[size_t(rows[q])], values[q]);
+    std::sort(column.begin(), column.end());
+    for (int q = colptr[c]; q < colptr[c + 1]; ++q)
+      i[size_t(q)] = column[size_t(q - colptr[c])].first, x[size_t(q)] = column[size_t(q - colptr[c])].second;
+  }
+  cholmod_sparse cs;
+  std::memset(&cs, 0, sizeof cs);
+  cs.nrow = size_t(n_), cs.ncol = size_t(k), cs.nzmax = size_t(nnz);
+  cs.p = p.data(), cs.i = i.data(), cs.x = x.data();
+  cs.stype = 0, cs.itype = CHOLMOD_INT, cs.xtype = CHOLMOD_REAL, cs.dtype = CHOLMOD_DOUBLE;
+  cs.sorted = 1, cs.packed = 1;
+  {
+    CholmodWithoutOpenMpTeam serial_openmp;
+    cholmod_updown(add ? 1 : 0, &cs, d.factor, &d.common);
+  }
+  d.check("update/downdate");
+  // A simplicial LDL^T now: D is each column's first entry.
+  const int *lp = static_cast<const int *>(d.factor->p);
+  const double *lx = static_cast<const double *>(d.factor->x);
+  for (int j = 0; j < n_; ++j)
+    if (!(lx[lp[j]] > 0) || !std::isfinite(lx[lp[j]])) return false;
+  return true;
+}
+
+std::vector<double> SparseCholesky::path_entries() const {
+  const cholmod_factor *f = impl_->factor;
+  if (n_ == 0 || !f || f->xtype == CHOLMOD_PATTERN) return {};
+  std::vector<int> parent(static_cast<size_t>(n_), -1);
+  std::vector<double> count(static_cast<size_t>(n_), 0.0);
+  if (f->is_super) {
+    const int *super = static_cast<const int *>(f->super), *pi = static_cast<const int *>(f->pi);
+    const int *ls = static_cast<const int *>(f->s);
+    for (size_t s = 0; s < f->nsuper; ++s) {
+      const int k1 = super[s], k2 = super[s + 1], nsrow = pi[s + 1] - pi[s];
+      for (int k = k1; k < k2; ++k) {
+        count[size_t(k)] = nsrow - (k - k1);
+        parent[size_t(k)] = k + 1 < k2 ? k + 1 : (nsrow > k2 - k1 ? ls[pi[s] + (k2 - k1)] : -1);
+      }
+    }
+  } else {
+    const int *lp = static_cast<const int *>(f->p), *li = static_cast<const int *>(f->i), *lnz = static_cast<const int *>(f->nz);
+    for (int j = 0; j < n_; ++j) {
+      count[size_t(j)] = lnz[j];
+      int first = -1;
+      for (int q = lp[j] + 1; q < lp[j] + lnz[j]; ++q)
+        if (first < 0 || li[q] < first) first = li[q];
+      parent[size_t(j)] = first;
+    }
+  }
+  std::vector<double> path(static_cast<size_t>(n_), 0.0);
+  for (int j = n_ - 1; j >= 0; --j) path[size_t(j)] = count[size_t(j)] + (parent[size_t(j)] > j ? path[size_t(parent[size_t(j)])] : 0.0);
+  const int *perm = static_cast<const int *>(f->Perm);
+  std::vector<double> by_unknown(static_cast<size_t>(n_));
+  for (int k = 0; k < n_; ++k) by_unknown[size_t(perm[k])] = path[size_t(k)];
+  return by_unknown;
 }
 
 void SparseCholesky::solve(double *x, int nrhs) const {

@@ -26,6 +26,25 @@ public:
   bool analyzed() const;
   // Numeric factorization; throws MC_ERROR_SINGULAR if a is not positive definite.
   void factorize(const SymmetricCsc &a);
+  // The factor of A + C C^T (add) or A - C C^T, modified in place (CHOLMOD's update/downdate,
+  // which leaves a simplicial LDL^T; meant for a simplicial factor): C has k columns, given by columns in a's
+  // numbering (colptr k + 1, rows, values). Returns false if the modified factor is not
+  // positive definite to working precision (a pivot <= 0 or not finite): then it is no factor of
+  // anything useful and the caller factorizes afresh.
+  bool modify(bool add, int k, const int *colptr, const int *rows, const double *values);
+  bool supernodal() const;
+  // A second numeric factor of the same analysis, kept aside (simplicial analyses only: their
+  // symbolic part is a few arrays of n): keep_aside() moves the factor aside (freeing the one
+  // there) and leaves a fresh copy of the analysis to factorize; swap_aside() exchanges the two;
+  // release_aside() frees the one aside.
+  bool can_keep_aside() const;
+  void keep_aside();
+  void swap_aside();
+  void release_aside();
+  // For each unknown (a's numbering): the entries of L in the columns of its elimination-tree
+  // path, from its column to the root: what an update or downdate of a column of C with a
+  // nonzero there touches. Empty before a numeric factorization.
+  std::vector<double> path_entries() const;
   // x <- A^-1 x, for nrhs right-hand sides stored one after the other (n each).
   void solve(double *x, int nrhs = 1) const;
   // The two halves of a solve, A = P^T L L^T P: y = L^-1 P b (y in the factor's order) and

@@ -37,6 +37,8 @@ constexpr double kUpdateResidual = 1e-14;
 // wavelengths (5 -> 5, 4, 3 from 0.05 on); docs/notes/interface-solver.md, "A start from the
 // gaps".
 constexpr double kStartGap = 0.1;
+// A factor is kept aside (above) where modifications are measured (sparse_factor_update.cpp).
+constexpr double kKeepAsideFromFlops = 5e7;
 
 }  // namespace
 
@@ -125,6 +127,7 @@ void SparseContactSolver::analyze(const SparseContactStructure &s, int ordering)
   }
   // 4. Ordering and symbolic factorization.
   cholesky_.analyze(matrix_, {}, ordering);
+  path_.clear();
   flops_ = cholesky_.analysis_flops();
   t_analysis_ = now() - start;
 }
@@ -140,7 +143,18 @@ int SparseContactSolver::position(int i, int j) const {
 // column, both sorted), then each active row's c_r^T P_r c_r. Nothing of H is kept beside the
 // pattern: its values are read from the bodies' matrices each time (memory: docs/benchmarks.md).
 void SparseContactSolver::factorize(const std::vector<char> &active, SparseContactResult &result) {
-  if (update_from_factor(active, result)) return;
+  // The factor kept aside, if the set is nearer to its own: a load step's first set (the last
+  // step's) goes to a wild one (thousands of rows that the next set releases again, docs/notes/
+  // interface-solver.md), and the set after it is a few rows from the first.
+  if (!aside_set_.empty() &&
+      modify_seconds(aside_set_, aside_modifications_, active) < modify_seconds(factor_set_, modifications_, active)) {
+    cholesky_.swap_aside();
+    std::swap(factor_set_, aside_set_), std::swap(modifications_, aside_modifications_);
+    update_ = {}, factorized_ = factor_set_;
+  }
+  // A simplicial factor is modified in place (a few milliseconds for a few rows, against a solve
+  // per row for the low-rank update); a supernodal one is updated (sparse_factor_update.cpp).
+  if (modify_factor(active, result) || update_from_factor(active, result)) return;
   factorize_afresh(active, result);
 }
 
@@ -165,7 +179,11 @@ void SparseContactSolver::factorize_afresh(const std::vector<char> &active, Spar
         if (s.column[q] >= s.column[p])
           matrix_.values[size_t(position(s.column[p], s.column[q]))] += weight_[r] * s.value[p] * s.value[q];
   }
-  factorized_.clear(), factor_set_.clear(), update_ = {};
+  if (keep_aside_ && !factor_set_.empty() && flops_ >= kKeepAsideFromFlops && cholesky_.can_keep_aside()) {
+    cholesky_.keep_aside();
+    aside_set_ = factor_set_, aside_modifications_ = modifications_;
+  }
+  factorized_.clear(), factor_set_.clear(), update_ = {}, modifications_ = 0;
   cholesky_.factorize(matrix_);
   factorized_ = factor_set_ = active;
   result.factorizations++;
@@ -326,6 +344,16 @@ SparseContactResult SparseContactSolver::solve(const std::vector<double> &load, 
   const int nrows = s.rows();
   SparseContactResult result;
   coupling_.clear();
+  // The factor aside lives for this solve only (it doubles the factors' memory).
+  struct AsideForThisSolve {
+    SparseContactSolver &solver;
+    explicit AsideForThisSolve(SparseContactSolver &s) : solver(s) { solver.keep_aside_ = true; }
+    ~AsideForThisSolve() {
+      solver.keep_aside_ = false;
+      solver.cholesky_.release_aside();
+      solver.aside_set_.clear();
+    }
+  } aside_for_this_solve(*this);
   std::vector<char> active(nrows, 0);
   const bool warm_start = int(start.size()) == nrows;
   for (int r = 0; r < nrows; ++r) active[r] = s.row_is_inequality[r] && (warm_start ? start[r] : 1);
@@ -378,7 +406,7 @@ SparseContactResult SparseContactSolver::solve(const std::vector<double> &load, 
     double lambda_ref = 0, violation = complementarity(target, active, x, lambda, gap, violating, lambda_ref);
     if (violating.empty()) {
       const double refined = solve_on_active_set(load, target, x, lambda, result, true);
-      if (!update_.rows.empty() && refined > kUpdateResidual) {
+      if ((!update_.rows.empty() || modifications_ > 0) && refined > kUpdateResidual) {
         // The answer came through a low-rank update and its refinement stopped short of
         // round-off (an ill-conditioned H_P: a long strip whose free part only the contact zone
         // holds): its own factorization, so that the answer is that of a first solve.

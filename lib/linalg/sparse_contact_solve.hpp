@@ -71,6 +71,7 @@ struct SparseContactResult {
   int iterations = 0;          // active-set iterations
   int factorizations = 0;      // numeric factorizations of H_P in this solve
   int updates = 0;             // active sets solved through a low-rank update of the last factor instead
+  int modifications = 0;       // active sets whose factor was the last one modified in place
   int cg_steps = 0;            // conjugate-gradient steps (each: one forward and one backward solve)
   double violation = 0;        // largest relative violation of complementarity (as MC_INFO_COMPLEMENTARITY)
   double t_factor = 0, t_solve = 0;
@@ -83,7 +84,7 @@ public:
   // `structure` must outlive the solver (its blocks are read at each factorization).
   void analyze(const SparseContactStructure &structure, int ordering);
   // Frees the pattern and the factor.
-  void release() { cholesky_.release(), matrix_ = SymmetricCsc{}, factorized_.clear(), factor_set_.clear(), update_ = {}; }
+  void release() { cholesky_.release(), matrix_ = SymmetricCsc{}, factorized_.clear(), factor_set_.clear(), update_ = {}, modifications_ = 0, path_.clear(), aside_set_.clear(); }
   // CHOLMOD's estimates from the analysis, for the automatic choice of path.
   double factor_flops() const { return flops_; }
   long factor_nnz() const { return cholesky_.factor_nnz(); }
@@ -126,6 +127,11 @@ private:
   void factorize(const std::vector<char> &active, SparseContactResult &result);
   bool update_from_factor(const std::vector<char> &active, SparseContactResult &result);
   void factorize_afresh(const std::vector<char> &active, SparseContactResult &result);  // never an update
+  bool modify_factor(const std::vector<char> &active, SparseContactResult &result);
+  // What modifying the factor of the rows `from` (modified `modifications` times since its
+  // factorization) into that of `to` would take (seconds, from measured rates; HUGE_VAL where it
+  // is not done: a supernodal or small factor, or one modified too often).
+  double modify_seconds(const std::vector<char> &from, int modifications, const std::vector<char> &to);
   // v = H_P^-1 v for the rows factorized_: the factor's solve, then the update's correction.
   void apply_inverse(std::vector<double> &v, SparseContactResult &result) const;
   // The exact solution of the KKT system on the factorized active set, from lambda's start.
@@ -160,6 +166,13 @@ private:
     std::vector<double> z;  // n x k, column-major
     DenseLu m;              // M, k x k
   } update_;
+  int modifications_ = 0;            // of the factor in place since its factorization
+  // Within solve(): the factor before the last factorization, kept aside with its set, for a set
+  // that comes back near it (a load step's wild set, sparse_factor_update.cpp).
+  bool keep_aside_ = false;
+  int aside_modifications_ = 0;
+  std::vector<char> aside_set_;
+  std::vector<double> path_;         // each unknown's elimination-tree path in L (entries)
   std::vector<Coupling> coupling_;   // of the system being solved (solve_rows; empty: D = C)
   double flops_ = 0, t_analysis_ = 0;
 };

@@ -36,6 +36,26 @@ constexpr double kMeasuredFromFlops = 5e7;
 // An update is taken when its new solves cost under half a factorization, and Z (n x k) takes
 // under half the factor's memory.
 constexpr double kUpdateShare = 0.5;
+// Modifying the factor in place (CHOLMOD's update/downdate, simplicial factors only) costs about
+// one pass over the entries of L on each differing row's elimination-tree path: measured at 0.8
+// to 1.0 ns an entry on the strips' and the wavy contact's H_P (2.5e5 to 1.3e9 entries touched,
+// 2 to 3596 rows), against 0.64 Gflop/s for a simplicial numeric factorization (the strips at
+// 4001 contact nodes: 8.2e7 flops in 0.13 s). Taken when it costs under half a factorization (a
+// downdate loses some digits, which the refinement wins back). A supernodal factor is left to
+// the low-rank update: CHOLMOD would first turn it into a simplicial LDL^T (0.28 s for 1.8e7
+// entries on Hertz at h1 = 0.0025, with both held at once: peak memory 339 -> 401 MiB), whose
+// solves are 20 to 40 % slower (docs/notes/interface-solver.md, "Session 19").
+constexpr double kSecondsPerTouchedEntry = 0.9e-9;
+constexpr double kSecondsPerFlopSimplicial = 1.0 / 0.64e9;
+constexpr double kModifyShare = 0.5;
+// Modifications build on each other: the factor kept aside over a load history carries those of
+// every step before. Each answer is refined to round-off, but on the load history at
+// 16001 contact nodes (H_P about as ill-conditioned as a free strip 1000 times longer than high)
+// the last step's pressures drifted from a fresh solve's by 5e-11, 9e-9 and 3e-8 of p after 2, 5
+// and 10 steps of 4 modifications each (fresh solves with AMD and METIS orderings differ by 2e-8
+// to 7e-8 there: the problem's own round-off). Past this many modifications the factor is
+// computed afresh: 8e-12 after 10 steps (docs/notes/interface-solver.md, "Session 19").
+constexpr int kMaxModifications = 12;
 }  // namespace
 
 bool SparseContactSolver::update_from_factor(const std::vector<char> &active, SparseContactResult &result) {
@@ -101,6 +121,52 @@ bool SparseContactSolver::update_from_factor(const std::vector<char> &active, Sp
   update_ = std::move(u);
   factorized_ = active;
   result.updates++;
+  return true;
+}
+
+double SparseContactSolver::modify_seconds(const std::vector<char> &from, int modifications,
+                                           const std::vector<char> &to) {
+  const SparseContactStructure &s = *structure_;
+  if (from.size() != to.size() || flops_ < kMeasuredFromFlops || cholesky_.supernodal()) return HUGE_VAL;
+  if (modifications >= kMaxModifications) return HUGE_VAL;
+  if (path_.empty()) path_ = cholesky_.path_entries();
+  // What the modification touches: each differing row's path (the longest of its columns').
+  double touched = 0;
+  for (int r = 0; r < s.rows(); ++r) {
+    if (!s.row_is_inequality[r] || to[r] == from[r]) continue;
+    double longest = 0;
+    for (int p = s.row_start[r]; p < s.row_start[r + 1]; ++p) longest = std::max(longest, path_[size_t(s.column[p])]);
+    touched += longest;
+  }
+  return touched * kSecondsPerTouchedEntry;
+}
+
+bool SparseContactSolver::modify_factor(const std::vector<char> &active, SparseContactResult &result) {
+  const SparseContactStructure &s = *structure_;
+  if (modify_seconds(factor_set_, modifications_, active) > kModifyShare * flops_ * kSecondsPerFlopSimplicial) return false;
+  const double start = now();
+  // sqrt(P_r) c_r^T for the rows that enter (added: an update) and those that leave (removed: a
+  // downdate); the update first, so that the matrix stays positive definite on the way.
+  std::vector<int> colptr[2] = {{0}, {0}}, rows[2];
+  std::vector<double> values[2];
+  for (int r = 0; r < s.rows(); ++r) {
+    if (!s.row_is_inequality[r] || active[r] == factor_set_[r]) continue;
+    const int which = active[r] ? 0 : 1;
+    const double scale = std::sqrt(weight_[size_t(r)]);
+    for (int p = s.row_start[r]; p < s.row_start[r + 1]; ++p)
+      rows[which].push_back(s.column[p]), values[which].push_back(scale * s.value[p]);
+    colptr[which].push_back(int(rows[which].size()));
+  }
+  update_ = {}, factorized_.clear(), factor_set_.clear();
+  bool positive = true;
+  for (int which = 0; which < 2 && positive; ++which)
+    positive = cholesky_.modify(which == 0, int(colptr[which].size()) - 1, colptr[which].data(), rows[which].data(),
+                                values[which].data());
+  result.t_factor += now() - start;
+  if (!positive) return false;  // (the factor is then no factor: a factorization follows)
+  factorized_ = factor_set_ = active;
+  modifications_++;
+  result.modifications++;
   return true;
 }
 

@@ -661,10 +661,11 @@ bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lam
   infos.factor_nnz += cs.solver.factor_nnz();
   progress(MC_LOG_PHASE,
            "active-set solve (sparse): %s, %d iterations, %d factorizations, %d factor updates, %d conjugate-gradient "
-           "steps, residual %.3g, %.3g s (factorizations and updates %.3g s, solves %.3g s)",
+           "steps, residual %.3g, %.3g s (factorizations and updates %.3g s, solves %.3g s; %d of the updates "
+           "modified the factor in place)",
            result.outcome == SparseContactOutcome::solved ? "solved" : "not converged", result.iterations,
-           result.factorizations, result.updates, result.cg_steps, result.violation, now() - start, result.t_factor,
-           result.t_solve);
+           result.factorizations, result.updates + result.modifications, result.cg_steps, result.violation,
+           now() - start, result.t_factor, result.t_solve, result.modifications);
   if (result.outcome == SparseContactOutcome::modes_not_held) {
     const std::string unheld = unheld_modes_description();
     fail(MC_ERROR_SINGULAR,

@@ -95,8 +95,9 @@ void Model::solve_sparse_friction(std::vector<LoadSolve> &loads, std::vector<dou
   infos.t_factor += linear.t_factor;
   infos.t_solve += linear.t_solve;
   infos.factor_nnz += cs.solver.factor_nnz();
-  progress(MC_LOG_PHASE, "sparse friction solve: %d factorizations, %d factor updates, %d Krylov steps",
-           linear.factorizations, linear.updates, linear.cg_steps);
+  progress(MC_LOG_PHASE, "sparse friction solve: %d factorizations, %d factor updates, %d Krylov steps (%d of the "
+           "updates modified the factor in place)",
+           linear.factorizations, linear.updates + linear.modifications, linear.cg_steps, linear.modifications);
   accept_friction(f, result, start, " (sparse)", lambda, alpha);
   sparse_displacements(x, alpha_0, loads, alpha);
 }
