@@ -176,11 +176,13 @@ void Model::build_structure(const std::function<void(int, BodyWork &)> &then) {
   contact_.reset();
   system_.clear();
   system_.resize(body.size());
-  // The sparse path forced reads the mortar values w_a, not B's mortar weights: B is built
-  // without them and completed while its ordering runs (build_sparse_structure, complete_b).
+  // The sparse path reads the mortar values w_a, not B's mortar weights, and the automatic choice
+  // reads neither: B is built without them and completed while the sparse path's ordering runs
+  // (build_sparse_structure, complete_b), or before the bodies are analysed for the condensed
+  // path (choose_interface_solver). Forced condensed, B is built whole.
   if (contact_active()) {
     Stopwatch watch(infos.t_contact);
-    contact_ = build_contact_system(options.interface_solver == MC_INTERFACE_SPARSE);
+    contact_ = build_contact_system(options.interface_solver != MC_INTERFACE_CONDENSED);
   }
 
   // Each body's factorization and, with contact, its share of S = sum_b s_b. The sum is formed

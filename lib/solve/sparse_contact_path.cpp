@@ -159,6 +159,9 @@ bool Model::choose_interface_solver(const std::function<void()> &analyze_bodies)
   ContactSystem &cs = *contact_;
   merge_gap_offsets();  // (solve() merges them after the structure; rows_apart_at_start reads them)
   if (options.interface_solver == MC_INTERFACE_AUTO && sparse_path_clear_unanalysed(start)) return true;
+  // The condensed path's analyses order each body's interface last: B whole first (its mortar
+  // weights name the mortar body's interface unknowns).
+  complete_b(nullptr);
   analyze_bodies();
   const double q = cs.b_rows();
   // The condensed path's cost from the bodies' analyses (interface last): their factors, each
