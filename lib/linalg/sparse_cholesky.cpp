@@ -79,7 +79,7 @@ void populate_pages(void *data, size_t bytes) {
 struct SparseCholesky::Impl {
   cholmod_common common;
   cholmod_factor *factor = nullptr;
-  cholmod_factor *symbolic = nullptr;  // a simplicial analysis, copied (keep_aside)
+  cholmod_factor *symbolic = nullptr;  // a simplicial analysis (keep_aside)
   cholmod_factor *aside = nullptr;     // keep_aside's second factor
   std::vector<int> interface;  // original indices, in the caller's order
   Impl() {
@@ -148,10 +148,6 @@ void SparseCholesky::analyze(const SymmetricCsc &a, const std::vector<int> &inte
     d.common.postorder = 1;
     d.factor = cholmod_analyze(&s, &d.common);
     d.check("analyze");
-    if (!d.factor->is_super) {  // a few arrays of n, for keep_aside
-      d.symbolic = cholmod_copy_factor(d.factor, &d.common);
-      d.check("copying the analysis");
-    }
     return;
   }
   // Interface last: a constrained minimum-degree ordering (CAMD) when AMD is asked, or METIS
@@ -240,13 +236,21 @@ void SparseCholesky::factorize(const SymmetricCsc &a) {
 
 bool SparseCholesky::can_keep_aside() const {
   const cholmod_factor *f = impl_->factor;
-  return n_ > 0 && f && impl_->symbolic && !f->is_super && f->xtype != CHOLMOD_PATTERN;
+  return n_ > 0 && f && !f->is_super && f->xtype != CHOLMOD_PATTERN;
 }
 
 void SparseCholesky::keep_aside() {
   Impl &d = *impl_;
   if (!can_keep_aside()) fail(MC_ERROR_INTERNAL, "keep_aside without a simplicial numeric factor");
-  if (!d.symbolic) fail(MC_ERROR_INTERNAL, "keep_aside without a copy of the analysis");
+  if (!d.symbolic) {
+    // The analysis, from the factor: a simplicial symbolic factor is its permutation and column
+    // counts (made when first needed: two arrays of n that a solve without an aside never holds).
+    d.symbolic = cholmod_allocate_factor(size_t(n_), &d.common);
+    d.check("allocating a factor");
+    std::memcpy(d.symbolic->Perm, d.factor->Perm, sizeof(int) * size_t(n_));
+    std::memcpy(d.symbolic->ColCount, d.factor->ColCount, sizeof(int) * size_t(n_));
+    d.symbolic->ordering = d.factor->ordering;
+  }
   if (d.aside) cholmod_free_factor(&d.aside, &d.common);
   d.aside = d.factor;
   d.factor = cholmod_copy_factor(d.symbolic, &d.common);
