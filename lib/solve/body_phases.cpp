@@ -125,6 +125,7 @@ void Model::reduce_stiffness(int b, BodyWork &work) {
   BodySystem *sys = system_[b].get();
   Stopwatch watch(work.infos.t_assembly);
   sys->reduced = sys->stiffness.principal_submatrix(sys->solve_index, int(sys->solve_dofs.size()));
+  sys->reduced_held = true;
 }
 
 // The condensed path's ordering (interface unknowns last) and symbolic factorization.

@@ -79,7 +79,7 @@ void Model::build_condensed(const std::function<void(int, BodyWork &)> &then) {
   std::vector<std::vector<double>> s_b(body.size());
   std::vector<double> t_operator(body.size(), 0.0);
   for_each_body([&](int b, BodyWork &work) {
-    if (system_[b] && system_[b]->reduced.n != int(system_[b]->solve_dofs.size()))
+    if (system_[b] && !system_[b]->reduced_held)
       reduce_stiffness(b, work);  // (the sparse path frees it: its blocks read the stiffness itself)
     if (system_[b] && !system_[b]->cholesky.analyzed()) analyze_body(b, work, true);
     factorize_body(b, work);

@@ -76,7 +76,8 @@ struct BodySystem {
   RigidModes rigid;
   std::vector<int> solve_index;    // DOF -> reduced index, -1 if prescribed or pinned
   std::vector<int> solve_dofs;
-  SymmetricCsc reduced;
+  SymmetricCsc reduced;            // K less supports and pins: the condensed path's matrix
+  bool reduced_held = false;       // false once the sparse path has freed it (reduce_stiffness rebuilds it)
   SparseCholesky cholesky;
   std::vector<int> interface;      // DOFs (full numbering) in B, ordered last in the factor
   EnvelopeBound envelope;          // of `reduced`, for the automatic choice (set only there)
@@ -345,6 +346,13 @@ private:
     int blocks = 0;
   };
   CondensedOperatorCost condensed_operator_cost() const;
+  // Body b's dense work on the condensed path (flops, no analysis needed): the factorization of
+  // its trailing interface block, ng^3 / 3, and W_b = L_GG^-1 B_G^T with its share of S,
+  // ng^2 q_b + ng q_b^2 (ng its interface unknowns, q_b the rows touching it).
+  struct BodyDenseWork {
+    double block = 0, coupling = 0;
+  };
+  BodyDenseWork condensed_dense_work(int b) const;
   // The sparse path (sparse_contact_path.cpp). solve_sparse returns false if its active-set
   // iteration cycled (then fall_back_to_condensed).
   void build_sparse_structure();

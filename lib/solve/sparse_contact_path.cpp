@@ -130,13 +130,18 @@ static double expected_krylov_steps(double apart) {
 // factorizations, 15 % of the sparse path's solve) would not change the answer.
 constexpr double kClearMargin = 10;
 
+Model::BodyDenseWork Model::condensed_dense_work(int b) const {
+  const double ng = double(system_[b]->interface.size()), qb = double(contact_->body_rows[b].size());
+  return {ng * ng * ng / 3, ng * ng * qb + ng * qb * qb};
+}
+
 bool Model::sparse_path_clear_unanalysed(double start) {
   const ContactSystem &cs = *contact_;
   double dense_flops = condensed_operator_cost().flops, plain_flops = 0, plain_nnz = 0;
   for (int b = 0; b < n_bodies(); ++b) {
     if (!system_[b]) continue;
-    const double ng = double(system_[b]->interface.size()), qb = double(cs.body_rows[b].size());
-    dense_flops += ng * ng * ng / 3 + ng * ng * qb + ng * qb * qb;
+    const BodyDenseWork work = condensed_dense_work(b);
+    dense_flops += work.block + work.coupling;
     plain_flops += system_[b]->envelope.flops, plain_nnz += system_[b]->envelope.nnz;
   }
   const double apart = rows_apart_at_start();
@@ -172,10 +177,11 @@ bool Model::choose_interface_solver(const std::function<void()> &analyze_bodies)
   for (int b = 0; b < n_bodies(); ++b) {
     if (!system_[b]) continue;
     const double ng = double(system_[b]->interface.size()), qb = double(cs.body_rows[b].size());
+    const BodyDenseWork work = condensed_dense_work(b);
     flops += system_[b]->cholesky.analysis_flops();
     nnz += double(system_[b]->cholesky.factor_nnz());
-    dense_block_flops += ng * ng * ng / 3, dense_block_nnz += ng * ng / 2;
-    extra_flops += ng * ng * qb + ng * qb * qb;
+    dense_block_flops += work.block, dense_block_nnz += ng * ng / 2;
+    extra_flops += work.coupling;
     extra_bytes += 8 * (ng * qb + ng * ng);
   }
   const CondensedOperatorCost interface_operator = condensed_operator_cost();
@@ -300,7 +306,7 @@ void Model::build_sparse_structure() {
     }
     // The block reads K where it is (SparseBlock); the condensed path's K less supports and
     // pins is not used here: freed, and made again if that path takes over (build_condensed).
-    sys.reduced = SymmetricCsc();
+    sys.reduced = SymmetricCsc(), sys.reduced_held = false;
     const SparseBlock block{&sys.stiffness, &sparse_index(b), &sparse_dofs(b), int(sparse_dofs(b).size())};
     if (block.n > 0) st.blocks.push_back(block), st.block_offset.push_back(offset);
     offset += block.n;
