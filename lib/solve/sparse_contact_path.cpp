@@ -131,7 +131,26 @@ static double expected_krylov_steps(double apart) {
 constexpr double kClearMargin = 10;
 
 Model::BodyDenseWork Model::condensed_dense_work(int b) const {
-  const double ng = double(system_[b]->interface.size()), qb = double(contact_->body_rows[b].size());
+  const ContactSystem &cs = *contact_;
+  const BodySystem &sys = *system_[b];
+  double ng = double(sys.interface.size());
+  if (cs.b_partial) {
+    // B without the mortar weights of the rows with a mortar value w_a: those rows reach the
+    // mortar body through D^-1 R, whose support holds R_a's own nodes ((D^-1)_aa != 0), so the
+    // interface is at least the partial B's unknowns and every R_a's (a lower bound, as the
+    // check that reads it needs).
+    std::vector<char> in(size_t(sys.stiffness.n), 0);
+    for (int dof : sys.interface) in[size_t(dof)] = 1;
+    for (int a = 0; a < cs.rows.aux_count; ++a) {
+      if (cs.groups[cs.aux_group[a]].mortar != b) continue;
+      for (int p = cs.rows.aux_r_start[a]; p < cs.rows.aux_r_start[a + 1]; ++p)
+        for (int c = 0; c < 2; ++c) {
+          const int dof = dof_of(b, cs.rows.aux_r_node[p], c);
+          if (dof >= 0 && sys.solve_index[dof] >= 0 && !in[size_t(dof)]) in[size_t(dof)] = 1, ng += 1;
+        }
+    }
+  }
+  const double qb = double(cs.body_rows[b].size());
   return {ng * ng * ng / 3, ng * ng * qb + ng * qb * qb};
 }
 
