@@ -1229,33 +1229,39 @@ END_TEST
    re-solve at twice the load update the factor instead of refactorizing (the log's "N factor
    updates", summed, must be positive), and the re-solve's answer is a fresh model's at that load
    (pressures and displacements within TOL). */
-static void count_updates(void *user, mc_log_level level, const char *message) {
+/* A number the log names: the sum, over the messages, of the number just before `marker`. */
+typedef struct {
+  const char *marker;
+  long count;
+} logged_count;
+static void count_logged(void *user, mc_log_level level, const char *message) {
   (void)level;
-  const char *at = strstr(message, " factor updates");
+  logged_count *c = (logged_count *)user;
+  const char *at = strstr(message, c->marker);
   if (!at) return;
   while (at > message && at[-1] >= '0' && at[-1] <= '9') --at;
-  *(long *)user += atol(at);
+  c->count += atol(at);
 }
 
 START_TEST(factor_updates_are_exact) {
   run r[2];
   answer a[2];
   memset(r, 0, sizeof r), memset(a, 0, sizeof a);
-  long updates = 0;
+  logged_count updates = {" factor updates", 0};
   for (int k = 0; k < 2; ++k) {
     b_hertz(&r[k], 4);  /* disc body 1, non-mortar normals, dual mortar, smooth */
     mc_model *m = r[k].m;
     OK(mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, MC_INTERFACE_SPARSE));
   }
   mc_model *m = r[0].m;
-  OK(mc_set_log_callback(m, count_updates, &updates));
+  OK(mc_set_log_callback(m, count_logged, &updates));
   OK(mc_solve(m));
   s_hertz(&r[0], 4, 0);
   answer_get(&r[0], mc_solve(r[0].m), &a[0]);
   s_hertz(&r[1], 4, 0);
   answer_get(&r[1], mc_solve(r[1].m), &a[1]);
-  printf("factor updates: %ld in the first solve and the re-solve\n", updates);
-  ck_assert_msg(updates > 0, "no active set was solved through an update of the factor");
+  printf("factor updates: %ld in the first solve and the re-solve\n", updates.count);
+  ck_assert_msg(updates.count > 0, "no active set was solved through an update of the factor");
   ck_assert_int_eq(a[0].status, MC_OK);
   ck_assert_int_eq(a[1].status, MC_OK);
   ck_assert_int_eq(a[0].n, a[1].n);
@@ -1570,45 +1576,52 @@ static double weighed_window_load(mc_model *m, const sc_mesh *top, double length
   free(q);
   return window + 1e-4 * length;
 }
-START_TEST(load_steps_build_updates_on_updates) {
-  const int nx = 400, steps = 3;
+/* A load history on the strips (sparse path): `steps` + 1 solves on one handle of load(step);
+   every step after the first at most `max_factorizations` factorizations and at least
+   `min_counted` of what the log counts before `marker`; the contact forces carry the load, and
+   the last step's pressures are those of a fresh handle solved for its load alone (1e-10 p). */
+static void strips_load_history(int nx, int steps, double (*load)(mc_model *, const sc_mesh *, double, int),
+                                const char *marker, int64_t max_factorizations, long min_counted, const char *label) {
   const double length = 0.1 * nx;
   sc_mesh b[2];
   strips_mesh(b, nx);
   mc_model *m = strips_model(b, MC_INTERFACE_SPARSE);
-  long updates = 0;
-  OK(mc_set_log_callback(m, count_updates, &updates));
+  logged_count counted = {marker, 0};
+  OK(mc_set_log_callback(m, count_logged, &counted));
   mc_int q = 0;
   for (int step = 0; step <= steps; ++step) {
-    const double load = weighed_window_load(m, &b[0], length, step);
-    const long updates_before = updates;
+    const double applied = load(m, &b[0], length, step);
+    const long before = counted.count;
     OK(mc_solve(m));
     int64_t factorizations = 0, ran = 0;
     OK(mc_get_info_int(m, MC_INFO_FACTORIZATIONS, &factorizations));
     OK(mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &ran));
     const double total = total_contact_force(m, &q);
-    printf("weighed strip, step %d: %ld factorizations, %ld factor updates, forces against the load %.2e\n", step,
-           (long)factorizations, updates - updates_before, fabs(total - load) / load);
+    printf("%s, step %d: %ld factorizations, %ld of \"%s\", forces against the load %.2e\n", label, step,
+           (long)factorizations, counted.count - before, marker, fabs(total - applied) / applied);
     ck_assert_int_eq(ran, MC_INTERFACE_SPARSE);
-    ck_assert_double_le(fabs(total - load), 1e-10 * load);
+    ck_assert_double_le(fabs(total - applied), 1e-10 * applied);
     if (step > 0) {
-      ck_assert_int_le(factorizations, 3);
-      ck_assert_int_ge(updates - updates_before, 2);
+      ck_assert_int_le(factorizations, max_factorizations);
+      ck_assert_int_ge(counted.count - before, min_counted);
     }
   }
   double *last = malloc(sizeof(double) * (size_t)q), *fresh = malloc(sizeof(double) * (size_t)q);
   OK(mc_get_contact_pressure(m, last));
   mc_destroy(m);
   m = strips_model(b, MC_INTERFACE_SPARSE);
-  weighed_window_load(m, &b[0], length, steps);
+  load(m, &b[0], length, steps);
   OK(mc_solve(m));
   OK(mc_get_contact_pressure(m, fresh));
   double worst = 0;
   for (mc_int j = 0; j < q; ++j) worst = max_d(worst, fabs(last[j] - fresh[j]) / 0.01);
-  printf("weighed strip: the last step against a fresh solve %.2e p\n", worst);
+  printf("%s: the last step against a fresh solve %.2e p\n", label, worst);
   ck_assert_double_le(worst, 1e-10);
   free(last), free(fresh), mc_destroy(m);
   sc_mesh_free(&b[0]), sc_mesh_free(&b[1]);
+}
+START_TEST(load_steps_build_updates_on_updates) {
+  strips_load_history(400, 3, weighed_window_load, " factor updates", 3, 2, "weighed strip");
 }
 END_TEST
 
@@ -1621,52 +1634,9 @@ END_TEST
    then a few rows at a time (modified). So each step after the first factorizes once and
    modifies the factor (3 factorizations and 2 low-rank updates before: measured), and the last
    step's pressures are those of a fresh handle solved for its load alone. */
-static void count_modifications(void *user, mc_log_level level, const char *message) {
-  (void)level;
-  const char *at = strstr(message, " of the updates modified the factor in place");
-  if (!at) return;
-  while (at > message && at[-1] >= '0' && at[-1] <= '9') --at;
-  *(long *)user += atol(at);
-}
 START_TEST(load_steps_modify_the_factor_in_place) {
-  const int nx = 4000, steps = 2;
-  const double length = 0.1 * nx;
-  sc_mesh b[2];
-  strips_mesh(b, nx);
-  mc_model *m = strips_model(b, MC_INTERFACE_SPARSE);
-  long modifications = 0;
-  OK(mc_set_log_callback(m, count_modifications, &modifications));
-  mc_int q = 0;
-  for (int step = 0; step <= steps; ++step) {
-    const double load = strip_window_load(m, &b[0], length, step);
-    const long before = modifications;
-    OK(mc_solve(m));
-    int64_t factorizations = 0, ran = 0;
-    OK(mc_get_info_int(m, MC_INFO_FACTORIZATIONS, &factorizations));
-    OK(mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &ran));
-    const double total = total_contact_force(m, &q);
-    printf("strips at 4001 nodes, step %d: %ld factorizations, %ld modified in place, forces against the load %.2e\n",
-           step, (long)factorizations, modifications - before, fabs(total - load) / load);
-    ck_assert_int_eq(ran, MC_INTERFACE_SPARSE);
-    ck_assert_double_le(fabs(total - load), 1e-10 * load);
-    if (step > 0) {
-      ck_assert_int_le(factorizations, 1);
-      ck_assert_int_ge(modifications - before, 1);
-    }
-  }
-  double *last = malloc(sizeof(double) * (size_t)q), *fresh = malloc(sizeof(double) * (size_t)q);
-  OK(mc_get_contact_pressure(m, last));
-  mc_destroy(m);
-  m = strips_model(b, MC_INTERFACE_SPARSE);
-  strip_window_load(m, &b[0], length, steps);
-  OK(mc_solve(m));
-  OK(mc_get_contact_pressure(m, fresh));
-  double worst = 0;
-  for (mc_int j = 0; j < q; ++j) worst = max_d(worst, fabs(last[j] - fresh[j]) / 0.01);
-  printf("strips at 4001 nodes: the last step against a fresh solve %.2e p\n", worst);
-  ck_assert_double_le(worst, 1e-10);
-  free(last), free(fresh), mc_destroy(m);
-  sc_mesh_free(&b[0]), sc_mesh_free(&b[1]);
+  strips_load_history(4000, 2, strip_window_load, " of the updates modified the factor in place", 1, 1,
+                      "strips at 4001 nodes");
 }
 END_TEST
 
