@@ -157,6 +157,10 @@ bool SparseContactSolver::modify_factor(const std::vector<char> &active, SparseC
       rows[which].push_back(s.column[p]), values[which].push_back(scale * s.value[p]);
     colptr[which].push_back(int(rows[which].size()));
   }
+  if (colptr[0].size() + colptr[1].size() == 2) {  // no row differs (a low-rank update was in use)
+    update_ = {}, factorized_ = active;
+    return true;
+  }
   update_ = {}, factorized_.clear(), factor_set_.clear();
   bool positive = true;
   for (int which = 0; which < 2 && positive; ++which)
