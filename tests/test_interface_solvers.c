@@ -1640,51 +1640,6 @@ START_TEST(load_steps_modify_the_factor_in_place) {
 }
 END_TEST
 
-/* B's mortar weights on the sparse path (frictionless): completed during the first solve, on a
-   second thread from its first factorization on (Model::solve_sparse; not held while the factor
-   grows, the solve's memory peak), or after the solve with one thread (MC_OPTION_THREADS 1).
-   The strips at 401 contact nodes pressed uniformly (a patch test): the log says which, the
-   pressures are p to 1e-9 with either, the gaps closed to round-off (they read B's mortar
-   weights), and a re-solve (B whole by then) gives the first solve's pressures bit for bit. */
-static void note_b_completion(void *user, mc_log_level level, const char *message) {
-  (void)level;
-  if (strstr(message, "B's mortar weights: completed")) snprintf((char *)user, 256, "%s", message);
-}
-START_TEST(b_is_completed_after_the_first_factorization) {
-  const int nx = 400;
-  sc_mesh b[2];
-  strips_mesh(b, nx);
-  for (int threads = 1; threads <= 2; ++threads) {
-    mc_model *m = strips_model(b, MC_INTERFACE_SPARSE);
-    OK(mc_set_option_int(m, MC_OPTION_THREADS, threads));
-    press(m, 1, &b[0], SC_TOP, 0.01);
-    char line[256] = "";
-    OK(mc_set_log_callback(m, note_b_completion, line));
-    OK(mc_solve(m));
-    printf("%d thread(s): %s\n", threads, line);
-    ck_assert_ptr_nonnull(strstr(line, threads == 1 ? "after the solve" : "alongside the solve, after its first factorization"));
-    mc_int q = 0;
-    OK(mc_get_contact_count(m, &q));
-    double *p = malloc(sizeof(double) * (size_t)q), *g = malloc(sizeof(double) * (size_t)q),
-           *again = malloc(sizeof(double) * (size_t)q);
-    OK(mc_get_contact_pressure(m, p));
-    OK(mc_get_contact_gap(m, g));
-    double worst_p = 0, worst_g = 0;
-    for (mc_int j = 0; j < q; ++j) worst_p = max_d(worst_p, fabs(p[j] - 0.01) / 0.01), worst_g = max_d(worst_g, fabs(g[j]));
-    printf("%d thread(s): pressures off p by %.2e, gaps %.2e\n", threads, worst_p, worst_g);
-    ck_assert_double_le(worst_p, 1e-9);
-    ck_assert_double_le(worst_g, 1e-12);
-    line[0] = 0;
-    OK(mc_solve(m));
-    ck_assert_str_eq(line, "");  /* B whole since the first solve */
-    OK(mc_get_contact_pressure(m, again));
-    for (mc_int j = 0; j < q; ++j) ck_assert_double_eq(again[j], p[j]);
-    free(p), free(g), free(again), mc_destroy(m);
-  }
-  sc_mesh_free(&b[0]), sc_mesh_free(&b[1]);
-}
-END_TEST
-
 /* The automatic choice bounds each body's factorization by its envelope first (bodies' reverse
    Cuthill-McKee envelopes, lib/linalg/envelope_bound.hpp): on the strips at 401 contact nodes
    the condensed path's dense work alone outweighs that bound on the sparse path's, so the
@@ -1773,7 +1728,6 @@ int main(void) {
   tcase_add_test(tc, a_load_moved_along_a_long_strip);
   tcase_add_test(tc, a_slender_strip_held_over_a_tenth);
   tcase_add_test(tc, the_automatic_choice_bounds_the_bodies_first);
-  tcase_add_test(tc, b_is_completed_after_the_first_factorization);
   suite_add_tcase(suite, tc);
   return sc_run_suite(suite);
 }

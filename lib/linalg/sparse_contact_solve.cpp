@@ -187,11 +187,6 @@ void SparseContactSolver::factorize_afresh(const std::vector<char> &active, Spar
   cholesky_.factorize(matrix_);
   factorized_ = factor_set_ = active;
   result.factorizations++;
-  if (after_factorization_) {
-    const std::function<void()> f = std::move(after_factorization_);
-    after_factorization_ = nullptr;
-    f();
-  }
   result.t_factor += now() - start;
 }
 

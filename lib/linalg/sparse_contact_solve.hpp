@@ -117,9 +117,6 @@ public:
   void solve_rows(const std::vector<double> &load, const std::vector<double> &target, const std::vector<char> &set,
                   const std::vector<Coupling> &coupling, std::vector<double> &x, std::vector<double> &lambda,
                   SparseContactResult &result);
-  // f is called once, right after the next numeric factorization (or never, if none comes): the
-  // caller's work that should not hold memory while the factor grows (Model::solve_sparse).
-  void after_next_factorization(std::function<void()> f) { after_factorization_ = std::move(f); }
   // An estimate of row r's compliance c_r H^-1 c_r^T (Jacobi: the one P's weight is made from).
   double row_compliance(int r) const;
   double row_times(int r, const std::vector<double> &x) const;  // C_r x
@@ -176,7 +173,6 @@ private:
   int aside_modifications_ = 0;
   std::vector<char> aside_set_;
   std::vector<double> path_;         // each unknown's elimination-tree path in L (entries)
-  std::function<void()> after_factorization_;
   std::vector<Coupling> coupling_;   // of the system being solved (solve_rows; empty: D = C)
   double flops_ = 0, t_analysis_ = 0;
 };

@@ -11,10 +11,8 @@
 #include "solve/model.hpp"
 #include "bodies/plane_vectors.hpp"
 #include "support/stopwatch.hpp"
-#include <condition_variable>
 #include <exception>
 #include <functional>
-#include <mutex>
 #include <system_error>
 #include <thread>
 
@@ -112,87 +110,50 @@ void Model::find_interface(int b) {
 // a second core, with MC_OPTION_THREADS 1 or without `meanwhile` (empty). The interface
 // unknowns follow B.
 void Model::complete_b(const std::function<void()> &meanwhile) {
-  if (!meanwhile) {
-    complete_b_once_started([](const std::function<void()> &) {}, false);
-    return;
-  }
-  complete_b_once_started([&](const std::function<void()> &start) {
-    start();
-    meanwhile();
-  });
-}
-
-// As complete_b, but the second thread begins when `meanwhile` calls the `start` it is given
-// (the sparse solve: after its first factorization, whose growing factor is the solve's memory
-// peak, so that B's mortar weights are not held at that peak), or when it returns; without a
-// second thread, after it. B is installed even when `meanwhile` throws (if its completion ran),
-// so that the model never reads a partial B as whole. alongside false: after `meanwhile`, on the
-// calling thread.
-void Model::complete_b_once_started(const std::function<void(const std::function<void()> &)> &meanwhile,
-                                    bool alongside) {
   ContactSystem &cs = *contact_;
   if (!cs.b_partial) {
-    meanwhile([] {});
+    if (meanwhile) meanwhile();
     return;
   }
   BArrays full;
   double seconds = 0;  // (measured where it runs; logged by the caller, on the calling thread)
-  std::exception_ptr error, failed;
-  bool assembled = false;
   auto assemble = [&] {
-    try {
-      const double start = now();
-      assemble_b(cs, true, full);
-      seconds = now() - start;
-      assembled = true;
-    } catch (...) {
-      error = std::current_exception();
-    }
+    const double start = now();
+    assemble_b(cs, true, full);
+    seconds = now() - start;
   };
-  std::mutex mutex;
-  std::condition_variable signal;
-  bool go = false;
-  auto start = [&] {
-    {
-      std::lock_guard<std::mutex> lock(mutex);
-      go = true;
-    }
-    signal.notify_one();
-  };
-  std::thread worker;
-  if (alongside && threads_ > 1) {
+  if (threads_ > 1 && meanwhile) {
+    std::exception_ptr error;
+    std::thread worker;
     try {
       worker = std::thread([&] {
-        {
-          std::unique_lock<std::mutex> lock(mutex);
-          signal.wait(lock, [&] { return go; });
+        try {
+          assemble();
+        } catch (...) {
+          error = std::current_exception();
         }
-        assemble();
       });
-    } catch (const std::system_error &) {  // no thread to be had: after `meanwhile`
+    } catch (const std::system_error &) {  // no thread to be had: before `meanwhile`
+      assemble();
     }
-  }
-  cs.b_completed_alongside = worker.joinable();
-  try {
-    meanwhile(start);
-  } catch (...) {
-    failed = std::current_exception();
-  }
-  if (worker.joinable()) {
-    start();
-    worker.join();
-  } else if (!failed) {
+    cs.b_completed_alongside = worker.joinable();
+    try {
+      meanwhile();
+    } catch (...) {
+      if (worker.joinable()) worker.join();
+      throw;
+    }
+    if (worker.joinable()) worker.join();
+    if (error) std::rethrow_exception(error);
+  } else {
     assemble();
+    if (meanwhile) meanwhile();
   }
-  if (assembled) {
-    cs.b_completion_seconds += seconds;
-    cs.b_start = std::move(full.start), cs.b_dof = std::move(full.dof), cs.b_value = std::move(full.value);
-    cs.b_partial = false;
-    for (ContactGroup &group : cs.groups) group.rows.release_mortar_weights();
-    for (int b = 0; b < n_bodies(); ++b) find_interface(b);
-  }
-  if (failed) std::rethrow_exception(failed);
-  if (error) std::rethrow_exception(error);
+  cs.b_completion_seconds += seconds;
+  cs.b_start = std::move(full.start), cs.b_dof = std::move(full.dof), cs.b_value = std::move(full.value);
+  cs.b_partial = false;
+  for (ContactGroup &group : cs.groups) group.rows.release_mortar_weights();
+  for (int b = 0; b < n_bodies(); ++b) find_interface(b);
 }
 
 }  // namespace mc

@@ -392,7 +392,6 @@ private:
   };
   void assemble_b(const ContactSystem &cs, bool mortar_values_weights, BArrays &out) const;
   void complete_b(const std::function<void()> &meanwhile);
-  void complete_b_once_started(const std::function<void(const std::function<void()> &)> &meanwhile, bool alongside = true);
   void find_interface(int b);
   void check_contact_pairs() const;
   void contact_results(const std::vector<double> &lambda);

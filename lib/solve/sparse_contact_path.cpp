@@ -403,17 +403,12 @@ void Model::build_sparse_structure() {
     const int r = cs.tangent_of[j];
     add_contact_row(r, q + int(j), Point{-rows.normal[r].y, rows.normal[r].x});
   }
-  // The structure read B's non-mortar parts and the rows without a mortar value. A partial B is
-  // completed during the first solve, once its first factorization is done (solve_sparse): B's
-  // mortar weights (13 % of the strips' peak at 4001 contact nodes) are then not held while the
-  // factor grows, the solve's memory peak (docs/notes/interface-solver.md, "Session 19").
-  // Friction's rows read B before the solve: there it is completed while the ordering runs.
-  auto analyze = [&] {
+  // The structure read B's non-mortar parts and the rows without a mortar value: a partial B
+  // is completed while the ordering runs (one thread), before anything else reads it.
+  complete_b([&] {
     Stopwatch watch(infos.t_analysis);
     cs.solver.analyze(st, options.ordering);
-  };
-  if (cs.tangent_of.empty()) analyze();
-  else complete_b(analyze);
+  });
   const double bytes = 8.0 * double(cs.solver.factor_nnz()), memory = memory_for(bytes);
   if (memory > 0 && bytes > memory)
     fail(MC_ERROR_MEMORY,
@@ -680,19 +675,9 @@ bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lam
   const std::vector<double> alpha_0 = sparse_rigid_shift(start_set, target);
   const DualQpObserver observe = iteration_log(q);
   SparseContactResult result;
-  const double completed_before = cs.b_completion_seconds;
-  const bool completing = cs.b_partial;
   try {
-    // (B's mortar weights completed alongside, from the first factorization on: build_sparse_structure.)
-    complete_b_once_started([&](const std::function<void()> &start_completing) {
-      struct Forget {  // start_completing lives only as long as this call, whatever it throws
-        SparseContactSolver &solver;
-        ~Forget() { solver.after_next_factorization(nullptr); }
-      } forget{cs.solver};
-      cs.solver.after_next_factorization(start_completing);
-      result = cs.solver.solve(load, target, start_set, options.tolerance, options.max_iterations, hold_modes,
-                               observe, initial_gap);
-    });
+    result = cs.solver.solve(load, target, start_set, options.tolerance, options.max_iterations, hold_modes, observe,
+                             initial_gap);
   } catch (const Error &error) {
     if (error.status() != MC_ERROR_SINGULAR) throw;
     fail_sparse_singular(error);
@@ -709,10 +694,6 @@ bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lam
            result.outcome == SparseContactOutcome::solved ? "solved" : "not converged", result.iterations,
            result.factorizations, result.updates + result.modifications, result.cg_steps, result.violation,
            now() - start, result.t_factor, result.t_solve, result.modifications);
-  if (completing)
-    progress(MC_LOG_PHASE, "B's mortar weights: completed %s, in %.3g s",
-             cs.b_completed_alongside ? "alongside the solve, after its first factorization" : "after the solve",
-             cs.b_completion_seconds - completed_before);
   if (result.outcome == SparseContactOutcome::modes_not_held) {
     const std::string unheld = unheld_modes_description();
     fail(MC_ERROR_SINGULAR,
