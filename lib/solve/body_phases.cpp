@@ -117,7 +117,7 @@ void Model::reduce_body(int b, BodyWork &work) {
   sys->solve_dofs.clear();
   for (int i = 0; i < ndof; ++i)
     if (!excluded[i]) sys->solve_index[i] = int(sys->solve_dofs.size()), sys->solve_dofs.push_back(i);
-  find_interface(b);  // (B partial, the sparse path forced: found again when it is complete)
+  find_interface(b);  // (B partial: found again if it is completed, complete_b)
   reduce_stiffness(b, work);
 }
 

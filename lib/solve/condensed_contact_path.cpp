@@ -72,6 +72,7 @@ static void add_interface_product(const ContactSystem &cs, int b, const double *
 // was forced, or chosen and then fell back) are analysed first.
 void Model::build_condensed(const std::function<void(int, BodyWork &)> &then) {
   if (contact_) {
+    complete_b(nullptr);  // (a partial B: the sparse path's, handing over when its iteration cycled)
     contact_->sparse = false;
     contact_->w.assign(body.size(), {});
     contact_->w_rows.assign(body.size(), 0);
@@ -121,6 +122,7 @@ Model::CondensedOperatorCost Model::condensed_operator_cost() const {
 // MC_ERROR_MEMORY). The structure stays condensed until it is rebuilt.
 void Model::fall_back_to_condensed(std::vector<LoadSolve> &loads) {
   const double start = now();
+  complete_b(nullptr);  // (a partial B: the condensed path reads B whole, its interface too)
   check_condensed_fits();
   contact_->last_active.clear();
   contact_->solver.release();

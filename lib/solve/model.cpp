@@ -245,13 +245,37 @@ double Model::row_initial_gap(int r) const {
   return g;
 }
 
-// Row r's gap g_r - B_r u with the bodies' current displacements (body[b].u).
+// Row r's gap g_r - B_r u with the bodies' current displacements (body[b].u). With a partial B
+// a row with a mortar value has B_r's mortar part -n . w_a, w_a the last sparse solve's.
 double Model::row_gap(int r) const {
+  const ContactSystem &cs = *contact_;
   double gap = row_initial_gap(r);
   for (int b = 0; b < n_bodies(); ++b)
-    for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
-      gap -= contact_->b_value[b][p] * body[b].u[contact_->b_dof[b][p]];
+    for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) gap -= cs.b_value[b][p] * body[b].u[cs.b_dof[b][p]];
+  if (cs.b_partial && r < cs.rows.size() && cs.rows.aux[r] >= 0) {
+    const size_t a = size_t(cs.rows.aux[r]);
+    gap += cs.rows.normal[r].x * cs.aux_values[2 * a] + cs.rows.normal[r].y * cs.aux_values[2 * a + 1];
+  }
   return gap;
+}
+
+// The contact forces -B^T lambda on body b's DOFs (K u = f + contact_force), added to `force`.
+// With a partial B, the rows with a mortar value act on their mortar body through their mortar
+// equations: R^T mu (ContactSystem::aux_multipliers).
+void Model::add_contact_force(int b, const std::vector<double> &lambda, std::vector<double> &force) const {
+  const ContactSystem &cs = *contact_;
+  for (int r = 0; r < cs.b_rows(); ++r)  // normal rows, then friction's tangential ones
+    for (int p = cs.b_start[b][r]; p < cs.b_start[b][r + 1]; ++p) force[cs.b_dof[b][p]] -= cs.b_value[b][p] * lambda[r];
+  if (!cs.b_partial) return;
+  const ConstraintRows &rows = cs.rows;
+  for (int a = 0; a < rows.aux_count; ++a) {
+    if (cs.groups[cs.aux_group[a]].mortar != b) continue;
+    for (int p = rows.aux_r_start[a]; p < rows.aux_r_start[a + 1]; ++p)
+      for (int c = 0; c < 2; ++c) {
+        const int dof = dof_of(b, rows.aux_r_node[p], c);
+        if (dof >= 0) force[dof] += rows.aux_r[p] * cs.aux_multipliers[2 * size_t(a) + c];
+      }
+  }
 }
 
 // The gap at contact position pos itself, g0 - (u1 - u2(y)) . n with y its projection on the
@@ -426,9 +450,7 @@ void Model::solve() {
     const int ndof = sys.stiffness.n;
     std::vector<double> contact_force(ndof, 0.0), rigid_motion(ndof, 0.0);  // rigid_motion: R alpha
     if (contact_) {
-      for (int r = 0; r < contact_->b_rows(); ++r)  // normal rows, then friction's tangential ones
-        for (int p = contact_->b_start[b][r]; p < contact_->b_start[b][r + 1]; ++p)
-          contact_force[contact_->b_dof[b][p]] -= contact_->b_value[b][p] * lambda[r];
+      add_contact_force(b, lambda, contact_force);
       add_rigid_motion(b, alpha, rigid_motion);
     }
     if (contact_ && !displacements_known) {

@@ -111,10 +111,17 @@ struct ContactSystem {
   std::vector<std::vector<int>> b_start, b_dof;
   std::vector<std::vector<double>> b_value;
   // B without the mortar weights of the rows with a mortar value (ConstraintRows::aux): the
-  // sparse path forced builds its structure from it, and completes it meanwhile (complete_b).
+  // sparse path builds its structure from it. Without friction it never completes it (a row's
+  // mortar part is -n . w_a, and the mortar body's contact forces R^T mu: aux_values and
+  // aux_multipliers below); friction and the condensed path complete it first (complete_b).
   bool b_partial = false;
   double b_completion_seconds = 0;  // what completing it took
   bool b_completed_alongside = false;  // on a thread of its own, while the sparse path's ordering ran
+  // The last sparse solve's mortar values w (2 per aux point: x, y) and the multipliers mu of
+  // their equations D w - R u2 = 0 (the same order), read where B is partial: a row's gap
+  // g_r - B_r u has -n . w_a for B's mortar part, and the mortar body's contact forces -B^T lambda
+  // are R^T mu (the KKT system's stationarity in w: D^T mu = n lambda, so R^T mu = (D^-1 R)^T n lambda).
+  std::vector<double> aux_values, aux_multipliers;
   // The rows that touch each body (B_b's nonzero columns), increasing.
   std::vector<std::vector<int>> body_rows;
   // The q x q interface operator B K^+ B^T, stored by blocks of rows: block (I, J) only if a
@@ -286,6 +293,7 @@ public:
   // g0 of constraint row r with the host's offsets.
   double row_initial_gap(int r) const;
   double row_gap(int r) const;
+  void add_contact_force(int b, const std::vector<double> &lambda, std::vector<double> &force) const;
   double pointwise_gap(size_t pos) const;
   void add_rigid_motion(int b, const std::vector<double> &alpha, std::vector<double> &u) const;
   double recovered_gap_residual(const std::vector<double> &lambda) const;
