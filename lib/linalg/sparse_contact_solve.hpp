@@ -143,9 +143,10 @@ private:
   double complementarity(const std::vector<double> &target, const std::vector<char> &active,
                          const std::vector<double> &x, const std::vector<double> &lambda, std::vector<double> &gap,
                          std::vector<int> &violating, double &lambda_ref) const;
-  // CG on S_P lambda = b for the active rows; x follows lambda. Returns the steps taken.
+  // CG on S_P lambda = b for the active rows; x follows lambda, until every active row's
+  // residual is `tolerance` of its size (0: round-off, 1e-14). Returns the steps taken.
   int conjugate_gradients(const std::vector<double> &load, const std::vector<double> &target, std::vector<double> &x,
-                          std::vector<double> &lambda, SparseContactResult &result) const;
+                          std::vector<double> &lambda, SparseContactResult &result, double tolerance = 0) const;
   // GMRES on C_E H_P^-1 D_E^T lambda = b for the rows of E (coupled rows); x follows lambda.
   int gmres(const std::vector<double> &load, const std::vector<double> &target, std::vector<double> &x,
             std::vector<double> &lambda, SparseContactResult &result) const;
@@ -168,10 +169,18 @@ private:
   } update_;
   int modifications_ = 0;            // of the factor in place since its factorization
   // Within solve(): the factor before the last factorization, kept aside with its set, for a set
-  // that comes back near it (a load step's wild set, sparse_factor_update.cpp).
+  // that comes back near it (a load step's wild set, sparse_factor_update.cpp). The factor of
+  // every contact row, unmodified, is kept past the solve: a re-solve whose first step proposes
+  // a set only a factorization reaches starts again from it instead (solve()).
   bool keep_aside_ = false;
   int aside_modifications_ = 0;
   std::vector<char> aside_set_;
+  bool aside_holds_every_row() const;
+  // Whether H_P of `set` would take a numeric factorization (factorize(): neither factor at hand
+  // modified, nor the last one updated, at under half a factorization's cost).
+  bool needs_factorization(const std::vector<char> &set);
+  void update_rows(const std::vector<char> &active, std::vector<int> &rows, std::vector<int> &kept, int &fresh) const;
+  bool update_fits(int k, int fresh) const;
   std::vector<double> path_;         // each unknown's elimination-tree path in L (entries)
   std::vector<Coupling> coupling_;   // of the system being solved (solve_rows; empty: D = C)
   double flops_ = 0, t_analysis_ = 0;

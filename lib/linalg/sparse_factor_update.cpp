@@ -58,31 +58,58 @@ constexpr double kModifyShare = 0.5;
 constexpr int kMaxModifications = 12;
 }  // namespace
 
-bool SparseContactSolver::update_from_factor(const std::vector<char> &active, SparseContactResult &result) {
+// The rows where `active` differs from the factor's set, and for each the column of the update
+// in use that it keeps (-1: a fresh one, a solve).
+void SparseContactSolver::update_rows(const std::vector<char> &active, std::vector<int> &rows, std::vector<int> &kept,
+                                      int &fresh) const {
   const SparseContactStructure &s = *structure_;
-  if (factor_set_.size() != active.size()) return false;
-  std::vector<int> rows;
+  rows.clear();
   for (int r = 0; r < s.rows(); ++r)
     if (s.row_is_inequality[r] && active[r] != factor_set_[r]) rows.push_back(r);
-  const int n = s.n_unknowns, k = int(rows.size());
-  if (k == 0) {
-    update_ = {}, factorized_ = active;
-    return true;
-  }
+  const int k = int(rows.size());
   // The columns of Z already computed (update_.rows is sorted, as rows is).
-  std::vector<int> kept(k, -1);
-  int fresh = 0;
+  kept.assign(k, -1);
+  fresh = 0;
   for (int c = 0, o = 0; c < k; ++c) {
     const std::vector<int> &old = update_.rows;
     while (o < int(old.size()) && old[o] < rows[c]) ++o;
     if (o < int(old.size()) && old[o] == rows[c]) kept[c] = o;
     else ++fresh;
   }
+}
+
+// An update of k rows, `fresh` of them new, costs under half a factorization, and Z (n x k)
+// takes under half the factor's memory.
+bool SparseContactSolver::update_fits(int k, int fresh) const {
   const double solves_per_factorization =
       flops_ >= kMeasuredFromFlops ? kFactorizationSolves : flops_ / (4.0 * double(cholesky_.factor_nnz()));
-  if (double(fresh) > kUpdateShare * solves_per_factorization ||
-      double(k) * n > kUpdateShare * double(cholesky_.factor_nnz()))
-    return false;
+  return double(fresh) <= kUpdateShare * solves_per_factorization &&
+         double(k) * structure_->n_unknowns <= kUpdateShare * double(cholesky_.factor_nnz());
+}
+
+bool SparseContactSolver::needs_factorization(const std::vector<char> &set) {
+  if (factor_set_.size() != set.size()) return true;
+  const double half_a_factorization = kModifyShare * flops_ * kSecondsPerFlopSimplicial;
+  if (!aside_set_.empty() && modify_seconds(aside_set_, aside_modifications_, set) <= half_a_factorization) return false;
+  if (modify_seconds(factor_set_, modifications_, set) <= half_a_factorization) return false;
+  std::vector<int> rows, kept;
+  int fresh = 0;
+  update_rows(set, rows, kept, fresh);
+  return !rows.empty() && !update_fits(int(rows.size()), fresh);
+}
+
+bool SparseContactSolver::update_from_factor(const std::vector<char> &active, SparseContactResult &result) {
+  const SparseContactStructure &s = *structure_;
+  if (factor_set_.size() != active.size()) return false;
+  std::vector<int> rows, kept;
+  int fresh = 0;
+  update_rows(active, rows, kept, fresh);
+  const int n = s.n_unknowns, k = int(rows.size());
+  if (k == 0) {
+    update_ = {}, factorized_ = active;
+    return true;
+  }
+  if (!update_fits(k, fresh)) return false;
   const double start = now();
   LowRankUpdate u;
   u.rows = rows;

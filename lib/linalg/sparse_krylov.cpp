@@ -19,7 +19,7 @@ constexpr int kMaxCgSteps = 300;
 
 int SparseContactSolver::conjugate_gradients(const std::vector<double> &load, const std::vector<double> &target,
                                              std::vector<double> &x, std::vector<double> &lambda,
-                                             SparseContactResult &result) const {
+                                             SparseContactResult &result, double tolerance) const {
   const SparseContactStructure &s = *structure_;
   const int nrows = s.rows();
   std::vector<char> in(nrows);
@@ -50,7 +50,7 @@ int SparseContactSolver::conjugate_gradients(const std::vector<double> &load, co
     for (int r = 0; r < nrows; ++r) w = std::max(w, std::fabs(res[r]) * row_scale[r]);
     return w;
   };
-  const double goal = kRowTolerance * std::max(size, 1e-300);
+  const double goal = (tolerance > 0 ? tolerance : kRowTolerance) * std::max(size, 1e-300);
   double best = worst();
   int steps = 0, since_best = 0;
   if (best <= goal) return 0;

@@ -5,9 +5,11 @@
 //
 // A long interface's mortar weights are most of B (D^-1 R: some 60 per row) and most of the
 // contact geometry's cost (docs/notes/contact-geometry-cost.md). The sparse path reads a row's
-// mortar value w_a instead (ConstraintRows::aux), so when it is forced B is first built without
-// them (partial) and completed on another thread while the sparse path's ordering runs
-// (complete_b), before anything else reads B: the results (B^T lambda, the gaps) read every row.
+// mortar value w_a instead (ConstraintRows::aux), so B is first built without them (partial).
+// Without friction it stays so: the gaps read -n . w_a for a row's mortar part and the mortar
+// body's contact forces are R^T mu (Model::row_gap, add_contact_force). The condensed path and
+// friction read B whole: complete_b completes it first (on another thread while the sparse
+// path's ordering runs, with friction).
 #include "solve/model.hpp"
 #include "bodies/plane_vectors.hpp"
 #include "support/stopwatch.hpp"

@@ -177,9 +177,9 @@ void Model::build_structure(const std::function<void(int, BodyWork &)> &then) {
   system_.clear();
   system_.resize(body.size());
   // The sparse path reads the mortar values w_a, not B's mortar weights, and the automatic choice
-  // reads neither: B is built without them and completed while the sparse path's ordering runs
-  // (build_sparse_structure, complete_b), or before the bodies are analysed for the condensed
-  // path (choose_interface_solver). Forced condensed, B is built whole.
+  // reads neither: B is built without them, and completed only for friction (while the sparse
+  // path's ordering runs, build_sparse_structure) or before the bodies are analysed for the
+  // condensed path (choose_interface_solver, build_condensed). Forced condensed, B is built whole.
   if (contact_active()) {
     Stopwatch watch(infos.t_contact);
     contact_ = build_contact_system(options.interface_solver != MC_INTERFACE_CONDENSED);
