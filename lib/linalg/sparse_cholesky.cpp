@@ -82,6 +82,12 @@ struct SparseCholesky::Impl {
   cholmod_factor *symbolic = nullptr;  // a simplicial analysis (keep_aside)
   cholmod_factor *aside = nullptr;     // keep_aside's second factor
   std::vector<int> interface;  // original indices, in the caller's order
+  // For modify, made at its first call after an analysis (every factor of the analysis shares
+  // them): the inverse of the factor's permutation, the elimination tree (each column's parent,
+  // -1 at a root), and a marker per column.
+  std::vector<int> inverse_perm, parent;
+  std::vector<char> on_path;
+  void forget_tree() { inverse_perm.clear(), parent.clear(), on_path.clear(); }
   Impl() {
     cholmod_start(&common);
     common.print = 0;  // the library never prints; errors are reported through statuses
@@ -128,6 +134,7 @@ void SparseCholesky::analyze(const SymmetricCsc &a, const std::vector<int> &inte
   if (d.factor) cholmod_free_factor(&d.factor, &d.common);
   if (d.symbolic) cholmod_free_factor(&d.symbolic, &d.common);
   if (d.aside) cholmod_free_factor(&d.aside, &d.common);
+  d.forget_tree();
   n_ = a.n;
   analyzed_ = true;
   d.interface = interface;
@@ -200,6 +207,7 @@ void SparseCholesky::release() {
   if (d.aside) cholmod_free_factor(&d.aside, &d.common);
   cholmod_free_work(&d.common);  // the workspace CHOLMOD keeps between calls (a few n-sized arrays)
   d.interface.clear();
+  d.forget_tree();
   n_ = 0;
   analyzed_ = false;
 }
@@ -276,9 +284,12 @@ bool SparseCholesky::modify(bool add, int k, const int *colptr, const int *rows,
   if (n_ == 0 || k == 0) return true;
   if (!d.factor || d.factor->xtype == CHOLMOD_PATTERN) fail(MC_ERROR_INTERNAL, "modify before factorize");
   // CHOLMOD takes C in the factor's order (rows permuted by L->Perm), each column sorted.
-  const int *perm = static_cast<const int *>(d.factor->Perm);
-  std::vector<int> inverse(static_cast<size_t>(n_));
-  for (int i = 0; i < n_; ++i) inverse[size_t(perm[i])] = i;
+  if (d.inverse_perm.empty()) {
+    const int *perm = static_cast<const int *>(d.factor->Perm);
+    d.inverse_perm.resize(static_cast<size_t>(n_));
+    for (int i = 0; i < n_; ++i) d.inverse_perm[size_t(perm[i])] = i;
+  }
+  const std::vector<int> &inverse = d.inverse_perm;
   const int nnz = colptr[k];
   std::vector<int> p(colptr, colptr + k + 1), i(static_cast<size_t>(nnz));
   std::vector<double> x(static_cast<size_t>(nnz));
@@ -301,12 +312,33 @@ bool SparseCholesky::modify(bool add, int k, const int *colptr, const int *rows,
     cholmod_updown(add ? 1 : 0, &cs, d.factor, &d.common);
   }
   d.check("update/downdate");
-  // A simplicial LDL^T now: D is each column's first entry.
-  const int *lp = static_cast<const int *>(d.factor->p);
+  // A simplicial LDL^T now: D is each column's first entry. Only the columns on the elimination-
+  // tree paths from each column of C's first row changed (an update or downdate walks them):
+  // their pivots are checked, not all n.
+  const int *lp = static_cast<const int *>(d.factor->p), *li = static_cast<const int *>(d.factor->i);
+  const int *lnz = static_cast<const int *>(d.factor->nz);
   const double *lx = static_cast<const double *>(d.factor->x);
-  for (int j = 0; j < n_; ++j)
-    if (!(lx[lp[j]] > 0) || !std::isfinite(lx[lp[j]])) return false;
-  return true;
+  if (d.parent.empty()) {
+    d.parent.assign(static_cast<size_t>(n_), -1);
+    for (int j = 0; j < n_; ++j)
+      for (int q = lp[j] + 1; q < lp[j] + lnz[j]; ++q)
+        if (d.parent[size_t(j)] < 0 || li[q] < d.parent[size_t(j)]) d.parent[size_t(j)] = li[q];
+    d.on_path.assign(static_cast<size_t>(n_), 0);
+  }
+  std::vector<int> visited;
+  bool positive = true;
+  for (int c = 0; c < k && positive; ++c) {
+    if (p[size_t(c)] == p[size_t(c) + 1]) continue;
+    for (int j = i[size_t(p[size_t(c)])]; j >= 0 && !d.on_path[size_t(j)]; j = d.parent[size_t(j)]) {
+      d.on_path[size_t(j)] = 1, visited.push_back(j);
+      if (!(lx[lp[j]] > 0) || !std::isfinite(lx[lp[j]])) {
+        positive = false;
+        break;
+      }
+    }
+  }
+  for (int j : visited) d.on_path[size_t(j)] = 0;
+  return positive;
 }
 
 std::vector<double> SparseCholesky::path_entries() const {

@@ -37,8 +37,6 @@ constexpr double kUpdateResidual = 1e-14;
 // wavelengths (5 -> 5, 4, 3 from 0.05 on); docs/notes/interface-solver.md, "A start from the
 // gaps".
 constexpr double kStartGap = 0.1;
-// A factor is kept aside (above) where modifications are measured (sparse_factor_update.cpp).
-constexpr double kKeepAsideFromFlops = 5e7;
 // The sets on the way to the final one are judged by a Krylov solve to this relative residual
 // of the active rows (the final set's is refined to round-off, and judged again). On the load
 // history at 4001 contact nodes (bench/moving_load) a step took 27 CG steps to 1e-14, 22 to
@@ -186,7 +184,7 @@ void SparseContactSolver::factorize_afresh(const std::vector<char> &active, Spar
           matrix_.values[size_t(position(s.column[p], s.column[q]))] += weight_[r] * s.value[p] * s.value[q];
   }
   // (Not over the factor of every row kept aside: a re-solve's restart, solve().)
-  if (keep_aside_ && !factor_set_.empty() && flops_ >= kKeepAsideFromFlops && cholesky_.can_keep_aside() &&
+  if (keep_aside_ && !factor_set_.empty() && measured_costs() && cholesky_.can_keep_aside() &&
       !aside_holds_every_row()) {
     cholesky_.keep_aside();
     aside_set_ = factor_set_, aside_modifications_ = modifications_;

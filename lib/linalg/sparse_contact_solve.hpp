@@ -168,6 +168,12 @@ private:
     DenseLu m;              // M, k x k
   } update_;
   int modifications_ = 0;            // of the factor in place since its factorization
+  // Below 5e7 flops a factorization takes a few milliseconds and the costs of updates and
+  // modifications were not measured: there the flops decide whether to update, as before the
+  // measurement (every small scene of the test suite: an update loses some digits that a
+  // factorization of such a size costs nothing to keep), nothing is modified in place and no
+  // factor is kept aside (sparse_factor_update.cpp).
+  bool measured_costs() const { return flops_ >= 5e7; }
   // Within solve(): the factor before the last factorization, kept aside with its set, for a set
   // that comes back near it (a load step's wild set, sparse_factor_update.cpp). The factor of
   // every contact row, unmodified, is kept past the solve: a re-solve whose first step proposes

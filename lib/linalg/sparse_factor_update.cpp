@@ -29,10 +29,6 @@ namespace {
 // so flops would have taken updates of 29 rows on Hertz that cost as much as a factorization,
 // and refused updates of 5 rows on the strips.
 constexpr double kFactorizationSolves = 20;
-// Below this many flops a factorization takes a few milliseconds and the counts were not
-// measured: there the flops decide, as before the measurement (every small scene of the test
-// suite: an update loses some digits that a factorization of such a size costs nothing to keep).
-constexpr double kMeasuredFromFlops = 5e7;
 // An update is taken when its new solves cost under half a factorization, and Z (n x k) takes
 // under half the factor's memory.
 constexpr double kUpdateShare = 0.5;
@@ -82,7 +78,7 @@ void SparseContactSolver::update_rows(const std::vector<char> &active, std::vect
 // takes under half the factor's memory.
 bool SparseContactSolver::update_fits(int k, int fresh) const {
   const double solves_per_factorization =
-      flops_ >= kMeasuredFromFlops ? kFactorizationSolves : flops_ / (4.0 * double(cholesky_.factor_nnz()));
+      measured_costs() ? kFactorizationSolves : flops_ / (4.0 * double(cholesky_.factor_nnz()));
   return double(fresh) <= kUpdateShare * solves_per_factorization &&
          double(k) * structure_->n_unknowns <= kUpdateShare * double(cholesky_.factor_nnz());
 }
@@ -154,7 +150,7 @@ bool SparseContactSolver::update_from_factor(const std::vector<char> &active, Sp
 double SparseContactSolver::modify_seconds(const std::vector<char> &from, int modifications,
                                            const std::vector<char> &to) {
   const SparseContactStructure &s = *structure_;
-  if (from.size() != to.size() || flops_ < kMeasuredFromFlops || cholesky_.supernodal()) return HUGE_VAL;
+  if (from.size() != to.size() || !measured_costs() || cholesky_.supernodal()) return HUGE_VAL;
   if (modifications >= kMaxModifications) return HUGE_VAL;
   if (path_.empty()) path_ = cholesky_.path_entries();
   // What the modification touches: each differing row's path (the longest of its columns').
