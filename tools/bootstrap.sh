@@ -67,11 +67,13 @@ case "$mode" in
     # (b) valgrind memcheck of the same programs from the normal build. Left out for time (they
     # run under ASan/UBSan above; under valgrind they took 3, 10 and 11 minutes): the convergence
     # study and the two long scene suites; test_interface_solvers (both interface solvers on every
-    # scene, 45 s natively) and test_westergaard (39 s under valgrind). test_contact keeps the
+    # scene, 45 s natively) and test_westergaard (39 s under valgrind); test_model_threads (280 s
+    # under valgrind, which runs its threads one at a time: 2026-11-28, when .ci/run took 1714 s
+    # of its 30 minutes) runs under ASan/UBSan and under TSan (step (a')). test_contact keeps the
     # contact paths, both interface solvers included, under valgrind.
     t0=$SECONDS
     CK_FORK=no OPENBLAS_NUM_THREADS=1 python3 tools/memcheck_tests.py run "$build" \
-      --exclude test_contact_convergence,test_contact_scenes,test_contact_hard,test_interface_solvers,test_westergaard -- \
+      --exclude test_contact_convergence,test_contact_scenes,test_contact_hard,test_interface_solvers,test_westergaard,test_model_threads -- \
       valgrind -q --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect --num-callers=30
     t_valgrind=$((SECONDS - t0))
     # (c) the libFuzzer target (clang), a bounded run from the checked-in seed corpus; new inputs
