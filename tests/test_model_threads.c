@@ -159,6 +159,8 @@ typedef struct job {
   double h1;
   int method, threads;
   int resolve;  /* also a re-solve after a load change (results of the re-solve) */
+  int nx;       /* the strips' cells along their length (solve_strips; 0: 250) */
+  int split;    /* the strips' log said their solves were split in two halves (solve_strips) */
   results r;
 } job;
 
@@ -186,12 +188,18 @@ static void *solve_hertz(void *arg) {
   return NULL;
 }
 
+static void note_split_solves(void *user, mc_log_level level, const char *message) {
+  (void)level;
+  if (strstr(message, "solves split in two halves")) *(int *)user = 1;
+}
+
 /* Two strips in contact along their whole length (bench/long_interface.c, nx = 250): a scene
    whose solve is refined (Model::refine_solution: its recovered gaps, 3e-11 of the largest
    displacement, are above round-off), which adds phases run on both threads. The re-solve
-   changes the pressure. */
+   changes the pressure. At nx = 1000 the sparse path's matrix (24000 unknowns) is ordered in two
+   halves and its solves split between two threads (SparseCholesky::solve). */
 static void solve_strips(job *j) {
-  const int nx = 250;
+  const int nx = j->nx ? j->nx : 250;
   sc_mesh mesh[2];
   j->r.status = MC_ERROR_INTERNAL;
   if (sc_mesh_rect(&mesh[0], 3, nx, 4, 0, 0, 0.1 * nx, 0.4, 0, 1) ||
@@ -214,6 +222,7 @@ static void solve_strips(job *j) {
   if (!s) s = mc_set_contact(m, 1, mesh[0].n_side_edges[SC_BOTTOM], mesh[0].side_edges[SC_BOTTOM]);
   if (!s) s = mc_set_contact(m, 2, mesh[1].n_side_edges[SC_TOP], mesh[1].side_edges[SC_TOP]);
   if (!s) s = mc_set_option_int(m, MC_OPTION_THREADS, j->threads);
+  if (!s) s = mc_set_log_callback(m, note_split_solves, &j->split);
   if (!s) s = mc_solve(m);
   if (!s && j->resolve) {
     for (mc_int e = 0; e < n_top; ++e) p[e] = 0.02 + 0.01 * e / n_top;
@@ -300,6 +309,20 @@ START_TEST(refined_results_do_not_depend_on_threads) {
     job serial = {.threads = 1, .resolve = resolve}, threaded = {.threads = 2, .resolve = resolve};
     solve_strips(&serial), solve_strips(&threaded);
     assert_same_results(&serial.r, &threaded.r, resolve ? "refined strips, re-solve" : "refined strips");
+    results_free(&serial.r), results_free(&threaded.r);
+  }
+}
+END_TEST
+
+/* The sparse path's solves split by subtrees of the elimination tree: the halves on two threads or
+   in turn, the same arithmetic (subtree_solve.hpp). */
+START_TEST(split_solves_do_not_depend_on_threads) {
+  for (int resolve = 0; resolve <= 1; ++resolve) {
+    job serial = {.threads = 1, .resolve = resolve, .nx = 1000}, threaded = {.threads = 2, .resolve = resolve, .nx = 1000};
+    solve_strips(&serial), solve_strips(&threaded);
+    ck_assert_msg(serial.split && threaded.split, "the solves were not split (serial %d, threaded %d)", serial.split,
+                  threaded.split);
+    assert_same_results(&serial.r, &threaded.r, resolve ? "split strips, re-solve" : "split strips");
     results_free(&serial.r), results_free(&threaded.r);
   }
 }
@@ -542,6 +565,7 @@ int main(void) {
   tcase_add_test(tc, refined_results_do_not_depend_on_threads);
   tcase_add_test(tc, two_host_threads_match_serial);
   tcase_add_test(tc, threads_are_those_the_header_promises);
+  tcase_add_test(tc, split_solves_do_not_depend_on_threads);
   tcase_add_test(tc, threads_stay_within_the_cores);
   tcase_add_test(tc, blas_count_is_one_through_a_two_thread_solve);
   tcase_add_test(tc, errors_on_body_threads_reach_the_caller);

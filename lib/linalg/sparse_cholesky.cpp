@@ -1,4 +1,6 @@
 #include "linalg/sparse_cholesky.hpp"
+#include "linalg/matrix_graph.hpp"
+#include "linalg/subtree_solve.hpp"
 #include "support/error.hpp"
 #include <cholmod.h>
 #include <algorithm>
@@ -87,7 +89,25 @@ struct SparseCholesky::Impl {
   // -1 at a root), and a marker per column.
   std::vector<int> inverse_perm, parent;
   std::vector<char> on_path;
-  void forget_tree() { inverse_perm.clear(), parent.clear(), on_path.clear(); }
+  // The split of a simplicial factor's solves over two threads, made at the first solve after an
+  // analysis (subtree_solve.hpp); none (plan_made, no plan) where it would not pay.
+  std::unique_ptr<SubtreeSolvePlan> plan;
+  bool plan_made = false;
+  void forget_tree() { inverse_perm.clear(), parent.clear(), on_path.clear(), plan.reset(), plan_made = false; }
+  // The elimination tree of a simplicial numeric factor: each column's parent is its smallest
+  // off-diagonal row. Every factor of one analysis shares it (their patterns are the analysis's:
+  // an update or downdate of a row whose terms the analysed pattern holds adds no fill).
+  const std::vector<int> &elimination_tree() {
+    if (!parent.empty()) return parent;
+    const int n = int(factor->n);
+    const int *lp = static_cast<const int *>(factor->p), *li = static_cast<const int *>(factor->i);
+    const int *lnz = static_cast<const int *>(factor->nz);
+    parent.assign(static_cast<size_t>(n), -1);
+    for (int j = 0; j < n; ++j)
+      for (int q = lp[j] + 1; q < lp[j] + lnz[j]; ++q)
+        if (parent[size_t(j)] < 0 || li[q] < parent[size_t(j)]) parent[size_t(j)] = li[q];
+    return parent;
+  }
   Impl() {
     cholmod_start(&common);
     common.print = 0;  // the library never prints; errors are reported through statuses
@@ -128,7 +148,7 @@ struct SparseCholesky::Impl {
 SparseCholesky::SparseCholesky() : impl_(new Impl) {}
 SparseCholesky::~SparseCholesky() = default;
 
-void SparseCholesky::analyze(const SymmetricCsc &a, const std::vector<int> &interface, int ordering) {
+void SparseCholesky::analyze(const SymmetricCsc &a, const std::vector<int> &interface, int ordering, bool in_halves) {
   Impl &d = *impl_;
   CholmodWithoutOpenMpTeam serial_openmp;
   if (d.factor) cholmod_free_factor(&d.factor, &d.common);
@@ -149,6 +169,22 @@ void SparseCholesky::analyze(const SymmetricCsc &a, const std::vector<int> &inte
   // path's factors (interface last) stay supernodal: interface_factor reads their trailing block.
   d.common.supernodal = interface.empty() ? CHOLMOD_AUTO : CHOLMOD_SUPERNODAL;
   d.common.final_ll = 1;
+  // In halves where the solves will be split (kHalvesFromUnknowns): a small matrix keeps AMD's
+  // ordering, and its round-off, as before.
+  if (interface.empty() && in_halves && ordering == MC_ORDERING_AUTO && a.n >= kHalvesFromUnknowns) {
+    const std::vector<int> part = split_by_level(graph_of(a));
+    if (!part.empty()) {
+      std::vector<int> perm(static_cast<size_t>(a.n));
+      cholmod_camd(&s, nullptr, 0, const_cast<int *>(part.data()), perm.data(), &d.common);
+      d.check("CAMD ordering");
+      d.common.nmethods = 1;
+      d.common.method[0].ordering = CHOLMOD_GIVEN;
+      d.common.postorder = 1;
+      d.factor = cholmod_analyze_p(&s, perm.data(), nullptr, 0, &d.common);
+      d.check("analyze");
+      return;
+    }
+  }
   if (interface.empty()) {
     d.common.nmethods = 1;
     d.common.method[0].ordering = ordering == MC_ORDERING_METIS ? CHOLMOD_METIS : CHOLMOD_AMD;
@@ -315,16 +351,10 @@ bool SparseCholesky::modify(bool add, int k, const int *colptr, const int *rows,
   // A simplicial LDL^T now: D is each column's first entry. Only the columns on the elimination-
   // tree paths from each column of C's first row changed (an update or downdate walks them):
   // their pivots are checked, not all n.
-  const int *lp = static_cast<const int *>(d.factor->p), *li = static_cast<const int *>(d.factor->i);
-  const int *lnz = static_cast<const int *>(d.factor->nz);
+  const int *lp = static_cast<const int *>(d.factor->p);
   const double *lx = static_cast<const double *>(d.factor->x);
-  if (d.parent.empty()) {
-    d.parent.assign(static_cast<size_t>(n_), -1);
-    for (int j = 0; j < n_; ++j)
-      for (int q = lp[j] + 1; q < lp[j] + lnz[j]; ++q)
-        if (d.parent[size_t(j)] < 0 || li[q] < d.parent[size_t(j)]) d.parent[size_t(j)] = li[q];
-    d.on_path.assign(static_cast<size_t>(n_), 0);
-  }
+  d.elimination_tree();
+  if (d.on_path.empty()) d.on_path.assign(static_cast<size_t>(n_), 0);
   std::vector<int> visited;
   bool positive = true;
   for (int c = 0; c < k && positive; ++c) {
@@ -377,6 +407,7 @@ std::vector<double> SparseCholesky::path_entries() const {
 void SparseCholesky::solve(double *x, int nrhs) const {
   Impl &d = *impl_;
   if (n_ == 0) return;
+  if (nrhs == 1 && solve_by_subtrees(x)) return;
   cholmod_dense b;
   std::memset(&b, 0, sizeof b);
   b.nrow = size_t(n_);
@@ -394,6 +425,41 @@ void SparseCholesky::solve(double *x, int nrhs) const {
   d.check("solve");
   std::memcpy(x, solution->x, sizeof(double) * size_t(n_) * nrhs);
   cholmod_free_dense(&solution, &d.common);
+}
+
+bool SparseCholesky::solve_by_subtrees(double *x) const {
+  Impl &d = *impl_;
+  const cholmod_factor *f = d.factor;
+  if (!f || f->is_super || f->xtype == CHOLMOD_PATTERN) return false;
+  SimplicialFactor view;
+  view.n = n_;
+  view.p = static_cast<const int *>(f->p), view.i = static_cast<const int *>(f->i);
+  view.nz = static_cast<const int *>(f->nz), view.x = static_cast<const double *>(f->x);
+  view.ll = f->is_ll != 0;
+  // The plan, made at the first solve after an analysis (and again should a factor's pattern
+  // ever differ from it); none where it would not pay.
+  if (d.plan_made && d.plan && !d.plan->fits(view)) d.plan.reset(), d.plan_made = false;
+  if (!d.plan_made) {
+    d.plan_made = true;
+    if (double(d.common.lnz) >= kSubtreeSolveFromEntries) {
+      std::vector<double> entries(view.nz, view.nz + n_);
+      auto plan = std::make_unique<SubtreeSolvePlan>(d.elimination_tree(), entries);
+      if (plan->worthwhile()) d.plan = std::move(plan);
+    }
+  }
+  if (!d.plan) return false;
+  const int *perm = static_cast<const int *>(f->Perm);
+  std::vector<double> y(static_cast<size_t>(n_));
+  for (int k = 0; k < n_; ++k) y[size_t(k)] = x[perm[k]];
+  d.plan->solve(view, y.data(), threads_ > 1);
+  for (int k = 0; k < n_; ++k) x[perm[k]] = y[size_t(k)];
+  return true;
+}
+
+double SparseCholesky::split_top_share() const {
+  const SubtreeSolvePlan *plan = impl_->plan.get();
+  if (!plan) return -1;
+  return plan->top_entries() / std::max(1.0, plan->top_entries() + plan->half_entries(0) + plan->half_entries(1));
 }
 
 namespace {

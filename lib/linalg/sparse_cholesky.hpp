@@ -19,8 +19,11 @@ public:
   SparseCholesky(const SparseCholesky &) = delete;
   SparseCholesky &operator=(const SparseCholesky &) = delete;
 
-  // Ordering and symbolic factorization. ordering: MC_ORDERING_*.
-  void analyze(const SymmetricCsc &a, const std::vector<int> &interface, int ordering);
+  // Ordering and symbolic factorization. ordering: MC_ORDERING_*. With in_halves (and no
+  // interface, MC_ORDERING_AUTO, kHalvesFromUnknowns unknowns or more), the unknowns are first
+  // split in two halves by a separator (split_by_level) and ordered by CAMD, halves first,
+  // separator last: the elimination tree then has two subtrees that solves can do at once.
+  void analyze(const SymmetricCsc &a, const std::vector<int> &interface, int ordering, bool in_halves = false);
   // Frees the analysis and the factor (analyze starts afresh).
   void release();
   bool analyzed() const;
@@ -45,8 +48,17 @@ public:
   // path, from its column to the root: what an update or downdate of a column of C with a
   // nonzero there touches. Empty before a numeric factorization.
   std::vector<double> path_entries() const;
-  // x <- A^-1 x, for nrhs right-hand sides stored one after the other (n each).
+  // x <- A^-1 x, for nrhs right-hand sides stored one after the other (n each). A single one
+  // with a simplicial factor of kSubtreeSolveFromEntries entries or more is solved by subtrees of
+  // the elimination tree (subtree_solve.hpp), on two threads when set_threads asks for them.
   void solve(double *x, int nrhs = 1) const;
+  // Threads a solve may use (1: the calling thread alone); the answer does not depend on it.
+  void set_threads(int threads) { threads_ = threads; }
+  static constexpr double kSubtreeSolveFromEntries = 2e5;
+  static constexpr int kHalvesFromUnknowns = 20000;
+  // The share of the factor's entries outside the two halves its solves are split into (the
+  // serial part), or -1 where its solves are not split (no plan yet, or none worth it).
+  double split_top_share() const;
   // The two halves of a solve, A = P^T L L^T P: y = L^-1 P b (y in the factor's order) and
   // x = P^T L^-T z. The contact solve works between them: the interface unknowns are the
   // trailing ones (from interface_start()), where L^-1 P B^T is the only nonzero part.
@@ -69,7 +81,9 @@ private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
   int n_ = 0;
+  int threads_ = 1;
   bool analyzed_ = false;
+  bool solve_by_subtrees(double *x) const;
   int failed_unknown_ = -1;
 };
 

@@ -130,7 +130,7 @@ void SparseContactSolver::analyze(const SparseContactStructure &s, int ordering)
     else weight_[r] = 1;  // an empty row: never coupled, never active
   }
   // 4. Ordering and symbolic factorization.
-  cholesky_.analyze(matrix_, {}, ordering);
+  cholesky_.analyze(matrix_, {}, ordering, true);
   path_.clear();
   flops_ = cholesky_.analysis_flops();
   t_analysis_ = now() - start;

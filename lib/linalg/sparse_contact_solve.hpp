@@ -83,6 +83,10 @@ public:
   // The pattern of H + C^T C, its ordering and symbolic factorization (ordering: MC_ORDERING_*).
   // `structure` must outlive the solver (its blocks are read at each factorization).
   void analyze(const SparseContactStructure &structure, int ordering);
+  // Threads the solves with the factor may use (SparseCholesky::set_threads; the answer does not
+  // depend on it).
+  void set_threads(int threads) { cholesky_.set_threads(threads); }
+  double split_top_share() const { return cholesky_.split_top_share(); }
   // Frees the pattern and the factor.
   void release() { cholesky_.release(), matrix_ = SymmetricCsc{}, factorized_.clear(), factor_set_.clear(), update_ = {}, modifications_ = 0, path_.clear(), aside_set_.clear(); }
   // CHOLMOD's estimates from the analysis, for the automatic choice of path.

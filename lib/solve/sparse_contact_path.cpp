@@ -17,6 +17,16 @@ namespace mc {
 
 namespace {
 
+// For the log: how the solves with the factor ran (SparseCholesky::solve: split by subtrees of the
+// elimination tree, on two threads where the solve has them).
+std::string split_solves_note(double top_share, int threads) {
+  if (top_share < 0) return "";
+  char note[160];
+  std::snprintf(note, sizeof note, "; solves split in two halves of the factor (%.1f %% of it serial), %s", 100 * top_share,
+                threads > 1 ? "on 2 threads" : "in turn");
+  return note;
+}
+
 
 // The memory this process can still get: what the kernel says it can have without swapping
 // (MemAvailable), or less if the process runs under an address-space limit (RLIMIT_AS, `ulimit
@@ -681,6 +691,7 @@ bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lam
   const std::vector<double> alpha_0 = sparse_rigid_shift(start_set, target);
   const DualQpObserver observe = iteration_log(q);
   SparseContactResult result;
+  cs.solver.set_threads(threads_);  // its solves split over two threads where the bodies' work is
   try {
     result = cs.solver.solve(load, target, start_set, options.tolerance, options.max_iterations, hold_modes, observe,
                              initial_gap);
@@ -696,10 +707,11 @@ bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lam
   progress(MC_LOG_PHASE,
            "active-set solve (sparse): %s, %d iterations, %d factorizations, %d factor updates, %d conjugate-gradient "
            "steps, residual %.3g, %.3g s (factorizations and updates %.3g s, solves %.3g s; %d of the updates "
-           "modified the factor in place)",
+           "modified the factor in place)%s",
            result.outcome == SparseContactOutcome::solved ? "solved" : "not converged", result.iterations,
            result.factorizations, result.updates + result.modifications, result.cg_steps, result.violation,
-           now() - start, result.t_factor, result.t_solve, result.modifications);
+           now() - start, result.t_factor, result.t_solve, result.modifications,
+           split_solves_note(cs.solver.split_top_share(), threads_).c_str());
   if (result.outcome == SparseContactOutcome::modes_not_held) {
     const std::string unheld = unheld_modes_description();
     fail(MC_ERROR_SINGULAR,

@@ -60,6 +60,7 @@ void Model::solve_sparse_friction(std::vector<LoadSolve> &loads, std::vector<dou
     }
     if (!rows_hold_modes(held)) return false;
     // 2. The system's exact solution.
+    cs.solver.set_threads(threads_);
     cs.solver.solve_rows(f_states, target, held, coupling, x, l, linear);
     // 3. The multipliers and gaps in the iteration's rows (q normal, then m tangential).
     out.lambda.assign(size_t(q + m), 0.0), out.gap.assign(size_t(q + m), 0.0);

@@ -1,0 +1,122 @@
+#include "linalg/matrix_graph.hpp"
+#include <algorithm>
+
+namespace mc {
+
+MatrixGraph graph_of(const SymmetricCsc &a) {
+  MatrixGraph g;
+  g.start.assign(size_t(a.n) + 1, 0);
+  for (int j = 0; j < a.n; ++j)
+    for (int p = a.colptr[j]; p < a.colptr[j + 1]; ++p)
+      if (a.rows[p] != j) ++g.start[size_t(a.rows[p]) + 1], ++g.start[size_t(j) + 1];
+  for (int v = 0; v < a.n; ++v) g.start[size_t(v) + 1] += g.start[size_t(v)];
+  g.next.resize(size_t(g.start[size_t(a.n)]));
+  std::vector<int> fill(g.start.begin(), g.start.end() - 1);
+  for (int j = 0; j < a.n; ++j)
+    for (int p = a.colptr[j]; p < a.colptr[j + 1]; ++p)
+      if (a.rows[p] != j) g.next[size_t(fill[size_t(a.rows[p])]++)] = j, g.next[size_t(fill[size_t(j)]++)] = a.rows[p];
+  return g;
+}
+
+int breadth_first(const MatrixGraph &g, int root, bool by_degree, const std::vector<char> &numbered, std::vector<int> &level,
+                  std::vector<int> &visit) {
+  visit.clear();
+  visit.push_back(root);
+  level[size_t(root)] = 0;
+  int depth = 1;
+  for (size_t head = 0; head < visit.size(); ++head) {
+    const int v = visit[head];
+    const size_t first = visit.size();
+    for (int p = g.start[size_t(v)]; p < g.start[size_t(v) + 1]; ++p) {
+      const int w = g.next[size_t(p)];
+      if (!numbered[size_t(w)] && level[size_t(w)] < 0)
+        level[size_t(w)] = level[size_t(v)] + 1, visit.push_back(w), depth = std::max(depth, level[size_t(w)] + 1);
+    }
+    if (by_degree)
+      std::sort(visit.begin() + long(first), visit.end(), [&](int x, int y) { return g.degree(x) < g.degree(y); });
+  }
+  return depth;
+}
+
+int pseudo_peripheral_node(const MatrixGraph &g, int seed, const std::vector<char> &numbered, std::vector<int> &level,
+                           std::vector<int> &visit) {
+  auto reset = [&] {
+    for (int v : visit) level[size_t(v)] = -1;
+  };
+  int root = seed, depth = breadth_first(g, root, false, numbered, level, visit);
+  for (int tries = 0; tries < 4; ++tries) {
+    int candidate = -1;
+    for (int v : visit)
+      if (level[size_t(v)] == depth - 1 && (candidate < 0 || g.degree(v) < g.degree(candidate))) candidate = v;
+    reset();
+    const int candidate_depth = breadth_first(g, candidate, false, numbered, level, visit);
+    if (candidate_depth <= depth) {
+      reset();
+      breadth_first(g, root, false, numbered, level, visit);
+      break;
+    }
+    root = candidate, depth = candidate_depth;
+  }
+  return root;
+}
+
+std::vector<int> split_by_level(const MatrixGraph &g) {
+  const int n = g.nodes();
+  if (n < 3) return {};
+  // The largest component: searches from each node not yet reached.
+  std::vector<char> numbered(static_cast<size_t>(n), 0);
+  std::vector<int> level(static_cast<size_t>(n), -1), visit;
+  int largest_seed = -1;
+  size_t largest = 0;
+  for (int seed = 0; seed < n; ++seed) {
+    if (numbered[size_t(seed)]) continue;
+    breadth_first(g, seed, false, numbered, level, visit);
+    for (int v : visit) numbered[size_t(v)] = 1, level[size_t(v)] = -1;
+    if (visit.size() > largest) largest = visit.size(), largest_seed = seed;
+  }
+  std::fill(numbered.begin(), numbered.end(), 0);
+  pseudo_peripheral_node(g, largest_seed, numbered, level, visit);
+  // The level at which half of all the nodes have been visited (the search visits by level).
+  const int middle = level[size_t(visit[size_t(n / 2 < int(visit.size()) ? n / 2 : int(visit.size()) - 1)])];
+  std::vector<int> part(static_cast<size_t>(n), 0);
+  int count[3] = {0, 0, 0};
+  for (int v : visit) {
+    const int l = level[size_t(v)];
+    const int side = l < middle ? 0 : l > middle ? 1 : 2;
+    part[size_t(v)] = side, ++count[side];
+  }
+  count[0] = n - count[1] - count[2];  // (with the other components)
+  if (count[0] < n / 4 || count[1] < n / 4) return {};
+  return part;
+}
+
+std::vector<int> elimination_tree(const SymmetricCsc &a, const int *perm) {
+  const int n = a.n;
+  std::vector<int> position(static_cast<size_t>(n));
+  for (int k = 0; k < n; ++k) position[size_t(perm[k])] = k;
+  // Each off-diagonal entry as (later, earlier) in the order, grouped by the later.
+  std::vector<int> start(size_t(n) + 1, 0);
+  for (int j = 0; j < n; ++j)
+    for (int p = a.colptr[j]; p < a.colptr[j + 1]; ++p)
+      if (a.rows[p] != j) ++start[size_t(std::max(position[size_t(j)], position[size_t(a.rows[p])])) + 1];
+  for (int k = 0; k < n; ++k) start[size_t(k) + 1] += start[size_t(k)];
+  std::vector<int> earlier(static_cast<size_t>(start[size_t(n)])), fill(start.begin(), start.end() - 1);
+  for (int j = 0; j < n; ++j)
+    for (int p = a.colptr[j]; p < a.colptr[j + 1]; ++p)
+      if (a.rows[p] != j) {
+        const int x = position[size_t(j)], y = position[size_t(a.rows[p])];
+        earlier[size_t(fill[size_t(std::max(x, y))]++)] = std::min(x, y);
+      }
+  std::vector<int> parent(static_cast<size_t>(n), -1), ancestor(static_cast<size_t>(n), -1);
+  for (int k = 0; k < n; ++k)
+    for (int q = start[size_t(k)]; q < start[size_t(k) + 1]; ++q)
+      for (int r = earlier[size_t(q)]; r != -1 && r != k;) {
+        const int next = ancestor[size_t(r)];
+        ancestor[size_t(r)] = k;
+        if (next == -1) parent[size_t(r)] = k;
+        r = next;
+      }
+  return parent;
+}
+
+}  // namespace mc
