@@ -8,7 +8,10 @@
 #include <cstdint>
 #include <cstring>
 #include <utility>
+#include <system_error>
+#include <thread>
 #include <vector>
+#include <pthread.h>
 #ifdef __linux__
 #include <sys/mman.h>
 #include <unistd.h>
@@ -93,6 +96,9 @@ struct SparseCholesky::Impl {
   // analysis (subtree_solve.hpp); none (plan_made, no plan) where it would not pay.
   std::unique_ptr<SubtreeSolvePlan> plan;
   bool plan_made = false;
+  // The workspace of the second thread's rows in a factorization by halves (its own: CHOLMOD's
+  // workspace is per common), freed after each.
+  cholmod_common second;
   void forget_tree() { inverse_perm.clear(), parent.clear(), on_path.clear(), plan.reset(), plan_made = false; }
   // The elimination tree of a simplicial numeric factor: each column's parent is its smallest
   // off-diagonal row. Every factor of one analysis shares it (their patterns are the analysis's:
@@ -113,12 +119,16 @@ struct SparseCholesky::Impl {
     common.print = 0;  // the library never prints; errors are reported through statuses
     common.error_handler = nullptr;
     common.supernodal = CHOLMOD_SUPERNODAL;
+    cholmod_start(&second);
+    second.print = 0;
+    second.error_handler = nullptr;
   }
   ~Impl() {
     if (factor) cholmod_free_factor(&factor, &common);
     if (symbolic) cholmod_free_factor(&symbolic, &common);
     if (aside) cholmod_free_factor(&aside, &common);
     cholmod_finish(&common);
+    cholmod_finish(&second);
   }
   // A cholmod_sparse view (no copy) of the upper triangle.
   cholmod_sparse view(const SymmetricCsc &a) {
@@ -157,6 +167,7 @@ void SparseCholesky::analyze(const SymmetricCsc &a, const std::vector<int> &inte
   d.forget_tree();
   n_ = a.n;
   analyzed_ = true;
+  split_factorizations_ = 0;
   d.interface = interface;
   if (n_ == 0) return;  // every unknown prescribed (a fully supported body): nothing to factor
   cholmod_sparse s = d.view(a);
@@ -182,6 +193,15 @@ void SparseCholesky::analyze(const SymmetricCsc &a, const std::vector<int> &inte
       d.common.postorder = 1;
       d.factor = cholmod_analyze_p(&s, perm.data(), nullptr, 0, &d.common);
       d.check("analyze");
+      // The split of the solves (and factorizations) made now, from the analysis: the elimination
+      // tree of the ordered matrix and the column counts.
+      d.plan_made = true;
+      if (!d.factor->is_super && double(d.common.lnz) >= kSubtreeSolveFromEntries) {
+        const int *count = static_cast<const int *>(d.factor->ColCount);
+        const std::vector<double> entries(count, count + n_);
+        auto plan = std::make_unique<SubtreeSolvePlan>(elimination_tree(a, static_cast<const int *>(d.factor->Perm)), entries);
+        if (plan->worthwhile()) d.plan = std::move(plan);
+      }
       return;
     }
   }
@@ -263,7 +283,7 @@ void SparseCholesky::factorize(const SymmetricCsc &a) {
       d.check("allocating the factor");
       populate_pages(d.factor->x, d.factor->xsize * sizeof(double));
     }
-    cholmod_factorize(&s, d.factor, &d.common);
+    if (!factorize_by_subtrees(s)) cholmod_factorize(&s, d.factor, &d.common);
   }
   if (d.common.status == CHOLMOD_NOT_POSDEF) {
     const int *perm = static_cast<const int *>(d.factor->Perm);
@@ -276,6 +296,88 @@ void SparseCholesky::factorize(const SymmetricCsc &a) {
          "rigidly, or a material is not positive definite",
          int(d.factor->minor), a.n);
   d.check("factorize");
+}
+
+// A simplicial factorization by rows (cholmod_rowfac, as cholmod_factorize runs it), the two halves'
+// rows at once: a row of L is computed from the rows of its descendants in the elimination tree
+// alone, so each half's subtrees need nothing of the other's, and the top's rows follow. Every row
+// is computed as cholmod_factorize computes it: the same factor to the bit. Only where the solves
+// are split (the plan's ranges) and two threads may run; false: nothing done.
+bool SparseCholesky::factorize_by_subtrees(cholmod_sparse &a) {
+  Impl &d = *impl_;
+  cholmod_factor *f = d.factor;
+  if (threads_ < 2 || !d.plan || !d.plan->in_ranges() || f->is_super) return false;
+  // S = triu(A(p, p)), as cholmod_factorize_p forms it for cholmod_rowfac.
+  cholmod_sparse *lower = cholmod_ptranspose(&a, 2, static_cast<int *>(f->Perm), nullptr, 0, &d.common);
+  d.check("permuting the matrix");
+  cholmod_sparse *upper = cholmod_ptranspose(lower, 2, nullptr, nullptr, 0, &d.common);
+  cholmod_free_sparse(&lower, &d.common);
+  d.check("permuting the matrix");
+  struct Freed {
+    cholmod_sparse *&matrix;
+    Impl &d;
+    ~Freed() {
+      cholmod_free_sparse(&matrix, &d.common);
+      cholmod_free_work(&d.second);
+    }
+  } freed{upper, d};
+  const int n = n_;
+  if (f->xtype == CHOLMOD_PATTERN) {
+    // Numeric, each column its exact size (as cholmod_factorize_p allocates a packed factor).
+    const size_t grow2 = d.common.grow2;
+    d.common.grow2 = 0;
+    cholmod_change_factor(CHOLMOD_REAL, 1, 0, 0, 1, f, &d.common);
+    d.common.grow2 = grow2;
+    d.check("allocating the factor");
+  } else {
+    // A refactorization: every column emptied to its diagonal, as cholmod_rowfac does for all rows.
+    f->minor = size_t(n);
+    int *lnz = static_cast<int *>(f->nz);
+    for (int k = 0; k < n; ++k) lnz[k] = 1;
+  }
+  f->is_ll = 1;
+  // Half 1's workspace, allocated here: from the calling thread's memory (a first allocation on
+  // a new thread would open a malloc arena of its own, resident memory the solve does not need).
+  cholmod_allocate_work(size_t(n), size_t(n), size_t(n), &d.second);
+  if (d.second.status == CHOLMOD_OUT_OF_MEMORY) d.common.status = CHOLMOD_OUT_OF_MEMORY;
+  d.check("allocating a workspace");
+  double beta[2] = {0, 0};
+  // Half 1 writes through a copy of the factor's header: the same arrays, its own `minor` (the row
+  // where a pivot failed), merged below.
+  cholmod_factor half_one = *f;
+  auto rows_of = [&](int part, cholmod_factor *factor, cholmod_common *common) {
+    for (const SubtreeSolvePlan::Range &r : d.plan->ranges(part))
+      cholmod_rowfac(upper, nullptr, beta, size_t(r.first), size_t(r.second), factor, common);
+  };
+  {
+    CholmodWithoutOpenMpTeam serial_openmp;
+    bool ran = false;
+    try {
+      std::thread second([&] {
+        CholmodWithoutOpenMpTeam its_own;
+        rows_of(1, &half_one, &d.second);
+      });
+      pthread_setname_np(second.native_handle(), "mc-body2");
+      rows_of(0, f, &d.common);
+      second.join();
+      ran = true;
+    } catch (const std::system_error &) {
+    }
+    if (!ran) rows_of(0, f, &d.common), rows_of(1, &half_one, &d.second);
+    f->minor = std::min(f->minor, half_one.minor);
+    if (f->minor == size_t(n)) rows_of(2, f, &d.common);
+  }
+  if (d.second.status == CHOLMOD_OUT_OF_MEMORY) d.common.status = CHOLMOD_OUT_OF_MEMORY;
+  d.check("factorize");
+  if (f->minor < size_t(n)) {
+    d.common.status = CHOLMOD_NOT_POSDEF;
+    return true;
+  }
+  // Left as cholmod_factorize leaves it (Common's final_pack and final_monotonic).
+  cholmod_change_factor(CHOLMOD_REAL, 1, 0, d.common.final_pack, d.common.final_monotonic, f, &d.common);
+  d.check("factorize");
+  ++split_factorizations_;
+  return true;
 }
 
 bool SparseCholesky::can_keep_aside() const {

@@ -10,6 +10,8 @@
 #include <memory>
 #include <vector>
 
+struct cholmod_sparse_struct;  // (cholmod.h's cholmod_sparse)
+
 namespace mc {
 
 class SparseCholesky {
@@ -59,6 +61,8 @@ public:
   // The share of the factor's entries outside the two halves its solves are split into (the
   // serial part), or -1 where its solves are not split (no plan yet, or none worth it).
   double split_top_share() const;
+  // Factorizations since the analysis whose halves ran on two threads (factorize_by_subtrees).
+  int split_factorizations() const { return split_factorizations_; }
   // The two halves of a solve, A = P^T L L^T P: y = L^-1 P b (y in the factor's order) and
   // x = P^T L^-T z. The contact solve works between them: the interface unknowns are the
   // trailing ones (from interface_start()), where L^-1 P B^T is the only nonzero part.
@@ -82,8 +86,10 @@ private:
   std::unique_ptr<Impl> impl_;
   int n_ = 0;
   int threads_ = 1;
+  int split_factorizations_ = 0;
   bool analyzed_ = false;
   bool solve_by_subtrees(double *x) const;
+  bool factorize_by_subtrees(cholmod_sparse_struct &a);
   int failed_unknown_ = -1;
 };
 

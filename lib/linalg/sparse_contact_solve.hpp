@@ -87,6 +87,7 @@ public:
   // depend on it).
   void set_threads(int threads) { cholesky_.set_threads(threads); }
   double split_top_share() const { return cholesky_.split_top_share(); }
+  int split_factorizations() const { return cholesky_.split_factorizations(); }
   // Frees the pattern and the factor.
   void release() { cholesky_.release(), matrix_ = SymmetricCsc{}, factorized_.clear(), factor_set_.clear(), update_ = {}, modifications_ = 0, path_.clear(), aside_set_.clear(); }
   // CHOLMOD's estimates from the analysis, for the automatic choice of path.

@@ -92,15 +92,15 @@ SubtreeSolvePlan::SubtreeSolvePlan(const std::vector<int> &parent, const std::ve
       for (int c = child_start[size_t(j)]; c < child_start[size_t(j) + 1]; ++c) stack.push_back(children[size_t(c)]);
     }
   }
-  top_position_.assign(static_cast<size_t>(n), -1);
   for (int j = 0; j < n; ++j) {
     const int h = owner[size_t(j)];
-    if (h == 2) top_position_[size_t(j)] = int(columns_[2].size()), top_entries_ += column_entries[size_t(j)];
+    if (h == 2) top_entries_ += column_entries[size_t(j)];
     else half_entries_[h] += column_entries[size_t(j)];
     if (h == 1) root_.push_back(root_of[size_t(j)]);
     columns_[h].push_back(j);
   }
-  entries_.assign(column_entries.begin(), column_entries.end());
+  entries_.resize(static_cast<size_t>(n));
+  for (int j = 0; j < n; ++j) entries_[size_t(j)] = int(column_entries[size_t(j)]);
   // Ranges: in a postordered tree the subtree of r is r - size(r) + 1 .. r.
   bool consecutive = true;
   for (size_t k = 0; k < best_frontier.size() && consecutive; ++k) {
@@ -127,7 +127,7 @@ SubtreeSolvePlan::SubtreeSolvePlan(const std::vector<int> &parent, const std::ve
 bool SubtreeSolvePlan::fits(const SimplicialFactor &f) const {
   if (f.n != int(entries_.size())) return false;
   for (int j = 0; j < f.n; ++j)
-    if (f.nz[j] != int(entries_[size_t(j)])) return false;
+    if (f.nz[j] != entries_[size_t(j)]) return false;
   return true;
 }
 
@@ -149,7 +149,7 @@ void SubtreeSolvePlan::forward_part(const SimplicialFactor &f, int h, double *y,
       for (int q = first + 1; q < end; ++q) {
         const int i = f.i[q];
         if (i <= root) y[i] -= f.x[q] * yj;
-        else spill[top_position_[size_t(i)]] -= f.x[q] * yj;
+        else spill[top_position(i)] -= f.x[q] * yj;
       }
     }
     if (!f.ll) y[j] = yj / f.x[first];
@@ -157,6 +157,11 @@ void SubtreeSolvePlan::forward_part(const SimplicialFactor &f, int h, double *y,
 }
 
 // L^T x = y on a part's columns, descending: reads its own rows and the top's, written before.
+// A top column's position among the top's (a search: few entries of half 1 reach the top).
+size_t SubtreeSolvePlan::top_position(int column) const {
+  return size_t(std::lower_bound(columns_[2].begin(), columns_[2].end(), column) - columns_[2].begin());
+}
+
 void SubtreeSolvePlan::backward_part(const SimplicialFactor &f, int h, double *y) const {
   const std::vector<int> &columns = columns_[h];
   for (auto it = columns.rbegin(); it != columns.rend(); ++it) {

@@ -16,6 +16,7 @@
 // the top's. The arithmetic and its order are the plan's alone, whether the halves run on two
 // threads or one after the other: the answer is the same to the bit either way.
 #pragma once
+#include <cstddef>
 #include <utility>
 #include <vector>
 
@@ -57,12 +58,12 @@ public:
 private:
   std::vector<int> columns_[3];    // half 0's, half 1's, the top's; ascending
   std::vector<int> root_;          // per column of half 1: its subtree's root (rows above it are the top's)
-  std::vector<int> top_position_;  // per column: its position in columns_[2], or -1
-  std::vector<double> entries_;    // per column, as planned
+  std::vector<int> entries_;       // per column, as planned
   std::vector<Range> ranges_[3];
   double half_entries_[2] = {0, 0}, top_entries_ = 0;
   void forward_part(const SimplicialFactor &f, int h, double *y, double *spill) const;
   void backward_part(const SimplicialFactor &f, int h, double *y) const;
+  size_t top_position(int column) const;
 };
 
 }  // namespace mc

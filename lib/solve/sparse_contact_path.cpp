@@ -19,11 +19,13 @@ namespace {
 
 // For the log: how the solves with the factor ran (SparseCholesky::solve: split by subtrees of the
 // elimination tree, on two threads where the solve has them).
-std::string split_solves_note(double top_share, int threads) {
+std::string split_solves_note(double top_share, int threads, int split_factorizations) {
   if (top_share < 0) return "";
-  char note[160];
-  std::snprintf(note, sizeof note, "; solves split in two halves of the factor (%.1f %% of it serial), %s", 100 * top_share,
-                threads > 1 ? "on 2 threads" : "in turn");
+  char note[200];
+  std::snprintf(note, sizeof note,
+                "; solves split in two halves of the factor (%.1f %% of it serial), %s; %d factorizations by halves "
+                "on 2 threads since the analysis",
+                100 * top_share, threads > 1 ? "on 2 threads" : "in turn", split_factorizations);
   return note;
 }
 
@@ -711,7 +713,7 @@ bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lam
            result.outcome == SparseContactOutcome::solved ? "solved" : "not converged", result.iterations,
            result.factorizations, result.updates + result.modifications, result.cg_steps, result.violation,
            now() - start, result.t_factor, result.t_solve, result.modifications,
-           split_solves_note(cs.solver.split_top_share(), threads_).c_str());
+           split_solves_note(cs.solver.split_top_share(), threads_, cs.solver.split_factorizations()).c_str());
   if (result.outcome == SparseContactOutcome::modes_not_held) {
     const std::string unheld = unheld_modes_description();
     fail(MC_ERROR_SINGULAR,
