@@ -14,8 +14,9 @@
  *   the model stays usable.
  * - Threading: a model is used by one thread at a time; distinct models are
  *   fully independent (the library keeps no global mutable state), so two
- *   threads may solve two models at once. mc_solve may run body 2's work on
- *   one thread of its own, joined before it returns (MC_OPTION_THREADS), and so
+ *   threads may solve two models at once. mc_solve may run body 2's work (and
+ *   half of the sparse interface path's solves) on one thread of its own,
+ *   joined before it returns (MC_OPTION_THREADS), and so
  *   may the call that computes the error estimate on demand (results on
  *   demand, MC_OPTION_EAGER_RESULTS); no other call starts threads.
  * - Ownership: every input array is copied before the call returns. Outputs go
@@ -181,7 +182,13 @@ enum { MC_INTERFACE_AUTO = 0, MC_INTERFACE_CONDENSED = 1, MC_INTERFACE_SPARSE = 
    recovery. A solve whose recovered gaps are above round-off (MC_INFO_GAP_RESIDUAL > 1e-13) is
    refined: each refinement step (at most 3) adds two phases (the residuals' forward solves, the
    corrections' backward solves), and the recovery runs once more. The error estimate is one
-   more phase, in mc_solve (eager) or in the call that first asks for it. No thread outlives
+   more phase, in mc_solve (eager) or in the call that first asks for it. On the sparse
+   interface path (MC_INTERFACE_SPARSE) with a slender matrix of 60000 unknowns or more (two long
+   strips: a separator of at most 100 unknowns), ordered in two
+   halves, the same thread (same name, one at a time) also does half of each solve and of each
+   factorization with that matrix's simplicial factor, and body 2's share of each refinement
+   residual: the same arithmetic as serially, so the results stay those of MC_OPTION_THREADS = 1
+   bit for bit. No thread outlives
    the call that started it, no other call starts one, and if none can be started the work runs
    serially. The
    log callback is still called only from the calling thread, with the messages in the serial

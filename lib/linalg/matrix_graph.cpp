@@ -60,7 +60,7 @@ int pseudo_peripheral_node(const MatrixGraph &g, int seed, const std::vector<cha
   return root;
 }
 
-std::vector<int> split_by_level(const MatrixGraph &g) {
+std::vector<int> split_in_two(const MatrixGraph &g) {
   const int n = g.nodes();
   if (n < 3) return {};
   // The largest component: searches from each node not yet reached.
@@ -76,8 +76,8 @@ std::vector<int> split_by_level(const MatrixGraph &g) {
   }
   std::fill(numbered.begin(), numbered.end(), 0);
   pseudo_peripheral_node(g, largest_seed, numbered, level, visit);
-  // The level at which half of all the nodes have been visited (the search visits by level).
-  const int middle = level[size_t(visit[size_t(n / 2 < int(visit.size()) ? n / 2 : int(visit.size()) - 1)])];
+  // The level at which half of the component has been visited (the search visits by level).
+  const int middle = level[size_t(visit[visit.size() / 2])];
   std::vector<int> part(static_cast<size_t>(n), 0);
   int count[3] = {0, 0, 0};
   for (int v : visit) {

@@ -31,10 +31,10 @@ int pseudo_peripheral_node(const MatrixGraph &g, int seed, const std::vector<cha
 
 // Two halves and a separator: part[v] = 0 or 1 for the halves, 2 for the separator, such that no
 // entry of the matrix joins the two halves. The separator is the level of a breadth-first search
-// from a pseudo-peripheral node of the largest component at which half of the nodes have been
+// from a pseudo-peripheral node of the largest component at which half of its nodes have been
 // visited: on a long strip, one cross-section. Nodes of other components go to half 0. Empty
 // when the separator would not leave each half a quarter of the nodes.
-std::vector<int> split_by_level(const MatrixGraph &g);
+std::vector<int> split_in_two(const MatrixGraph &g);
 
 // The elimination tree of the Cholesky factor of P A P^T (a: the upper triangle by columns; perm:
 // the order, perm[k] = the unknown eliminated k-th): each column's parent (-1 at a root), in

@@ -23,8 +23,8 @@ public:
 
   // Ordering and symbolic factorization. ordering: MC_ORDERING_*. With in_halves (and no
   // interface, MC_ORDERING_AUTO, kHalvesFromUnknowns unknowns or more), the unknowns are first
-  // split in two halves by a separator (split_by_level) and ordered by CAMD, halves first,
-  // separator last: the elimination tree then has two subtrees that solves can do at once.
+  // split in two halves by a separator (split_in_two), each half ordered by AMD, the separator
+  // last: the elimination tree then has two subtrees that solves and factorizations do at once.
   void analyze(const SymmetricCsc &a, const std::vector<int> &interface, int ordering, bool in_halves = false);
   // Frees the analysis and the factor (analyze starts afresh).
   void release();
@@ -57,7 +57,19 @@ public:
   // Threads a solve may use (1: the calling thread alone); the answer does not depend on it.
   void set_threads(int threads) { threads_ = threads; }
   static constexpr double kSubtreeSolveFromEntries = 2e5;
-  static constexpr int kHalvesFromUnknowns = 20000;
+  // Halves from as many unknowns as two bodies of the size from which MC_OPTION_THREADS = 0 gives
+  // two threads (30000 each): below, one thread gains nothing from them and pays their fill (the
+  // strips at 1001 and 2001 contact nodes: 7 to 10 % more entries, analysis and factorization
+  // 30 to 100 % slower on one thread). The order does not depend on the threads: the answer is the
+  // same whatever MC_OPTION_THREADS.
+  static constexpr int kHalvesFromUnknowns = 60000;
+  // One split only: deeper dissection (3 to 10 levels of level separators, tried on the strips)
+  // gave separators dense enough that CHOLMOD chose a supernodal factor, which is not modified in
+  // place: a load step then cost 3 to 4 times as much (docs/notes/interface-solver.md). Halves only for a slender matrix, whose separator is at most this many unknowns (the
+  // strips': 65 at any length): its factor stays simplicial (CHOLMOD's switch: 40 flops per entry).
+  // A wider one keeps AMD's order (Westergaard's block: a separator of 232, Hertz: 797; in halves
+  // the Westergaard factor, supernodal, grew 6 % and its factorizations took 28 % longer).
+  static constexpr long kLargestSeparator = 100;
   // The share of the factor's entries outside the two halves its solves are split into (the
   // serial part), or -1 where its solves are not split (no plan yet, or none worth it).
   double split_top_share() const;
@@ -89,6 +101,7 @@ private:
   int split_factorizations_ = 0;
   bool analyzed_ = false;
   bool solve_by_subtrees(double *x) const;
+  std::vector<int> order_in_halves(const SymmetricCsc &a, const std::vector<int> &part);
   bool factorize_by_subtrees(cholmod_sparse_struct &a);
   int failed_unknown_ = -1;
 };

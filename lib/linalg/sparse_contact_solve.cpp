@@ -3,7 +3,10 @@
 #include "support/stopwatch.hpp"
 #include <algorithm>
 #include <cmath>
+#include <pthread.h>
 #include <set>
+#include <system_error>
+#include <thread>
 
 namespace mc {
 
@@ -231,6 +234,21 @@ void SparseContactSolver::apply_dt(const std::vector<double> &y, std::vector<dou
         out[s.column[p]] += c.coefficient * s.value[p] * y[c.row];
 }
 
+void SparseContactSolver::run_in_pairs(const std::function<void(size_t)> &task, bool worth_a_thread) const {
+  if (threads_ > 1 && worth_a_thread) {
+    try {
+      std::thread second(task, size_t(1));
+      // The library's second thread has one name wherever it runs (model.cpp's body threads).
+      pthread_setname_np(second.native_handle(), "mc-body2");
+      task(0);
+      second.join();
+      return;
+    } catch (const std::system_error &) {  // no thread to be had: in turn
+    }
+  }
+  task(0), task(1);
+}
+
 double SparseContactSolver::solve_on_active_set(const std::vector<double> &load, const std::vector<double> &target,
                                               std::vector<double> &x, std::vector<double> &lambda,
                                               SparseContactResult &result, bool refine) const {
@@ -265,18 +283,23 @@ double SparseContactSolver::solve_on_active_set(const std::vector<double> &load,
         const long double term = (long double)c.coefficient * s.value[p] * lambda[c.row];
         sum[s.column[p]] -= term, size[s.column[p]] += std::fabs(term);
       }
-    for (size_t b = 0; b < s.blocks.size(); ++b) {
-      const int o = s.block_offset[b];
-      for (int j = 0; j < s.blocks[b].n; ++j)
-        s.blocks[b].for_each_in_column(j, [&](int i, double value) {
-          const long double a = (long double)value * x[o + j];
-          sum[o + i] -= a, size[o + i] += std::fabs(a);
-          if (i != j) {
-            const long double c = (long double)value * x[o + i];
-            sum[o + j] -= c, size[o + j] += std::fabs(c);
-          }
-        });
-    }
+    // H x, block by block: each block's unknowns are its own, so the odd blocks (body 2's) may
+    // run on a second thread, each sum in the same order either way.
+    auto block_terms = [&](size_t first) {
+      for (size_t b = first; b < s.blocks.size(); b += 2) {
+        const int o = s.block_offset[b];
+        for (int j = 0; j < s.blocks[b].n; ++j)
+          s.blocks[b].for_each_in_column(j, [&](int i, double value) {
+            const long double a = (long double)value * x[o + j];
+            sum[o + i] -= a, size[o + i] += std::fabs(a);
+            if (i != j) {
+              const long double c = (long double)value * x[o + i];
+              sum[o + j] -= c, size[o + j] += std::fabs(c);
+            }
+          });
+      }
+    };
+    run_in_pairs(block_terms, s.blocks.size() > 1 && s.n_unknowns >= kResidualThreadsFromUnknowns);
     rf.assign(s.n_unknowns, 0.0);
     long double worst = 0, largest = 0;
     for (int i = 0; i < s.n_unknowns; ++i) {

@@ -26,6 +26,7 @@
 #include "bodies/assembly.hpp"
 #include "linalg/dual_qp.hpp"
 #include "linalg/sparse_cholesky.hpp"
+#include <functional>
 #include <vector>
 
 namespace mc {
@@ -85,7 +86,7 @@ public:
   void analyze(const SparseContactStructure &structure, int ordering);
   // Threads the solves with the factor may use (SparseCholesky::set_threads; the answer does not
   // depend on it).
-  void set_threads(int threads) { cholesky_.set_threads(threads); }
+  void set_threads(int threads) { threads_ = threads, cholesky_.set_threads(threads); }
   double split_top_share() const { return cholesky_.split_top_share(); }
   int split_factorizations() const { return cholesky_.split_factorizations(); }
   // Frees the pattern and the factor.
@@ -163,6 +164,12 @@ private:
   SymmetricCsc matrix_;              // H_P's pattern (H + C^T C), values of the factorized set
   std::vector<double> weight_;       // P, one per row
   SparseCholesky cholesky_;
+  int threads_ = 1;  // set_threads
+  // task(0) and task(1): at once on two threads where threads_ allows and worth_a_thread, else
+  // in turn (the tasks must not share what they write).
+  void run_in_pairs(const std::function<void(size_t)> &task, bool worth_a_thread) const;
+  // The residuals' H x on two threads (a block each) from this many unknowns.
+  static constexpr int kResidualThreadsFromUnknowns = 20000;
   std::vector<char> factorized_;     // the active set H_P is of (empty: none)
   std::vector<char> factor_set_;     // the active set of the Cholesky factor (differs by update_)
   // H_P = H_0 + sum_r sign_r P_r c_r^T c_r over the rows that differ from the factor's set

@@ -80,55 +80,46 @@ SubtreeSolvePlan::SubtreeSolvePlan(const std::vector<int> &parent, const std::ve
     for (int c = child_start[size_t(root)]; c < child_start[size_t(root) + 1]; ++c) frontier.push_back(children[size_t(c)]);
   }
   if (best_frontier.empty() || best_time > kWorthwhileShare * total) return;
-  // The halves' columns, and the top: every column outside them.
+  // The halves' subtrees and the top's runs as ranges of columns: in a postordered tree the subtree
+  // of r is r - size(r) + 1 .. r (checked: no plan for an order that is not postordered).
   std::vector<char> owner(static_cast<size_t>(n), 2);
-  std::vector<int> stack, root_of(static_cast<size_t>(n), -1);
+  std::vector<Range> ranges[3];
   for (size_t k = 0; k < best_frontier.size(); ++k) {
-    stack.assign(1, best_frontier[k]);
-    while (!stack.empty()) {
-      const int j = stack.back();
-      stack.pop_back();
-      owner[size_t(j)] = char(best_side[k]), root_of[size_t(j)] = best_frontier[k];
-      for (int c = child_start[size_t(j)]; c < child_start[size_t(j) + 1]; ++c) stack.push_back(children[size_t(c)]);
-    }
-  }
-  for (int j = 0; j < n; ++j) {
-    const int h = owner[size_t(j)];
-    if (h == 2) top_entries_ += column_entries[size_t(j)];
-    else half_entries_[h] += column_entries[size_t(j)];
-    if (h == 1) root_.push_back(root_of[size_t(j)]);
-    columns_[h].push_back(j);
-  }
-  entries_.resize(static_cast<size_t>(n));
-  for (int j = 0; j < n; ++j) entries_[size_t(j)] = int(column_entries[size_t(j)]);
-  // Ranges: in a postordered tree the subtree of r is r - size(r) + 1 .. r.
-  bool consecutive = true;
-  for (size_t k = 0; k < best_frontier.size() && consecutive; ++k) {
     const int r = best_frontier[k], first = r - size[size_t(r)] + 1;
-    for (int j = first; j <= r && consecutive; ++j) consecutive = j >= 0 && root_of[size_t(j)] == r;
-    ranges_[best_side[k]].emplace_back(first, r + 1);
-  }
-  for (int j = 0; j < n && consecutive;) {
-    if (owner[size_t(j)] != 2) {
-      ++j;
-      continue;
+    if (first < 0) return;
+    for (int j = first; j <= r; ++j) {
+      if (owner[size_t(j)] != 2) return;  // (subtrees overlapping: not postordered)
+      owner[size_t(j)] = char(best_side[k]);
     }
-    int end = j;
-    while (end < n && owner[size_t(end)] == 2) ++end;
-    ranges_[2].emplace_back(j, end);
+    ranges[best_side[k]].emplace_back(first, r + 1);
+  }
+  for (int j = 0; j < n;) {
+    int end = j + 1;
+    while (end < n && owner[size_t(end)] == owner[size_t(j)]) ++end;
+    if (owner[size_t(j)] == 2) ranges[2].emplace_back(j, end);
     j = end;
   }
-  for (auto &r : ranges_) {
-    if (!consecutive) r.clear();
-    std::sort(r.begin(), r.end());
+  // Each range of a half one subtree: its columns' ancestors within it (checked by the parents).
+  for (int h = 0; h < 2; ++h)
+    for (const Range &r : ranges[h])
+      for (int j = r.first; j < r.second - 1; ++j)
+        if (parent[size_t(j)] < j || parent[size_t(j)] >= r.second) return;
+  for (int h = 0; h < 3; ++h) {
+    std::sort(ranges[h].begin(), ranges[h].end());
+    for (const Range &r : ranges[h])
+      for (int j = r.first; j < r.second; ++j) (h == 2 ? top_entries_ : half_entries_[h]) += column_entries[size_t(j)];
+    ranges_[h] = std::move(ranges[h]);
   }
+  top_offset_.assign(1, 0);
+  for (const Range &r : ranges_[2]) top_offset_.push_back(top_offset_.back() + size_t(r.second - r.first));
+  n_ = n, total_entries_ = total;
 }
 
 bool SubtreeSolvePlan::fits(const SimplicialFactor &f) const {
-  if (f.n != int(entries_.size())) return false;
-  for (int j = 0; j < f.n; ++j)
-    if (f.nz[j] != entries_[size_t(j)]) return false;
-  return true;
+  if (f.n != n_) return false;
+  double entries = 0;
+  for (int j = 0; j < f.n; ++j) entries += f.nz[j];
+  return entries == total_entries_;
 }
 
 // L y = b on a part's columns, ascending (and D's division, for LDL^T). Half 0 and the top update
@@ -137,43 +128,46 @@ bool SubtreeSolvePlan::fits(const SimplicialFactor &f) const {
 // the subtree's root, the top's above. (Columns of one supernode done together, each index read
 // once for all of them, was tried: slower, its index reads no longer one sequential stream.)
 void SubtreeSolvePlan::forward_part(const SimplicialFactor &f, int h, double *y, double *spill) const {
-  const std::vector<int> &columns = columns_[h];
-  for (size_t c = 0; c < columns.size(); ++c) {
-    const int j = columns[c], first = f.p[j], end = first + f.nz[j];
-    double yj = y[j];
-    if (f.ll) yj /= f.x[first], y[j] = yj;
-    if (h != 1) {
-      for (int q = first + 1; q < end; ++q) y[f.i[q]] -= f.x[q] * yj;
-    } else {
-      const int root = root_[c];
-      for (int q = first + 1; q < end; ++q) {
-        const int i = f.i[q];
-        if (i <= root) y[i] -= f.x[q] * yj;
-        else spill[top_position(i)] -= f.x[q] * yj;
+  for (const Range &r : ranges_[h]) {
+    const int root = r.second - 1;  // (half 1: rows above it are the top's)
+    for (int j = r.first; j < r.second; ++j) {
+      const int first = f.p[j], end = first + f.nz[j];
+      double yj = y[j];
+      if (f.ll) yj /= f.x[first], y[j] = yj;
+      if (h != 1) {
+        for (int q = first + 1; q < end; ++q) y[f.i[q]] -= f.x[q] * yj;
+      } else {
+        for (int q = first + 1; q < end; ++q) {
+          const int i = f.i[q];
+          if (i <= root) y[i] -= f.x[q] * yj;
+          else spill[top_position(i)] -= f.x[q] * yj;
+        }
       }
+      if (!f.ll) y[j] = yj / f.x[first];
     }
-    if (!f.ll) y[j] = yj / f.x[first];
   }
+}
+
+// The position of a top column among the top's (a search: few entries of half 1 reach the top).
+size_t SubtreeSolvePlan::top_position(int column) const {
+  const auto after = std::upper_bound(ranges_[2].begin(), ranges_[2].end(), Range{column, n_});
+  const size_t k = size_t(after - ranges_[2].begin()) - 1;  // the run holding it
+  return top_offset_[k] + size_t(column - ranges_[2][k].first);
 }
 
 // L^T x = y on a part's columns, descending: reads its own rows and the top's, written before.
-// A top column's position among the top's (a search: few entries of half 1 reach the top).
-size_t SubtreeSolvePlan::top_position(int column) const {
-  return size_t(std::lower_bound(columns_[2].begin(), columns_[2].end(), column) - columns_[2].begin());
-}
-
 void SubtreeSolvePlan::backward_part(const SimplicialFactor &f, int h, double *y) const {
-  const std::vector<int> &columns = columns_[h];
-  for (auto it = columns.rbegin(); it != columns.rend(); ++it) {
-    const int j = *it, first = f.p[j], end = first + f.nz[j];
-    double s = y[j];
-    for (int q = first + 1; q < end; ++q) s -= f.x[q] * y[f.i[q]];
-    y[j] = f.ll ? s / f.x[first] : s;
-  }
+  for (auto r = ranges_[h].rbegin(); r != ranges_[h].rend(); ++r)
+    for (int j = r->second - 1; j >= r->first; --j) {
+      const int first = f.p[j], end = first + f.nz[j];
+      double s = y[j];
+      for (int q = first + 1; q < end; ++q) s -= f.x[q] * y[f.i[q]];
+      y[j] = f.ll ? s / f.x[first] : s;
+    }
 }
 
 void SubtreeSolvePlan::solve(const SimplicialFactor &f, double *y, bool two_threads) const {
-  std::vector<double> spill(columns_[2].size(), 0.0);
+  std::vector<double> spill(top_offset_.back(), 0.0);
   // Both halves at once, or in turn if no thread can be started: the same arithmetic.
   auto both_halves = [&](const std::function<void(int)> &half) {
     if (two_threads) {
@@ -190,7 +184,9 @@ void SubtreeSolvePlan::solve(const SimplicialFactor &f, double *y, bool two_thre
     half(0), half(1);
   };
   both_halves([&](int h) { forward_part(f, h, y, spill.data()); });
-  for (size_t t = 0; t < columns_[2].size(); ++t) y[columns_[2][t]] += spill[t];
+  size_t t = 0;
+  for (const Range &r : ranges_[2])
+    for (int j = r.first; j < r.second; ++j) y[j] += spill[t++];
   forward_part(f, 2, y, nullptr);
   backward_part(f, 2, y);
   both_halves([&](int h) { backward_part(f, h, y); });

@@ -33,34 +33,32 @@ struct SimplicialFactor {
 
 class SubtreeSolvePlan {
 public:
-  // The plan for a factor's pattern: its elimination tree (parent, -1 at a root) and the entries of
-  // each column. Empty (worthwhile() false) when no split of the entries between two halves
-  // leaves the larger half and the top under kWorthwhileShare of them.
+  using Range = std::pair<int, int>;  // columns first .. second - 1
+  // The plan for a factor's pattern: its elimination tree (parent, -1 at a root; the order
+  // postordered, so that a subtree's columns are consecutive) and the entries of each column.
+  // Empty (worthwhile() false) when no split of the entries between two halves leaves the larger
+  // half and the top under kWorthwhileShare of them, or the order is not postordered.
   SubtreeSolvePlan(const std::vector<int> &parent, const std::vector<double> &column_entries);
   SubtreeSolvePlan() = default;
-  bool worthwhile() const { return !entries_.empty(); }
-  // Whether a factor has the pattern the plan was made for (its column counts: the factors of one
-  // analysis share its pattern, and CHOLMOD keeps each column's rows sorted).
+  bool worthwhile() const { return !ranges_[0].empty() && !ranges_[1].empty(); }
+  // Whether a factor has the pattern the plan was made for (as many columns and entries: the
+  // factors of one analysis share its pattern, and CHOLMOD keeps each column's rows sorted).
   bool fits(const SimplicialFactor &factor) const;
   // y <- (L L^T)^-1 y (or (L D L^T)^-1 y), y in the factor's order; with two_threads the halves
   // run at once (one std::thread started per pass; if none can be started they run in turn).
   void solve(const SimplicialFactor &factor, double *y, bool two_threads) const;
-  // The parts as ranges of consecutive columns, for a factorization by rows (cholmod_rowfac): each
-  // half's subtrees, and the top's runs, ascending. Empty where a subtree is not consecutive (an
-  // order not postordered).
-  using Range = std::pair<int, int>;  // columns first .. second - 1
+  // The parts as ranges of consecutive columns, ascending: each half's subtrees (part 0, 1) and
+  // the top's runs (part 2); for a factorization by rows (cholmod_rowfac) too.
   const std::vector<Range> &ranges(int part) const { return ranges_[part]; }
-  bool in_ranges() const { return !ranges_[0].empty() && !ranges_[1].empty(); }
   // The shares of the entries: each half's and the top's (for the log and the tests).
   double half_entries(int h) const { return half_entries_[h]; }
   double top_entries() const { return top_entries_; }
 
 private:
-  std::vector<int> columns_[3];    // half 0's, half 1's, the top's; ascending
-  std::vector<int> root_;          // per column of half 1: its subtree's root (rows above it are the top's)
-  std::vector<int> entries_;       // per column, as planned
   std::vector<Range> ranges_[3];
-  double half_entries_[2] = {0, 0}, top_entries_ = 0;
+  std::vector<size_t> top_offset_;  // per run of the top: the top's columns before it (and all, last)
+  int n_ = 0;
+  double total_entries_ = 0, half_entries_[2] = {0, 0}, top_entries_ = 0;
   void forward_part(const SimplicialFactor &f, int h, double *y, double *spill) const;
   void backward_part(const SimplicialFactor &f, int h, double *y) const;
   size_t top_position(int column) const;

@@ -423,6 +423,7 @@ void Model::build_sparse_structure() {
   // ordering runs (one thread).
   auto analyze = [&] {
     Stopwatch watch(infos.t_analysis);
+    cs.solver.set_threads(threads_);  // (the halves' orderings on two threads)
     cs.solver.analyze(st, options.ordering);
   };
   if (cs.tangent_of.empty()) analyze();
