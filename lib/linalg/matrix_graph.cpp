@@ -44,15 +44,19 @@ int pseudo_peripheral_node(const MatrixGraph &g, int seed, const std::vector<cha
     for (int v : visit) level[size_t(v)] = -1;
   };
   int root = seed, depth = breadth_first(g, root, false, numbered, level, visit);
+  std::vector<int> root_visit, root_level;  // the root's search, kept while a candidate's is tried
   for (int tries = 0; tries < 4; ++tries) {
     int candidate = -1;
     for (int v : visit)
       if (level[size_t(v)] == depth - 1 && (candidate < 0 || g.degree(v) < g.degree(candidate))) candidate = v;
+    root_visit = visit, root_level.resize(visit.size());
+    for (size_t k = 0; k < visit.size(); ++k) root_level[k] = level[size_t(visit[k])];
     reset();
     const int candidate_depth = breadth_first(g, candidate, false, numbered, level, visit);
-    if (candidate_depth <= depth) {
+    if (candidate_depth <= depth) {  // the root's search stands: put it back
       reset();
-      breadth_first(g, root, false, numbered, level, visit);
+      visit.swap(root_visit);
+      for (size_t k = 0; k < visit.size(); ++k) level[size_t(visit[k])] = root_level[k];
       break;
     }
     root = candidate, depth = candidate_depth;
@@ -63,19 +67,11 @@ int pseudo_peripheral_node(const MatrixGraph &g, int seed, const std::vector<cha
 std::vector<int> split_in_two(const MatrixGraph &g) {
   const int n = g.nodes();
   if (n < 3) return {};
-  // The largest component: searches from each node not yet reached.
+  // From the first node's component (the matrices split here are connected: both bodies and the
+  // rows that join them; where it is not, its halves hold too few nodes and nothing is split).
   std::vector<char> numbered(static_cast<size_t>(n), 0);
   std::vector<int> level(static_cast<size_t>(n), -1), visit;
-  int largest_seed = -1;
-  size_t largest = 0;
-  for (int seed = 0; seed < n; ++seed) {
-    if (numbered[size_t(seed)]) continue;
-    breadth_first(g, seed, false, numbered, level, visit);
-    for (int v : visit) numbered[size_t(v)] = 1, level[size_t(v)] = -1;
-    if (visit.size() > largest) largest = visit.size(), largest_seed = seed;
-  }
-  std::fill(numbered.begin(), numbered.end(), 0);
-  pseudo_peripheral_node(g, largest_seed, numbered, level, visit);
+  pseudo_peripheral_node(g, 0, numbered, level, visit);
   // The level at which half of the component has been visited (the search visits by level).
   const int middle = level[size_t(visit[visit.size() / 2])];
   std::vector<int> part(static_cast<size_t>(n), 0);

@@ -31,8 +31,8 @@ int pseudo_peripheral_node(const MatrixGraph &g, int seed, const std::vector<cha
 
 // Two halves and a separator: part[v] = 0 or 1 for the halves, 2 for the separator, such that no
 // entry of the matrix joins the two halves. The separator is the level of a breadth-first search
-// from a pseudo-peripheral node of the largest component at which half of its nodes have been
-// visited: on a long strip, one cross-section. Nodes of other components go to half 0. Empty
+// from a pseudo-peripheral node of the first node's component at which half of its nodes have
+// been visited: on a long strip, one cross-section. Nodes of other components go to half 0. Empty
 // when the separator would not leave each half a quarter of the nodes.
 std::vector<int> split_in_two(const MatrixGraph &g);
 
