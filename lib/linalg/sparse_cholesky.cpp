@@ -426,6 +426,7 @@ bool SparseCholesky::factorize_by_subtrees(cholmod_sparse &a) {
     }
     if (!ran) rows_of(0, f, &d.common), rows_of(1, &half_one, &d.second);
     f->minor = std::min(f->minor, half_one.minor);
+    cholmod_free_work(&d.second);  // (before the top's rows: the solve's peak memory is near here)
     if (f->minor == size_t(n)) rows_of(2, f, &d.common);
   }
   if (d.second.status == CHOLMOD_OUT_OF_MEMORY) d.common.status = CHOLMOD_OUT_OF_MEMORY;
@@ -434,7 +435,9 @@ bool SparseCholesky::factorize_by_subtrees(cholmod_sparse &a) {
     d.common.status = CHOLMOD_NOT_POSDEF;
     return true;
   }
-  // Left as cholmod_factorize leaves it (Common's final_pack and final_monotonic).
+  // Left as cholmod_factorize leaves it (Common's final_pack and final_monotonic), the permuted
+  // matrix freed first (packing moves the factor).
+  cholmod_free_sparse(&upper, &d.common);
   cholmod_change_factor(CHOLMOD_REAL, 1, 0, d.common.final_pack, d.common.final_monotonic, f, &d.common);
   d.check("factorize");
   ++split_factorizations_;
