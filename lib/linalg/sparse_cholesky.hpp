@@ -102,6 +102,7 @@ private:
   bool analyzed_ = false;
   bool solve_by_subtrees(double *x) const;
   std::vector<int> order_in_halves(const SymmetricCsc &a, const std::vector<int> &part);
+  bool analyze_in_halves(const SymmetricCsc &a);
   bool factorize_by_subtrees(cholmod_sparse_struct &a);
   int failed_unknown_ = -1;
 };

@@ -1,0 +1,224 @@
+// SparseCholesky for a slender matrix in two halves (sparse_cholesky.hpp; docs/theory.md §6b
+// item 3): its order, and its factorizations and solves with each half on its own thread.
+#include "linalg/sparse_cholesky_impl.hpp"
+#include "linalg/matrix_graph.hpp"
+#include <algorithm>
+#include <pthread.h>
+#include <system_error>
+#include <thread>
+
+namespace mc {
+
+// A slender matrix's analysis in two halves (SparseCholesky::analyze): split by a level separator
+// of at most kLargestSeparator unknowns, each half ordered by AMD, the separator last, simplicial;
+// the split of its solves and factorizations planned from the analysis. False: not split (the
+// caller analyses it as usual).
+bool SparseCholesky::analyze_in_halves(const SymmetricCsc &a) {
+  Impl &d = *impl_;
+  cholmod_sparse s = d.view(a);
+  const std::vector<int> part = split_in_two(graph_of(a));
+  const long separator = std::count_if(part.begin(), part.end(), [](int side) { return side == 2; });
+  if (!part.empty() && separator <= kLargestSeparator) {
+    const std::vector<int> perm = order_in_halves(a, part);
+    d.common.nmethods = 1;
+    d.common.method[0].ordering = CHOLMOD_GIVEN;
+    d.common.postorder = 1;
+    // Simplicial: the halves are for a simplicial factor (split solves and factorizations, and
+    // modified in place); a slender matrix's fronts are small, about CHOLMOD's own switch (39 to
+    // 45 flops per entry on the strips from 1001 to 4001 contact nodes in this order).
+    d.common.supernodal = CHOLMOD_SIMPLICIAL;
+    d.factor = cholmod_analyze_p(&s, const_cast<int *>(perm.data()), nullptr, 0, &d.common);
+    d.check("analyze");
+    // The split of the solves (and factorizations) made now, from the analysis: the elimination
+    // tree of the ordered matrix and the column counts.
+    d.plan_made = true;
+    if (!d.factor->is_super && double(d.common.lnz) >= kSubtreeSolveFromEntries) {
+      const int *count = static_cast<const int *>(d.factor->ColCount);
+      const std::vector<double> entries(count, count + n_);
+      auto plan = std::make_unique<SubtreeSolvePlan>(elimination_tree(a, static_cast<const int *>(d.factor->Perm)), entries);
+      if (plan->worthwhile()) d.plan = std::move(plan);
+    }
+    return true;
+  }
+  return false;
+}
+
+// The order of a matrix split in two halves (part[v]: 0, 1, or 2 for the separator): each half's
+// unknowns by AMD on the half alone (no entry joins the halves: their orders are independent, the
+// second on a second thread where set_threads allows), then the separator's. CAMD on the whole
+// matrix with the three parts as constraint sets gave the same factor size and took 3 to 4 times
+// AMD's time on the strips.
+std::vector<int> SparseCholesky::order_in_halves(const SymmetricCsc &a, const std::vector<int> &part) {
+  Impl &d = *impl_;
+  const int n = a.n;
+  std::vector<int> local(static_cast<size_t>(n)), members[3];
+  for (int v = 0; v < n; ++v) local[size_t(v)] = int(members[part[size_t(v)]].size()), members[part[size_t(v)]].push_back(v);
+  std::vector<int> order[2];
+  auto order_half = [&](int h, cholmod_common *common) {
+    // The half's own matrix: the upper triangle's pattern on its unknowns, in their order.
+    const std::vector<int> &m = members[h];
+    std::vector<int> colptr(m.size() + 1, 0), rows;
+    for (size_t c = 0; c < m.size(); ++c) {
+      const int j = m[c];
+      for (int p = a.colptr[j]; p < a.colptr[j + 1]; ++p)
+        if (part[size_t(a.rows[p])] == h) rows.push_back(local[size_t(a.rows[p])]);
+      colptr[c + 1] = int(rows.size());
+    }
+    cholmod_sparse half;
+    std::memset(&half, 0, sizeof half);
+    half.nrow = half.ncol = m.size();
+    half.nzmax = std::max<size_t>(rows.size(), 1);
+    half.p = colptr.data(), half.i = rows.data();
+    half.stype = 1, half.itype = CHOLMOD_INT, half.xtype = CHOLMOD_PATTERN, half.dtype = CHOLMOD_DOUBLE;
+    half.sorted = 1, half.packed = 1;
+    order[h].resize(m.size());
+    cholmod_amd(&half, nullptr, 0, order[h].data(), common);
+  };
+  {
+    CholmodWithoutOpenMpTeam serial_openmp;
+    bool ran = false;
+    if (threads_ > 1) try {
+        std::thread second([&] {
+          CholmodWithoutOpenMpTeam its_own;
+          order_half(1, &d.second);
+        });
+        pthread_setname_np(second.native_handle(), "mc-body2");
+        order_half(0, &d.common);
+        second.join();
+        ran = true;
+      } catch (const std::system_error &) {
+      }
+    if (!ran) order_half(0, &d.common), order_half(1, &d.second);
+  }
+  cholmod_free_work(&d.second);
+  if (d.second.status == CHOLMOD_OUT_OF_MEMORY) d.common.status = CHOLMOD_OUT_OF_MEMORY;
+  d.check("AMD ordering");
+  std::vector<int> perm;
+  perm.reserve(static_cast<size_t>(n));
+  for (int h = 0; h < 2; ++h)
+    for (int k : order[h]) perm.push_back(members[h][size_t(k)]);
+  perm.insert(perm.end(), members[2].begin(), members[2].end());
+  return perm;
+}
+
+// A simplicial factorization by rows (cholmod_rowfac, as cholmod_factorize runs it), the two halves'
+// rows at once: a row of L is computed from the rows of its descendants in the elimination tree
+// alone, so each half's subtrees need nothing of the other's, and the top's rows follow. Every row
+// is computed as cholmod_factorize computes it: the same factor to the bit. Only where the solves
+// are split (the plan's ranges) and two threads may run; false: nothing done.
+bool SparseCholesky::factorize_by_subtrees(cholmod_sparse &a) {
+  Impl &d = *impl_;
+  cholmod_factor *f = d.factor;
+  if (threads_ < 2 || !d.plan || f->is_super) return false;
+  // S = triu(A(p, p)), as cholmod_factorize_p forms it for cholmod_rowfac.
+  cholmod_sparse *lower = cholmod_ptranspose(&a, 2, static_cast<int *>(f->Perm), nullptr, 0, &d.common);
+  d.check("permuting the matrix");
+  cholmod_sparse *upper = cholmod_ptranspose(lower, 2, nullptr, nullptr, 0, &d.common);
+  cholmod_free_sparse(&lower, &d.common);
+  d.check("permuting the matrix");
+  struct Freed {
+    cholmod_sparse *&matrix;
+    Impl &d;
+    ~Freed() {
+      cholmod_free_sparse(&matrix, &d.common);
+      cholmod_free_work(&d.second);
+    }
+  } freed{upper, d};
+  const int n = n_;
+  if (f->xtype == CHOLMOD_PATTERN) {
+    // Numeric, each column its exact size (as cholmod_factorize_p allocates a packed factor).
+    const size_t grow2 = d.common.grow2;
+    d.common.grow2 = 0;
+    cholmod_change_factor(CHOLMOD_REAL, 1, 0, 0, 1, f, &d.common);
+    d.common.grow2 = grow2;
+    d.check("allocating the factor");
+  } else {
+    // A refactorization: every column emptied to its diagonal, as cholmod_rowfac does for all rows.
+    f->minor = size_t(n);
+    int *lnz = static_cast<int *>(f->nz);
+    for (int k = 0; k < n; ++k) lnz[k] = 1;
+  }
+  f->is_ll = 1;
+  // Half 1's workspace, allocated here: from the calling thread's memory (a first allocation on
+  // a new thread would open a malloc arena of its own, resident memory the solve does not need).
+  cholmod_allocate_work(size_t(n), size_t(n), size_t(n), &d.second);
+  if (d.second.status == CHOLMOD_OUT_OF_MEMORY) d.common.status = CHOLMOD_OUT_OF_MEMORY;
+  d.check("allocating a workspace");
+  double beta[2] = {0, 0};
+  // Half 1 writes through a copy of the factor's header: the same arrays, its own `minor` (the row
+  // where a pivot failed), merged below.
+  cholmod_factor half_one = *f;
+  auto rows_of = [&](int part, cholmod_factor *factor, cholmod_common *common) {
+    for (const SubtreeSolvePlan::Range &r : d.plan->ranges(part))
+      cholmod_rowfac(upper, nullptr, beta, size_t(r.first), size_t(r.second), factor, common);
+  };
+  {
+    CholmodWithoutOpenMpTeam serial_openmp;
+    bool ran = false;
+    try {
+      std::thread second([&] {
+        CholmodWithoutOpenMpTeam its_own;
+        rows_of(1, &half_one, &d.second);
+      });
+      pthread_setname_np(second.native_handle(), "mc-body2");
+      rows_of(0, f, &d.common);
+      second.join();
+      ran = true;
+    } catch (const std::system_error &) {
+    }
+    if (!ran) rows_of(0, f, &d.common), rows_of(1, &half_one, &d.second);
+    f->minor = std::min(f->minor, half_one.minor);
+    cholmod_free_work(&d.second);  // (before the top's rows: the solve's peak memory is near here)
+    if (f->minor == size_t(n)) rows_of(2, f, &d.common);
+  }
+  if (d.second.status == CHOLMOD_OUT_OF_MEMORY) d.common.status = CHOLMOD_OUT_OF_MEMORY;
+  d.check("factorize");
+  if (f->minor < size_t(n)) {
+    d.common.status = CHOLMOD_NOT_POSDEF;
+    return true;
+  }
+  // Left as cholmod_factorize leaves it (Common's final_pack and final_monotonic), the permuted
+  // matrix freed first (packing moves the factor).
+  cholmod_free_sparse(&upper, &d.common);
+  cholmod_change_factor(CHOLMOD_REAL, 1, 0, d.common.final_pack, d.common.final_monotonic, f, &d.common);
+  d.check("factorize");
+  ++split_factorizations_;
+  return true;
+}
+
+bool SparseCholesky::solve_by_subtrees(double *x) const {
+  Impl &d = *impl_;
+  const cholmod_factor *f = d.factor;
+  if (!f || f->is_super || f->xtype == CHOLMOD_PATTERN) return false;
+  SimplicialFactor view;
+  view.n = n_;
+  view.p = static_cast<const int *>(f->p), view.i = static_cast<const int *>(f->i);
+  view.nz = static_cast<const int *>(f->nz), view.x = static_cast<const double *>(f->x);
+  view.ll = f->is_ll != 0;
+  // The plan, made at the first solve after an analysis (and again should a factor's pattern
+  // ever differ from it); none where it would not pay.
+  if (d.plan_made && d.plan && !d.plan->fits(view)) d.plan.reset(), d.plan_made = false;
+  if (!d.plan_made) {
+    d.plan_made = true;
+    if (double(d.common.lnz) >= kSubtreeSolveFromEntries) {
+      std::vector<double> entries(view.nz, view.nz + n_);
+      auto plan = std::make_unique<SubtreeSolvePlan>(d.elimination_tree(), entries);
+      if (plan->worthwhile()) d.plan = std::move(plan);
+    }
+  }
+  if (!d.plan) return false;
+  const int *perm = static_cast<const int *>(f->Perm);
+  std::vector<double> y(static_cast<size_t>(n_));
+  for (int k = 0; k < n_; ++k) y[size_t(k)] = x[perm[k]];
+  d.plan->solve(view, y.data(), threads_ > 1);
+  for (int k = 0; k < n_; ++k) x[perm[k]] = y[size_t(k)];
+  return true;
+}
+
+double SparseCholesky::split_top_share() const {
+  const SubtreeSolvePlan *plan = impl_->plan.get();
+  if (!plan) return -1;
+  return plan->top_entries() / std::max(1.0, plan->top_entries() + plan->half_entries(0) + plan->half_entries(1));
+}
+
+}  // namespace mc
