@@ -423,7 +423,9 @@ void Model::build_sparse_structure() {
   // ordering runs (one thread).
   auto analyze = [&] {
     Stopwatch watch(infos.t_analysis);
-    cs.solver.set_threads(threads_);  // (the halves' orderings on two threads)
+    // The halves' orderings on two threads, unless B is completed on the second one meanwhile
+    // (friction): the library runs one thread besides the caller's at a time.
+    cs.solver.set_threads(cs.tangent_of.empty() ? threads_ : 1);
     cs.solver.analyze(st, options.ordering);
   };
   if (cs.tangent_of.empty()) analyze();
