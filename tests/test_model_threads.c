@@ -323,7 +323,7 @@ END_TEST
 
 /* The sparse path's solves split by subtrees of the elimination tree: the halves on two threads or
    in turn, the same arithmetic (subtree_solve.hpp); with two threads its factorizations also run
-   by halves (cholmod_rowfac on each half's rows, SparseCholesky::factorize_by_subtrees), which
+   by halves (cholmod_rowfac on each half's rows, SparseCholesky::factorize_ordered), which
    compute every row as the serial factorization does: the same results, bit for bit. */
 START_TEST(split_solves_do_not_depend_on_threads) {
   /* a first solve only: a re-solve here doubled this test's time under the sanitizers (.ci/run);

@@ -143,18 +143,47 @@ void SparseCholesky::factorize(const SymmetricCsc &a) {
       d.check("allocating the factor");
       populate_pages(d.factor->x, d.factor->xsize * sizeof(double));
     }
-    if (!factorize_by_subtrees(s)) cholmod_factorize(&s, d.factor, &d.common);
+    cholmod_factorize(&s, d.factor, &d.common);
   }
+  report_failed_pivot(a.n);
+}
+
+std::vector<int> SparseCholesky::simplicial_order() const {
+  const cholmod_factor *f = impl_->factor;
+  if (n_ == 0 || !f || f->is_super) return {};
+  const int *perm = static_cast<const int *>(f->Perm);
+  if (!perm) {
+    std::vector<int> natural(static_cast<size_t>(n_));
+    for (int k = 0; k < n_; ++k) natural[size_t(k)] = k;
+    return natural;
+  }
+  return std::vector<int>(perm, perm + n_);
+}
+
+void SparseCholesky::factorize_ordered(const SymmetricCsc &a_pp) {
+  Impl &d = *impl_;
+  failed_unknown_ = -1;
+  if (n_ == 0) return;
+  if (!d.factor || d.factor->is_super) fail(MC_ERROR_INTERNAL, "factorize_ordered without a simplicial analysis");
+  if (a_pp.n != n_) fail(MC_ERROR_INTERNAL, "factorize_ordered: %d unknowns, the analysis has %d", a_pp.n, n_);
+  cholmod_sparse s = d.view(a_pp);
+  factorize_rows(s);
+  report_failed_pivot(a_pp.n);
+}
+
+// After a factorization: a pivot that failed thrown as MC_ERROR_SINGULAR, naming its unknown.
+void SparseCholesky::report_failed_pivot(int n) {
+  Impl &d = *impl_;
   if (d.common.status == CHOLMOD_NOT_POSDEF) {
     const int *perm = static_cast<const int *>(d.factor->Perm);
     const int minor = int(d.factor->minor);
-    failed_unknown_ = perm && minor < a.n ? perm[minor] : minor;
+    failed_unknown_ = perm && minor < n ? perm[minor] : minor;
   }
   if (d.common.status == CHOLMOD_NOT_POSDEF)
     fail(MC_ERROR_SINGULAR,
          "the stiffness matrix is not positive definite (pivot %d of %d): a part of the body can move "
          "rigidly, or a material is not positive definite",
-         int(d.factor->minor), a.n);
+         int(d.factor->minor), n);
   d.check("factorize");
 }
 

@@ -31,6 +31,17 @@ public:
   bool analyzed() const;
   // Numeric factorization; throws MC_ERROR_SINGULAR if a is not positive definite.
   void factorize(const SymmetricCsc &a);
+  // After an analysis whose factor is simplicial: its permutation p, for a caller that keeps its
+  // matrix in the factor's order and factorizes with factorize_ordered. Empty where the factor
+  // is supernodal (or there is none): factorize then permutes the matrix itself.
+  std::vector<int> simplicial_order() const;
+  // factorize, for a matrix already in the factor's order: the upper triangle of A(p, p), p from
+  // simplicial_order(), each column sorted. cholmod_factorize would first copy A into that order
+  // (two transposes per factorization, and the copy beside the factor at the solve's peak
+  // memory). The factor's rows are computed as cholmod_factorize computes them (cholmod_rowfac):
+  // the same factor to the bit; where the solves are split (the plan's halves) and set_threads
+  // allows two threads, each half's rows at once on its own thread, then the top's.
+  void factorize_ordered(const SymmetricCsc &a_pp);
   // The factor of A + C C^T (add) or A - C C^T, modified in place (CHOLMOD's update/downdate,
   // which leaves a simplicial LDL^T; meant for a simplicial factor): C has k columns, given by columns in a's
   // numbering (colptr k + 1, rows, values). Returns false if the modified factor is not
@@ -73,7 +84,7 @@ public:
   // The share of the factor's entries outside the two halves its solves are split into (the
   // serial part), or -1 where its solves are not split (no plan yet, or none worth it).
   double split_top_share() const;
-  // Factorizations since the analysis whose halves ran on two threads (factorize_by_subtrees).
+  // Factorizations since the analysis whose halves ran on two threads (factorize_ordered).
   int split_factorizations() const { return split_factorizations_; }
   // The two halves of a solve, A = P^T L L^T P: y = L^-1 P b (y in the factor's order) and
   // x = P^T L^-T z. The contact solve works between them: the interface unknowns are the
@@ -103,7 +114,8 @@ private:
   bool solve_by_subtrees(double *x) const;
   std::vector<int> order_in_halves(const SymmetricCsc &a, const std::vector<int> &part);
   bool analyze_in_halves(const SymmetricCsc &a);
-  bool factorize_by_subtrees(cholmod_sparse_struct &a);
+  void factorize_rows(cholmod_sparse_struct &upper);
+  void report_failed_pivot(int n);
   int failed_unknown_ = -1;
 };
 

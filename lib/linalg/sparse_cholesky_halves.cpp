@@ -101,30 +101,16 @@ std::vector<int> SparseCholesky::order_in_halves(const SymmetricCsc &a, const st
   return perm;
 }
 
-// A simplicial factorization by rows (cholmod_rowfac, as cholmod_factorize runs it), the two halves'
-// rows at once: a row of L is computed from the rows of its descendants in the elimination tree
-// alone, so each half's subtrees need nothing of the other's, and the top's rows follow. Every row
-// is computed as cholmod_factorize computes it: the same factor to the bit. Only where the solves
-// are split (the plan's ranges) and two threads may run; false: nothing done.
-bool SparseCholesky::factorize_by_subtrees(cholmod_sparse &a) {
+// A simplicial factorization by rows of S = triu(A(p, p)) (cholmod_rowfac, as cholmod_factorize
+// runs it), where the solves are split and two threads may run the two halves' rows at once: a
+// row of L is computed from the rows of its descendants in the elimination tree alone, so each
+// half's subtrees need nothing of the other's, and the top's rows follow. Every row is computed
+// as cholmod_factorize computes it: the same factor to the bit, on one thread or two.
+void SparseCholesky::factorize_rows(cholmod_sparse &upper) {
   Impl &d = *impl_;
   cholmod_factor *f = d.factor;
-  if (threads_ < 2 || !d.plan || f->is_super) return false;
-  // S = triu(A(p, p)), as cholmod_factorize_p forms it for cholmod_rowfac.
-  cholmod_sparse *lower = cholmod_ptranspose(&a, 2, static_cast<int *>(f->Perm), nullptr, 0, &d.common);
-  d.check("permuting the matrix");
-  cholmod_sparse *upper = cholmod_ptranspose(lower, 2, nullptr, nullptr, 0, &d.common);
-  cholmod_free_sparse(&lower, &d.common);
-  d.check("permuting the matrix");
-  struct Freed {
-    cholmod_sparse *&matrix;
-    Impl &d;
-    ~Freed() {
-      cholmod_free_sparse(&matrix, &d.common);
-      cholmod_free_work(&d.second);
-    }
-  } freed{upper, d};
   const int n = n_;
+  CholmodWithoutOpenMpTeam serial_openmp;
   if (f->xtype == CHOLMOD_PATTERN) {
     // Numeric, each column its exact size (as cholmod_factorize_p allocates a packed factor).
     const size_t grow2 = d.common.grow2;
@@ -139,21 +125,28 @@ bool SparseCholesky::factorize_by_subtrees(cholmod_sparse &a) {
     for (int k = 0; k < n; ++k) lnz[k] = 1;
   }
   f->is_ll = 1;
-  // Half 1's workspace, allocated here: from the calling thread's memory (a first allocation on
-  // a new thread would open a malloc arena of its own, resident memory the solve does not need).
-  cholmod_allocate_work(size_t(n), size_t(n), size_t(n), &d.second);
-  if (d.second.status == CHOLMOD_OUT_OF_MEMORY) d.common.status = CHOLMOD_OUT_OF_MEMORY;
-  d.check("allocating a workspace");
   double beta[2] = {0, 0};
-  // Half 1 writes through a copy of the factor's header: the same arrays, its own `minor` (the row
-  // where a pivot failed), merged below.
-  cholmod_factor half_one = *f;
-  auto rows_of = [&](int part, cholmod_factor *factor, cholmod_common *common) {
-    for (const SubtreeSolvePlan::Range &r : d.plan->ranges(part))
-      cholmod_rowfac(upper, nullptr, beta, size_t(r.first), size_t(r.second), factor, common);
-  };
-  {
-    CholmodWithoutOpenMpTeam serial_openmp;
+  const bool in_halves = threads_ > 1 && d.plan;
+  if (!in_halves) {
+    cholmod_rowfac(&upper, nullptr, beta, 0, size_t(n), f, &d.common);
+  } else {
+    // Half 1's workspace, allocated here: from the calling thread's memory (a first allocation
+    // on a new thread would open a malloc arena of its own, resident memory the solve does not
+    // need).
+    cholmod_allocate_work(size_t(n), size_t(n), size_t(n), &d.second);
+    if (d.second.status == CHOLMOD_OUT_OF_MEMORY) d.common.status = CHOLMOD_OUT_OF_MEMORY;
+    struct FreedWork {
+      cholmod_common &second;
+      ~FreedWork() { cholmod_free_work(&second); }
+    } freed{d.second};
+    d.check("allocating a workspace");
+    // Half 1 writes through a copy of the factor's header: the same arrays, its own `minor` (the
+    // row where a pivot failed), merged below.
+    cholmod_factor half_one = *f;
+    auto rows_of = [&](int part, cholmod_factor *factor, cholmod_common *common) {
+      for (const SubtreeSolvePlan::Range &r : d.plan->ranges(part))
+        cholmod_rowfac(&upper, nullptr, beta, size_t(r.first), size_t(r.second), factor, common);
+    };
     bool ran = false;
     try {
       std::thread second([&] {
@@ -168,22 +161,18 @@ bool SparseCholesky::factorize_by_subtrees(cholmod_sparse &a) {
     }
     if (!ran) rows_of(0, f, &d.common), rows_of(1, &half_one, &d.second);
     f->minor = std::min(f->minor, half_one.minor);
-    cholmod_free_work(&d.second);  // (before the top's rows: the solve's peak memory is near here)
+    if (d.second.status == CHOLMOD_OUT_OF_MEMORY) d.common.status = CHOLMOD_OUT_OF_MEMORY;
     if (f->minor == size_t(n)) rows_of(2, f, &d.common);
   }
-  if (d.second.status == CHOLMOD_OUT_OF_MEMORY) d.common.status = CHOLMOD_OUT_OF_MEMORY;
-  d.check("factorize");
-  if (f->minor < size_t(n)) {
+  if (d.common.status == CHOLMOD_NOT_POSDEF || f->minor < size_t(n)) {
     d.common.status = CHOLMOD_NOT_POSDEF;
-    return true;
+    return;
   }
-  // Left as cholmod_factorize leaves it (Common's final_pack and final_monotonic), the permuted
-  // matrix freed first (packing moves the factor).
-  cholmod_free_sparse(&upper, &d.common);
+  d.check("factorize");
+  // Left as cholmod_factorize leaves it (Common's final_pack and final_monotonic).
   cholmod_change_factor(CHOLMOD_REAL, 1, 0, d.common.final_pack, d.common.final_monotonic, f, &d.common);
   d.check("factorize");
-  ++split_factorizations_;
-  return true;
+  if (in_halves) ++split_factorizations_;
 }
 
 bool SparseCholesky::solve_by_subtrees(double *x) const {

@@ -90,7 +90,7 @@ public:
   double split_top_share() const { return cholesky_.split_top_share(); }
   int split_factorizations() const { return cholesky_.split_factorizations(); }
   // Frees the pattern and the factor.
-  void release() { cholesky_.release(), matrix_ = SymmetricCsc{}, factorized_.clear(), factor_set_.clear(), update_ = {}, modifications_ = 0, path_.clear(), aside_set_.clear(); }
+  void release() { cholesky_.release(), matrix_ = SymmetricCsc{}, inverse_order_.clear(), block_position_.clear(), factorized_.clear(), factor_set_.clear(), update_ = {}, modifications_ = 0, path_.clear(), aside_set_.clear(); }
   // CHOLMOD's estimates from the analysis, for the automatic choice of path.
   double factor_flops() const { return flops_; }
   long factor_nnz() const { return cholesky_.factor_nnz(); }
@@ -162,6 +162,12 @@ private:
   const SparseContactStructure *structure_ = nullptr;
   int position(int i, int j) const;  // of entry (min(i, j), max(i, j)) in matrix_
   SymmetricCsc matrix_;              // H_P's pattern (H + C^T C), values of the factorized set
+  // Where the factor is simplicial, matrix_ is in its order: H_P(p, p), inverse_order_[i] the
+  // position of unknown i (empty: matrix_ in the unknowns' own order), block_position_ the
+  // place in matrix_ of each entry of H's blocks (in add_blocks_of_h's order).
+  std::vector<int> inverse_order_, block_position_;
+  void order_as_factor();
+  void add_blocks_of_h();
   std::vector<double> weight_;       // P, one per row
   SparseCholesky cholesky_;
   int threads_ = 1;  // set_threads
