@@ -369,6 +369,12 @@ void release_slack_rows(const std::vector<double> &lambda, double lambda_ref, st
     if (active[r] && lambda[r] < kSlackForce * lambda_ref) active[r] = 0;
 }
 
+bool crawling(const std::vector<int> &sizes, size_t flips, int window) {
+  if (flips > kCrawlFlips || window <= 0 || int(sizes.size()) <= window) return false;
+  const int change = sizes.back() - sizes[sizes.size() - 1 - size_t(window)];
+  return std::abs(change) >= window;
+}
+
 double load_imbalance(const DualQp &p) {
   if (p.k == 0) return 0;
   double e_norm = 0;
@@ -431,6 +437,7 @@ DualQpResult solve_dual_qp(const DualQp &p, double tolerance, int max_iterations
   size_t fewest_violating = size_t(q) + 1;
   int fewest_at = 0;
   const int patience = 20;
+  std::vector<int> sizes;  // the active rows of each iteration
   std::vector<double> lambda, alpha, gap;
   auto finish = [&](double lambda_ref, double gap_ref) {
     result.violation = complementarity_residual(lambda, gap, lambda_ref, gap_ref);
@@ -487,6 +494,8 @@ DualQpResult solve_dual_qp(const DualQp &p, double tolerance, int max_iterations
     // measured (a stiff non-mortar disc finer than a soft block, E1/E2 = 1e6) went on for 200
     // iterations without repeating a set.
     if (violating.size() < fewest_violating) fewest_violating = violating.size(), fewest_at = it;
+    sizes.push_back(int(act.size()));
+    if (crawling(sizes, violating.size(), patience)) fewest_at = it;  // progress (dual_qp.hpp)
     if (it - fewest_at >= patience) return fall_back(active);
     previous = active;
     for (int i : violating) active[i] = !active[i];

@@ -503,6 +503,7 @@ SparseContactResult SparseContactSolver::solve(const std::vector<double> &load, 
   size_t fewest_violating = size_t(nrows) + 1;
   int fewest_at = 0;
   const int patience = 20;  // as the condensed path's (dual_qp.cpp)
+  std::vector<int> sizes;  // the active rows of each iteration
   auto start_again_from_every_row = [&](int it) {
     for (int r = 0; r < nrows; ++r) active[r] = s.row_is_inequality[r];
     from_gaps = false, release_at = it + 1, seen.clear(), fewest_violating = size_t(nrows) + 1, fewest_at = it;
@@ -547,6 +548,9 @@ SparseContactResult SparseContactSolver::solve(const std::vector<double> &load, 
       return result;
     }
     if (violating.size() < fewest_violating) fewest_violating = violating.size(), fewest_at = it;
+    // A crawl is progress too (crawling, dual_qp.hpp).
+    sizes.push_back(n_active);
+    if (crawling(sizes, violating.size(), patience)) fewest_at = it;
     if (it - fewest_at >= patience) {
       if (!from_gaps) break;
       start_again_from_every_row(it);
