@@ -93,7 +93,8 @@ enum { MC_X = 1, MC_Y = 2, MC_XY = 3 }; /* component masks for mc_fix */
 enum {
   MC_OPTION_METHOD = 1,         /* int: MC_METHOD_*; default MC_METHOD_MORTAR */
   MC_OPTION_TOLERANCE = 2,      /* real: relative complementarity/equilibrium tolerance; default 1e-10 */
-  MC_OPTION_MAX_ITERATIONS = 3, /* int: active-set iterations before MC_ERROR_NOT_CONVERGED; default 200 */
+  MC_OPTION_MAX_ITERATIONS = 3, /* int: active-set iterations before MC_ERROR_NOT_CONVERGED; default 200,
+                                   or an eighth of the contact rows where that is more */
   MC_OPTION_ORDERING = 4,       /* int: MC_ORDERING_*; fill-reducing ordering; default MC_ORDERING_AUTO */
   MC_OPTION_Q1_INTEGRATION = 6, /* int: MC_Q1_*; default MC_Q1_FULL */
   MC_OPTION_CONTACT_NORMAL = 7, /* int: MC_NORMAL_*; default MC_NORMAL_NONMORTAR */

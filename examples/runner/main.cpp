@@ -260,8 +260,9 @@ void set_options(mc_model *m, const Scene &scene) {
   setup(m, mc_set_plane(m, scene.plane, scene.thickness), scene, "plane/thickness", "mc_set_plane");
   setup(m, mc_set_option_int(m, MC_OPTION_METHOD, s.method), scene, "solver.method", "mc_set_option_int");
   setup(m, mc_set_option_real(m, MC_OPTION_TOLERANCE, s.tolerance), scene, "solver.tolerance", "mc_set_option_real");
-  setup(m, mc_set_option_int(m, MC_OPTION_MAX_ITERATIONS, s.max_iterations), scene, "solver.max_iterations",
-        "mc_set_option_int");
+  if (s.max_iterations > 0)  // (0: not in the scene, the library's default)
+    setup(m, mc_set_option_int(m, MC_OPTION_MAX_ITERATIONS, s.max_iterations), scene, "solver.max_iterations",
+          "mc_set_option_int");
   setup(m, mc_set_option_int(m, MC_OPTION_CONTACT_NORMAL, s.contact_normal), scene, "solver.contact_normal",
         "mc_set_option_int");
   setup(m, mc_set_option_int(m, MC_OPTION_Q1_INTEGRATION, s.q1_integration), scene, "solver.q1_integration",

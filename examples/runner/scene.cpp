@@ -346,7 +346,7 @@ Pair parse_pair(const Value &v, int number, int n_bodies) {
 
 Solver parse_solver(const Value &v) {
   // Defaults: the library's (mortarcontact.h).
-  Solver s{MC_METHOD_MORTAR, 1e-10, 200, MC_NORMAL_NONMORTAR, MC_Q1_FULL, MC_ORDERING_AUTO, MC_SURFACE_SMOOTH, 40, 0,
+  Solver s{MC_METHOD_MORTAR, 1e-10, 0, MC_NORMAL_NONMORTAR, MC_Q1_FULL, MC_ORDERING_AUTO, MC_SURFACE_SMOOTH, 40, 0,
            MC_INTERFACE_AUTO, true, MC_MULTIPLIER_LINEAR, 0.0};
   if (!v.has("solver")) return s;
   Value o = v.child("solver");

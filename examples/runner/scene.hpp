@@ -69,7 +69,7 @@ struct Pair {
 struct Solver {
   int method;          // MC_METHOD_*
   double tolerance;
-  int max_iterations;
+  int max_iterations;  // 0: not given (the library's default)
   int contact_normal;  // MC_NORMAL_*
   int q1_integration;  // MC_Q1_*
   int ordering;        // MC_ORDERING_*

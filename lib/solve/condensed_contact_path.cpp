@@ -177,7 +177,7 @@ void Model::solve_condensed(std::vector<LoadSolve> &loads, DualQp &qp, std::vect
   const DualQpObserver observe = iteration_log(q);
   {
     Stopwatch watch(infos.t_contact);
-    result = solve_dual_qp(qp, options.tolerance, options.max_iterations, cs.last_active, observe);
+    result = solve_dual_qp(qp, options.tolerance, options.iteration_limit(q), cs.last_active, observe);
   }
   static const char *const outcome[] = {"solved", "loads not balanced", "floating body not held", "not converged"};
   progress(MC_LOG_PHASE, "active-set solve: %s, %d iterations, residual %.3g, %.3g s", outcome[int(result.outcome)],
@@ -200,7 +200,7 @@ void Model::solve_condensed(std::vector<LoadSolve> &loads, DualQp &qp, std::vect
     fail(MC_ERROR_NOT_CONVERGED,
          "the active-set iteration stopped after %d iterations (limit %d) with a relative complementarity "
          "violation of %.3g (tolerance %.3g)",
-         result.iterations, options.max_iterations, result.violation, options.tolerance);
+         result.iterations, options.iteration_limit(q), result.violation, options.tolerance);
   lambda = result.lambda;
   alpha = result.alpha;
   infos.complementarity = result.violation;

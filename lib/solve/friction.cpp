@@ -117,7 +117,7 @@ void Model::solve_condensed_friction(DualQp &qp, std::vector<double> &lambda, st
   const double start = now();
   {
     Stopwatch watch(infos.t_contact);
-    result = solve_friction_qp(qp, f, options.tolerance, options.max_iterations, cs.last_active, cs.friction_state,
+    result = solve_friction_qp(qp, f, options.tolerance, options.iteration_limit(cs.b_rows()), cs.last_active, cs.friction_state,
                                friction_log());
   }
   accept_friction(f, result, start, "", lambda, alpha);
@@ -165,7 +165,7 @@ void Model::accept_friction(const FrictionProblem &f, const FrictionResult &resu
     fail(MC_ERROR_NOT_CONVERGED,
          "the stick/slip iteration stopped after %d iterations (limit %d) with residuals %.3g (contact) and %.3g "
          "(friction), tolerance %.3g; rows still changing: %s",
-         result.iterations, options.max_iterations, result.violation, result.friction_violation, options.tolerance,
+         result.iterations, options.iteration_limit(cs.b_rows()), result.violation, result.friction_violation, options.tolerance,
          rows.empty() ? "none" : rows.c_str());
   }
   lambda = result.lambda, alpha = result.alpha;

@@ -2,6 +2,7 @@
 // solve, and its results. ids are 0-based here; the C API layer handles the index base.
 #pragma once
 #include "mortarcontact.h"
+#include <algorithm>
 #include "bodies/assembly.hpp"
 #include "contact/contact_geometry.hpp"
 #include "linalg/dual_qp.hpp"
@@ -171,7 +172,13 @@ struct ContactSystem {
 struct Options {
   int method = MC_METHOD_MORTAR;
   double tolerance = 1e-10;
-  int max_iterations = 200;
+  int max_iterations = 0;  // MC_OPTION_MAX_ITERATIONS; 0: not set (iteration_limit)
+  // The active-set (and stick/slip) iterations allowed on q contact rows: MC_OPTION_MAX_ITERATIONS
+  // where set, else 200, or q / 8 where that is more: a lift-off that spreads a row or two per
+  // iteration takes about q / 12 (docs/robustness.md, "A pulled part of a long strip": 215 at
+  // 2501 rows), and a wandering iteration is cut short by its patience, not by this limit.
+  int iteration_limit(int q) const { return max_iterations > 0 ? max_iterations : std::max(kIterationLimit, q / 8); }
+  static constexpr int kIterationLimit = 200;
   int ordering = MC_ORDERING_AUTO;
   int q1_integration = MC_Q1_FULL;
   int contact_normal = MC_NORMAL_NONMORTAR;

@@ -698,7 +698,7 @@ bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lam
   SparseContactResult result;
   cs.solver.set_threads(threads_);  // its solves split over two threads where the bodies' work is
   try {
-    result = cs.solver.solve(load, target, start_set, options.tolerance, options.max_iterations, hold_modes, observe,
+    result = cs.solver.solve(load, target, start_set, options.tolerance, options.iteration_limit(q), hold_modes, observe,
                              initial_gap);
   } catch (const Error &error) {
     if (error.status() != MC_ERROR_SINGULAR) throw;
@@ -728,7 +728,7 @@ bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lam
     fail(MC_ERROR_NOT_CONVERGED,
          "the active-set iteration of the sparse interface solver stopped after %d iterations (limit %d) with a "
          "relative complementarity violation of %.3g (tolerance %.3g)",
-         result.iterations, options.max_iterations, result.violation, options.tolerance);
+         result.iterations, options.iteration_limit(q), result.violation, options.tolerance);
   // 4. The answer in the model's terms (with a partial B, also w and its equations' multipliers).
   lambda.assign(result.lambda.begin(), result.lambda.begin() + q);
   if (cs.b_partial) {

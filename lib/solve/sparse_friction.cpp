@@ -86,7 +86,7 @@ void Model::solve_sparse_friction(std::vector<LoadSolve> &loads, std::vector<dou
   };
   FrictionResult result;
   try {
-    result = iterate_friction_states(f, solve_states, scales, options.tolerance, options.max_iterations, start_active,
+    result = iterate_friction_states(f, solve_states, scales, options.tolerance, options.iteration_limit(cs.b_rows()), start_active,
                                      cs.friction_state, friction_log());
   } catch (const Error &error) {
     if (error.status() != MC_ERROR_SINGULAR) throw;
