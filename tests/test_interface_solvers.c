@@ -1611,19 +1611,26 @@ static double weighed_window_load(mc_model *m, const sc_mesh *top, double length
    counts as progress (crawling, dual_qp.hpp): 48 (docs/robustness.md, "A pulled part of a long
    strip"). On each path: the solve stays on it, converges in at most 60 iterations, the contact
    forces carry the load, and the two paths' pressures agree. */
+/* The pulled strip's pressures on body 1's top edges (p on its first third, -p/2 on its middle
+   third, 2p on its last); returns the applied force. */
+static double pulled_strip_pressures(const sc_mesh *top, int nx, double p, double *pressure_of_edge) {
+  double applied = 0;
+  for (mc_int e = 0; e < top->n_side_edges[SC_TOP]; ++e) {
+    const mc_int a = top->side_edges[SC_TOP][2 * e], c = top->side_edges[SC_TOP][2 * e + 1];
+    const double middle = 0.5 * (top->xy[2 * a] + top->xy[2 * c]), third = 0.1 * nx / 3;
+    pressure_of_edge[e] = middle < third ? p : middle < 2 * third ? -0.5 * p : 2 * p;
+    applied += pressure_of_edge[e] * fabs(top->xy[2 * c] - top->xy[2 * a]);
+  }
+  return applied;
+}
 START_TEST(a_pulled_strip_lifts_off_in_a_crawl) {
   const int nx = 500;
   const double p = 0.01;
   sc_mesh b[2];
   strips_mesh(b, nx);
   const mc_int n = b[0].n_side_edges[SC_TOP];
-  double *pressure_of_edge = malloc(sizeof(double) * (size_t)n), applied = 0;
-  for (mc_int e = 0; e < n; ++e) {
-    const mc_int a = b[0].side_edges[SC_TOP][2 * e], c = b[0].side_edges[SC_TOP][2 * e + 1];
-    const double middle = 0.5 * (b[0].xy[2 * a] + b[0].xy[2 * c]), third = 0.1 * nx / 3;
-    pressure_of_edge[e] = middle < third ? p : middle < 2 * third ? -0.5 * p : 2 * p;
-    applied += pressure_of_edge[e] * fabs(b[0].xy[2 * c] - b[0].xy[2 * a]);
-  }
+  double *pressure_of_edge = malloc(sizeof(double) * (size_t)n);
+  const double applied = pulled_strip_pressures(&b[0], nx, p, pressure_of_edge);
   const int paths[2] = {MC_INTERFACE_CONDENSED, MC_INTERFACE_SPARSE};
   double *pressure[2] = {NULL, NULL};
   mc_int q = 0;
@@ -1680,13 +1687,8 @@ START_TEST(a_long_pulled_strip_within_the_default_limit) {
   sc_mesh b[2];
   strips_mesh(b, nx);
   const mc_int n = b[0].n_side_edges[SC_TOP];
-  double *pressure_of_edge = malloc(sizeof(double) * (size_t)n), applied = 0;
-  for (mc_int e = 0; e < n; ++e) {
-    const mc_int a = b[0].side_edges[SC_TOP][2 * e], c = b[0].side_edges[SC_TOP][2 * e + 1];
-    const double middle = 0.5 * (b[0].xy[2 * a] + b[0].xy[2 * c]), third = 0.1 * nx / 3;
-    pressure_of_edge[e] = middle < third ? p : middle < 2 * third ? -0.5 * p : 2 * p;
-    applied += pressure_of_edge[e] * fabs(b[0].xy[2 * c] - b[0].xy[2 * a]);
-  }
+  double *pressure_of_edge = malloc(sizeof(double) * (size_t)n);
+  const double applied = pulled_strip_pressures(&b[0], nx, p, pressure_of_edge);
   mc_model *m = strips_model(b, MC_INTERFACE_AUTO);
   OK(mc_add_pressure(m, 1, n, b[0].side_edges[SC_TOP], pressure_of_edge));
   OK(mc_solve(m));
