@@ -159,6 +159,12 @@ private:
   void apply_ct(const std::vector<double> &y, std::vector<double> &out) const;  // out = C_A^T y
   void apply_dt(const std::vector<double> &y, std::vector<double> &out) const;  // out = D_A^T y (coupling_)
 
+  // P's weights: row r gets kAugmentation / sigma_r, sigma_r = sum_i c_ri^2 / H_ii (a Jacobi
+  // estimate of the row's local compliance c_r H^-1 c_r^T). Then P S_P's local eigenvalues are
+  // about kAugmentation / (1 + kAugmentation), and CG converges in a few steps; larger values
+  // cost conditioning of H_P, which the refinement must then win back (chosen by measurement,
+  // docs/notes/interface-solver.md).
+  static constexpr double kAugmentation = 1e3;
   const SparseContactStructure *structure_ = nullptr;
   int position(int i, int j) const;  // of entry (min(i, j), max(i, j)) in matrix_
   SymmetricCsc matrix_;              // H_P's pattern (H + C^T C), values of the factorized set
