@@ -40,6 +40,12 @@ constexpr double kStartGap = 0.1;
 // 1e-12, 20 to 1e-10, 17 to 1e-8, and 42 to 1e-6 (the final set's refinement then starts far
 // off), with the same sets and iterations at each (docs/notes/interface-solver.md, "Session 20").
 constexpr double kJudgingTolerance = 1e-8;
+// The refinement stops at a relative KKT residual this small: each of x's entries is then
+// rounded to double as it is stored, and a residual of x rounded is up to half an epsilon of
+// the row's terms; a further step cannot halve it but by chance (on the strips, the load history
+// and Westergaard, every step past 7e-17 to 8e-17 was thrown away, at 4 Krylov solves and two
+// residuals each: 6 % to 14 % of a solve; docs/notes/interface-solver.md, "Session 23").
+constexpr double kRoundOffResidual = 0.5 * 2.220446049250313e-16;
 
 }  // namespace
 
@@ -94,7 +100,7 @@ void SparseContactSolver::run_in_pairs(const std::function<void(size_t)> &task, 
 
 double SparseContactSolver::solve_on_active_set(const std::vector<double> &load, const std::vector<double> &target,
                                               std::vector<double> &x, std::vector<double> &lambda,
-                                              SparseContactResult &result, bool refine) const {
+                                              SparseContactResult &result, KktGoal goal) const {
   const SparseContactStructure &s = *structure_;
   const int nrows = s.rows();
   auto krylov = [&](const std::vector<double> &f, const std::vector<double> &t, std::vector<double> &xx,
@@ -103,8 +109,8 @@ double SparseContactSolver::solve_on_active_set(const std::vector<double> &load,
     else gmres(f, t, xx, ll, result);
   };
   // A set on the way is judged by the signs of its forces and gaps: to kJudgingTolerance.
-  krylov(load, target, x, lambda, refine ? 0.0 : kJudgingTolerance);
-  if (!refine) return -1;  // not measured
+  if (goal != KktGoal::refine) krylov(load, target, x, lambda, goal == KktGoal::judge ? kJudgingTolerance : 0.0);
+  if (goal == KktGoal::judge) return -1;  // not measured
   // Iterative refinement on the KKT system's own residuals (F - H x - C_A^T lambda, t_A - C_A x):
   // CG's recursive residual drifts from the true one by round-off of H_P's conditioning.
   // The residuals are summed in long double (x87 extended precision, 64-bit mantissa, where the
@@ -166,7 +172,7 @@ double SparseContactSolver::solve_on_active_set(const std::vector<double> &load,
   };
   std::vector<double> rf, rt;
   double current = residuals(rf, rt);
-  for (int step = 0; refine && step < kMaxRefinements && current > 1e-18; ++step) {
+  for (int step = 0; step < kMaxRefinements && current > kRoundOffResidual; ++step) {
     std::vector<double> dx(s.n_unknowns, 0.0), dl(nrows, 0.0);
     krylov(rf, rt, dx, dl, 0.0);
     std::vector<double> x_new(x), l_new(lambda);
@@ -286,17 +292,17 @@ SparseContactResult SparseContactSolver::solve(const std::vector<double> &load, 
     // The sets on the way are judged by the Krylov solve alone (the signs of forces and gaps,
     // far above its error); refined only a set that looks final, then judged again. On Hertz
     // forced onto this path refining every set took 86 of 125 CG steps.
-    solve_on_active_set(load, target, x, lambda, result, false);
+    solve_on_active_set(load, target, x, lambda, result, KktGoal::judge);
     std::vector<int> violating;
     double lambda_ref = 0, violation = complementarity(target, active, x, lambda, gap, violating, lambda_ref);
     if (violating.empty()) {
-      const double refined = solve_on_active_set(load, target, x, lambda, result, true);
+      const double refined = solve_on_active_set(load, target, x, lambda, result, KktGoal::refine);
       if ((!update_.rows.empty() || modifications_ > 0) && refined > kUpdateResidual) {
         // The answer came through a low-rank update and its refinement stopped short of
         // round-off (an ill-conditioned H_P: a long strip whose free part only the contact zone
         // holds): its own factorization, so that the answer is that of a first solve.
         factorize_afresh(active, result);
-        solve_on_active_set(load, target, x, lambda, result, true);
+        solve_on_active_set(load, target, x, lambda, result, KktGoal::refine);
       }
       violation = complementarity(target, active, x, lambda, gap, violating, lambda_ref);
     }
@@ -325,7 +331,7 @@ SparseContactResult SparseContactSolver::solve(const std::vector<double> &load, 
       // is 1e-16 of either sign: test_interface_solvers' weakly active nodes) the flips follow
       // the signs of round-off and may come back: a set within the tolerance asked for ends the
       // iteration, refined as a final one; else the condensed path takes over.
-      solve_on_active_set(load, target, x, lambda, result, true);
+      solve_on_active_set(load, target, x, lambda, result, KktGoal::refine);
       result.violation = complementarity(target, active, x, lambda, gap, violating, lambda_ref);
       if (result.violation <= tolerance) {
         result.x = std::move(x), result.lambda = std::move(lambda), result.active = active;
@@ -364,7 +370,7 @@ void SparseContactSolver::solve_rows(const std::vector<double> &load, const std:
   coupling_ = coupling;
   x.assign(s.n_unknowns, 0.0);
   lambda.resize(s.rows(), 0.0);
-  solve_on_active_set(load, target, x, lambda, result);
+  solve_on_active_set(load, target, x, lambda, result, KktGoal::exact);
   coupling_.clear();
 }
 

@@ -140,12 +140,16 @@ private:
   double modify_seconds(const std::vector<char> &from, int modifications, const std::vector<char> &to);
   // v = H_P^-1 v for the rows factorized_: the factor's solve, then the update's correction.
   void apply_inverse(std::vector<double> &v, SparseContactResult &result) const;
-  // The exact solution of the KKT system on the factorized active set, from lambda's start.
-  // With refine: then refined on the KKT residuals; returns the relative residual reached (-1
-  // without refine: not measured).
+  // The KKT system on the factorized active set, solved as `goal` says: `judge`, by a Krylov
+  // solve from lambda's start to kJudgingTolerance (a set on the way); `exact`, by a Krylov solve
+  // to round-off, then refined on the KKT residuals; `refine`, refined from x and lambda as they
+  // are (a judged or refined answer of this set: the refinement's first step takes it from there
+  // to round-off, where a Krylov solve first would only take it part of the way). Returns the
+  // relative residual reached (-1 when judged: not measured).
+  enum class KktGoal { judge, exact, refine };
   double solve_on_active_set(const std::vector<double> &load, const std::vector<double> &target,
                              std::vector<double> &x, std::vector<double> &lambda, SparseContactResult &result,
-                             bool refine = true) const;
+                             KktGoal goal) const;
   double complementarity(const std::vector<double> &target, const std::vector<char> &active,
                          const std::vector<double> &x, const std::vector<double> &lambda, std::vector<double> &gap,
                          std::vector<int> &violating, double &lambda_ref) const;
