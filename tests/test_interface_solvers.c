@@ -1256,14 +1256,17 @@ END_TEST
    re-solve at twice the load update the factor instead of refactorizing (the log's "N factor
    updates", summed, must be positive), and the re-solve's answer is a fresh model's at that load
    (pressures and displacements within TOL). */
-/* A number the log names: the sum, over the messages, of the number just before `marker`. */
+/* A number the log names: the sum, over the messages, of the number just before `marker`; and
+   the active rows of each solve's first active-set iteration, out of how many. */
 typedef struct {
   const char *marker;
   long count;
+  int first_active, rows;
 } logged_count;
 static void count_logged(void *user, mc_log_level level, const char *message) {
   (void)level;
   logged_count *c = (logged_count *)user;
+  sscanf(message, "active-set iteration 1: %d active of %d", &c->first_active, &c->rows);
   const char *at = strstr(message, c->marker);
   if (!at) return;
   while (at > message && at[-1] >= '0' && at[-1] <= '9') --at;
@@ -1274,7 +1277,7 @@ START_TEST(factor_updates_are_exact) {
   run r[2];
   answer a[2];
   memset(r, 0, sizeof r), memset(a, 0, sizeof a);
-  logged_count updates = {" factor updates", 0};
+  logged_count updates = {" factor updates", 0, 0, 0};
   for (int k = 0; k < 2; ++k) {
     b_hertz(&r[k], 4);  /* disc body 1, non-mortar normals, dual mortar, smooth */
     mc_model *m = r[k].m;
@@ -1679,12 +1682,13 @@ END_TEST
    `min_counted` of what the log counts before `marker`; the contact forces carry the load, and
    the last step's pressures are those of a fresh handle solved for its load alone (1e-10 p). */
 static void strips_load_history(int nx, int steps, double (*load)(mc_model *, const sc_mesh *, double, int),
-                                const char *marker, int64_t max_factorizations, long min_counted, const char *label) {
+                                const char *marker, int64_t max_factorizations, long min_counted, const char *label,
+                                int remembers_a_poor_start) {
   const double length = 0.1 * nx;
   sc_mesh b[2];
   strips_mesh(b, nx);
   mc_model *m = strips_model(b, MC_INTERFACE_SPARSE);
-  logged_count counted = {marker, 0};
+  logged_count counted = {marker, 0, 0, 0};
   OK(mc_set_log_callback(m, count_logged, &counted));
   mc_int q = 0;
   for (int step = 0; step <= steps; ++step) {
@@ -1703,6 +1707,29 @@ static void strips_load_history(int nx, int steps, double (*load)(mc_model *, co
       ck_assert_int_le(factorizations, max_factorizations);
       ck_assert_int_ge(counted.count - before, min_counted);
     }
+    if (remembers_a_poor_start && step > 0) {
+      printf("%s, step %d: began from %d active rows of %d\n", label, step, counted.first_active, counted.rows);
+      if (step == 1) ck_assert_int_lt(counted.first_active, counted.rows);  /* its last set, a poor start */
+      else ck_assert_int_eq(counted.first_active, counted.rows);            /* every row: remembered */
+    }
+  }
+  if (remembers_a_poor_start) {
+    /* The same load again: a re-solve that still begins from every row (it cannot tell) and ends
+       where it began, the last set, which clears the memory; so the next one begins from its
+       last set, which is the answer: one iteration. */
+    for (int again = 0; again < 2; ++again) {
+      load(m, &b[0], length, steps);
+      OK(mc_solve(m));
+      int64_t iterations = 0;
+      OK(mc_get_info_int(m, MC_INFO_ITERATIONS, &iterations));
+      printf("%s, the same load again (%d): began from %d active rows of %d, %ld iterations\n", label, again,
+             counted.first_active, counted.rows, (long)iterations);
+      if (again == 0) ck_assert_int_eq(counted.first_active, counted.rows);
+      else {
+        ck_assert_int_lt(counted.first_active, counted.rows);
+        ck_assert_int_eq(iterations, 1);
+      }
+    }
   }
   double *last = malloc(sizeof(double) * (size_t)q), *fresh = malloc(sizeof(double) * (size_t)q);
   OK(mc_get_contact_pressure(m, last));
@@ -1719,7 +1746,7 @@ static void strips_load_history(int nx, int steps, double (*load)(mc_model *, co
   sc_mesh_free(&b[0]), sc_mesh_free(&b[1]);
 }
 START_TEST(load_steps_build_updates_on_updates) {
-  strips_load_history(400, 3, weighed_window_load, " factor updates", 3, 2, "weighed strip");
+  strips_load_history(400, 3, weighed_window_load, " factor updates", 3, 2, "weighed strip", 0);
 }
 END_TEST
 
@@ -1734,10 +1761,14 @@ END_TEST
    steps after the first factorize nothing and modify the factor (before: one factorization a
    step, of the wild set; before session 19: 3 factorizations and 2 low-rank updates; measured;
    from the third step on every third step factorizes afresh, kMaxModifications), and the last
-   step's pressures are those of a fresh handle solved for its load alone. */
+   step's pressures are those of a fresh handle solved for its load alone. The poor start is
+   remembered (SparseContactSolver::begin_from_every_row_): the second step begins from every row
+   without judging its last set first (a solve less a step), and the same load solved again
+   clears the memory (the answer's set is its start): the re-solve after it begins from its last
+   set and is done in one iteration. */
 START_TEST(load_steps_modify_the_factor_in_place) {
   strips_load_history(4000, 2, strip_window_load, " of the updates modified the factor in place", 0, 1,
-                      "strips at 4001 nodes");
+                      "strips at 4001 nodes", 1);
 }
 END_TEST
 

@@ -2,6 +2,8 @@
 #include "support/error.hpp"
 #include "support/stopwatch.hpp"
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <pthread.h>
 #include <set>
@@ -171,7 +173,9 @@ double SparseContactSolver::solve_on_active_set(const std::vector<double> &load,
     return double(std::max(worst / std::max(largest, 1e-300L), gap_worst / std::max(gap_size, 1e-300L)));
   };
   std::vector<double> rf, rt;
+  double TR=now();
   double current = residuals(rf, rt);
+  if (getenv("TRACE")) fprintf(stderr,"TRACE   refine start: residual %.2e (residual %.3f s) cg so far %d\n",current,now()-TR,result.cg_steps);
   for (int step = 0; step < kMaxRefinements && current > kRoundOffResidual; ++step) {
     std::vector<double> dx(s.n_unknowns, 0.0), dl(nrows, 0.0);
     krylov(rf, rt, dx, dl, 0.0);
@@ -181,6 +185,7 @@ double SparseContactSolver::solve_on_active_set(const std::vector<double> &load,
     std::swap(x, x_new), std::swap(lambda, l_new);
     std::vector<double> rf_new, rt_new;
     const double refined = residuals(rf_new, rt_new);
+    if (getenv("TRACE")) fprintf(stderr,"TRACE   refine step %d: residual %.2e cg so far %d t %.3f\n",step,refined,result.cg_steps,now()-TR);
     if (!(refined < 0.5 * current)) {  // no gain: keep what we had
       std::swap(x, x_new), std::swap(lambda, l_new);
       break;
@@ -264,6 +269,17 @@ SparseContactResult SparseContactSolver::solve(const std::vector<double> &load, 
   }
   int release_at = started ? 2 : 1;  // the iteration after which release_slack_rows applies
   bool restarted = false;  // from every row, once (a re-solve's first step proposed a set far from both factors)
+  // A re-solve after one whose start was poor begins from every row (begin_from_every_row_).
+  const std::vector<char> start_set = active;
+  const bool begun_from_every_row = warm_start && begin_from_every_row_ && aside_holds_every_row();
+  if (begun_from_every_row) active = aside_set_, restarted = true, release_at = 1;
+  bool sent_to_every_row = false;  // by the first step's proposal (below)
+  // What the next re-solve learns from this one's start (begin_from_every_row_).
+  auto judge_the_start = [&]() {
+    begin_from_every_row_ =
+        warm_start && (sent_to_every_row || (begun_from_every_row && far_apart(start_set, active)));
+  };
+  begin_from_every_row_ = false;
   std::vector<double> x(s.n_unknowns, 0.0), lambda(nrows, 0.0), gap(nrows, 0.0);
   std::set<std::vector<char>> seen;
   size_t fewest_violating = size_t(nrows) + 1;
@@ -288,7 +304,9 @@ SparseContactResult SparseContactSolver::solve(const std::vector<double> &load, 
       result.cycled = it > 1;
       return result;
     }
+    double T0=now(); int f0=result.factorizations,u0=result.updates,m0=result.modifications,c0=result.cg_steps;
     if (factorized_ != active) factorize(active, result);
+    double T1=now();
     // The sets on the way are judged by the Krylov solve alone (the signs of forces and gaps,
     // far above its error); refined only a set that looks final, then judged again. On Hertz
     // forced onto this path refining every set took 86 of 125 CG steps.
@@ -307,8 +325,10 @@ SparseContactResult SparseContactSolver::solve(const std::vector<double> &load, 
       violation = complementarity(target, active, x, lambda, gap, violating, lambda_ref);
     }
     result.violation = violation;
+    if (getenv("TRACE")) fprintf(stderr,"TRACE it %d active %d viol %zu factor %.3f solve %.3f f%d u%d m%d cg%d\n",it,n_active,violating.size(),T1-T0,now()-T1,result.factorizations-f0,result.updates-u0,result.modifications-m0,result.cg_steps-c0);
     if (observe) observe({it, n_active, int(violating.size()), violation, true});
     if (violating.empty()) {
+      judge_the_start();
       result.x = std::move(x), result.lambda = std::move(lambda), result.active = active;
       result.outcome = violation <= tolerance ? SparseContactOutcome::solved : SparseContactOutcome::not_converged;
       return result;
@@ -334,6 +354,7 @@ SparseContactResult SparseContactSolver::solve(const std::vector<double> &load, 
       solve_on_active_set(load, target, x, lambda, result, KktGoal::refine);
       result.violation = complementarity(target, active, x, lambda, gap, violating, lambda_ref);
       if (result.violation <= tolerance) {
+        judge_the_start();
         result.x = std::move(x), result.lambda = std::move(lambda), result.active = active;
         result.outcome = SparseContactOutcome::solved;
         return result;
@@ -349,7 +370,7 @@ SparseContactResult SparseContactSolver::solve(const std::vector<double> &load, 
     // near the last step's, whose factor is then modified. A factorization less per load step.
     if (warm_start && it == 1 && !restarted && aside_holds_every_row() && next != aside_set_ &&
         needs_factorization(next)) {
-      next = aside_set_, restarted = true, release_at = it + 1;
+      next = aside_set_, restarted = sent_to_every_row = true, release_at = it + 1;
       seen.insert(next);
     }
     active = std::move(next);

@@ -90,7 +90,7 @@ public:
   double split_top_share() const { return cholesky_.split_top_share(); }
   int split_factorizations() const { return cholesky_.split_factorizations(); }
   // Frees the pattern and the factor.
-  void release() { cholesky_.release(), matrix_ = SymmetricCsc{}, inverse_order_.clear(), block_position_.clear(), factorized_.clear(), factor_set_.clear(), update_ = {}, modifications_ = 0, path_.clear(), aside_set_.clear(); }
+  void release() { cholesky_.release(), matrix_ = SymmetricCsc{}, inverse_order_.clear(), block_position_.clear(), factorized_.clear(), factor_set_.clear(), update_ = {}, modifications_ = 0, path_.clear(), aside_set_.clear(), begin_from_every_row_ = false; }
   // CHOLMOD's estimates from the analysis, for the automatic choice of path.
   double factor_flops() const { return flops_; }
   long factor_nnz() const { return cholesky_.factor_nnz(); }
@@ -213,6 +213,14 @@ private:
   // Whether H_P of `set` would take a numeric factorization (factorize(): neither factor at hand
   // modified, nor the last one updated, at under half a factorization's cost).
   bool needs_factorization(const std::vector<char> &set);
+  // Whether `to` is more rows away from `from` than a low-rank update of from's factor takes.
+  bool far_apart(const std::vector<char> &from, const std::vector<char> &to);
+  // The last re-solve's start (its previous answer's set) was a poor one: its first step proposed
+  // a set only a factorization reaches, or it began from every row and ended far from that start.
+  // The next re-solve then begins from every row (the factor aside) instead of judging a start
+  // that would send it there after a solve (a load moving along the strips: every step's first
+  // iteration, bench/moving_load). Cleared by a re-solve that ends near its start.
+  bool begin_from_every_row_ = false;
   void update_rows(const std::vector<char> &active, std::vector<int> &rows, std::vector<int> &kept, int &fresh) const;
   bool update_fits(int k, int fresh) const;
   std::vector<double> path_;         // each unknown's elimination-tree path in L (entries)
