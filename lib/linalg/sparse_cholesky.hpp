@@ -48,6 +48,17 @@ public:
   // positive definite to working precision (a pivot <= 0 or not finite): then it is no factor of
   // anything useful and the caller factorizes afresh.
   bool modify(bool add, int k, const int *colptr, const int *rows, const double *values);
+  // The factor of a matrix that differs from the factorized one in the columns `changed` (a's
+  // numbering) only, by computing afresh the rows of L on their elimination-tree paths (no
+  // other row of L changes: a row depends on A's column and on its descendants' rows), from
+  // a_pp as factorize_ordered takes it; LL^T or LDL^T as the factor is (simplicial only). What
+  // it costs does not grow with the number of rows of C that changed, as a modification's
+  // does: only with their paths' union (paths_entries). Returns false if the factor is not one
+  // this can recompute or a pivot is not positive: then it is no factor, and the caller
+  // factorizes afresh (sparse_cholesky_paths.cpp).
+  bool refactorize_paths(const SymmetricCsc &a_pp, const std::vector<int> &changed);
+  // The entries of L in the columns on those paths (HUGE_VAL where there is no simplicial factor).
+  double paths_entries(const std::vector<int> &changed);
   bool supernodal() const;
   // A second numeric factor of the same analysis, kept aside (simplicial analyses only: their
   // symbolic part is a few arrays of n): keep_aside() moves the factor aside (freeing the one
@@ -116,6 +127,7 @@ private:
   bool analyze_in_halves(const SymmetricCsc &a);
   void factorize_rows(cholmod_sparse_struct &upper);
   void report_failed_pivot(int n);
+  std::vector<int> changed_in_factor_order(const std::vector<int> &changed);
   int failed_unknown_ = -1;
 };
 

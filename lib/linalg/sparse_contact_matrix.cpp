@@ -13,7 +13,7 @@ namespace mc {
 void SparseContactSolver::analyze(const SparseContactStructure &s, int ordering) {
   const double start = now();
   structure_ = &s;
-  factorized_.clear();
+  factorized_.clear(), values_set_.clear(), column_rows_start_.clear(), column_rows_.clear();
   const int n = s.n_unknowns, nrows = s.rows();
   // 1. The pattern of H + C^T C (upper triangle by columns), column by column: H's column j and,
   //    for each row r that names j, r's columns up to j; a marker keeps each row index once.
@@ -190,6 +190,17 @@ void SparseContactSolver::factorize(const std::vector<char> &active, SparseConta
   }
   // A simplicial factor is modified in place (a few milliseconds for a few rows, against a solve
   // per row for the low-rank update); a supernodal one is updated (sparse_factor_update.cpp).
+  // A simplicial factor in the matrix's order: the rows on the changed columns' paths computed
+  // afresh where that costs less than a modification (many rows changed, near each other: their
+  // paths share most of their columns), then a modification in place (a few rows), then the
+  // low-rank update (a supernodal factor); else a factorization.
+  if (paths_seconds(active) < modify_seconds(factor_set_, modifications_, active)) {
+    if (refactorize_paths(active, result)) return;
+    if (factor_set_.empty()) {  // (the factor was touched, and is no factor now)
+      factorize_afresh(active, result);
+      return;
+    }
+  }
   if (modify_factor(active, result) || update_from_factor(active, result)) return;
   factorize_afresh(active, result);
 }
@@ -238,7 +249,7 @@ void SparseContactSolver::factorize_afresh(const std::vector<char> &active, Spar
   factorized_.clear(), factor_set_.clear(), update_ = {}, modifications_ = 0;
   if (inverse_order_.empty()) cholesky_.factorize(matrix_);
   else cholesky_.factorize_ordered(matrix_);
-  factorized_ = factor_set_ = active;
+  factorized_ = factor_set_ = values_set_ = active;
   result.factorizations++;
   result.t_factor += now() - start;
 }

@@ -73,6 +73,7 @@ struct SparseContactResult {
   int factorizations = 0;      // numeric factorizations of H_P in this solve
   int updates = 0;             // active sets solved through a low-rank update of the last factor instead
   int modifications = 0;       // active sets whose factor was the last one modified in place
+  int path_refactorizations = 0;  // of those, by computing its rows on the changed paths afresh
   int cg_steps = 0;            // conjugate-gradient steps (each: one forward and one backward solve)
   double violation = 0;        // largest relative violation of complementarity (as MC_INFO_COMPLEMENTARITY)
   double t_factor = 0, t_solve = 0;
@@ -90,7 +91,7 @@ public:
   double split_top_share() const { return cholesky_.split_top_share(); }
   int split_factorizations() const { return cholesky_.split_factorizations(); }
   // Frees the pattern and the factor.
-  void release() { cholesky_.release(), matrix_ = SymmetricCsc{}, inverse_order_.clear(), block_position_.clear(), factorized_.clear(), factor_set_.clear(), update_ = {}, modifications_ = 0, path_.clear(), aside_set_.clear(), begin_from_every_row_ = false; }
+  void release() { cholesky_.release(), matrix_ = SymmetricCsc{}, inverse_order_.clear(), block_position_.clear(), factorized_.clear(), factor_set_.clear(), update_ = {}, modifications_ = 0, path_.clear(), aside_set_.clear(), begin_from_every_row_ = false, values_set_.clear(), column_rows_start_.clear(), column_rows_.clear(); }
   // CHOLMOD's estimates from the analysis, for the automatic choice of path.
   double factor_flops() const { return flops_; }
   long factor_nnz() const { return cholesky_.factor_nnz(); }
@@ -134,6 +135,16 @@ private:
   bool update_from_factor(const std::vector<char> &active, SparseContactResult &result);
   void factorize_afresh(const std::vector<char> &active, SparseContactResult &result);  // never an update
   bool modify_factor(const std::vector<char> &active, SparseContactResult &result);
+  // H_P of `active` from the factor at hand, its rows on the paths of the columns that the
+  // differing rows touch computed afresh (SparseCholesky::refactorize_paths); matrix_'s values
+  // brought to `active` first. False: not done (the factor is then factorized afresh if it was
+  // touched).
+  bool refactorize_paths(const std::vector<char> &active, SparseContactResult &result);
+  // What refactorize_paths to `to` would take (seconds, kSecondsPerPathEntry), HUGE_VAL where it
+  // is not done or would cost more than half a factorization (as a modification).
+  double paths_seconds(const std::vector<char> &to);
+  // The columns (unknowns) that the rows where `to` differs from `from` touch.
+  std::vector<int> columns_of_differing_rows(const std::vector<char> &from, const std::vector<char> &to) const;
   // What modifying the factor of the rows `from` (modified `modifications` times since its
   // factorization) into that of `to` would take (seconds, from measured rates; HUGE_VAL where it
   // is not done: a supernodal or small factor, or one modified too often).
@@ -176,6 +187,11 @@ private:
   // position of unknown i (empty: matrix_ in the unknowns' own order), block_position_ the
   // place in matrix_ of each entry of H's blocks (in add_blocks_of_h's order).
   std::vector<int> inverse_order_, block_position_;
+  // The active set whose rows' terms matrix_'s values hold (set by a factorization afresh; a
+  // modification leaves the values as they were, refactorize_paths brings them to its set).
+  std::vector<char> values_set_;
+  void set_values(const std::vector<char> &active);  // matrix_'s values of `active` (refactorize_paths)
+  std::vector<int> column_rows_start_, column_rows_;  // C by columns: each unknown's rows (set_values)
   void order_as_factor();
   void add_blocks_of_h();
   std::vector<double> weight_;       // P, one per row

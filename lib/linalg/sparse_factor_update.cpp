@@ -52,6 +52,14 @@ constexpr double kModifyShare = 0.5;
 // to 7e-8 there: the problem's own round-off). Past this many modifications the factor is
 // computed afresh: 8e-12 after 10 steps (docs/notes/interface-solver.md, "Session 19").
 constexpr int kMaxModifications = 12;
+// Computing afresh the rows of L on the elimination-tree paths of the columns that changed
+// (SparseCholesky::refactorize_paths) costs about this much per entry of L on those paths:
+// 70 to 80 ns on the strips at 4001 and 16001 contact nodes (1.2 to 6.2 million entries, one
+// thread; a row's up-looking solve reads its columns' entries above it, so the work is more
+// than the entries themselves). A modification's cost grows with the rows that changed, this
+// one with their paths' union: a load step's 326 rows at 16001 nodes are 1.1 million entries
+// (0.08 s) against a modification of 0.36 s; two rows, 0.67 million (0.05 s) against 0.007 s.
+constexpr double kSecondsPerPathEntry = 75e-9;
 }  // namespace
 
 // The rows where `active` differs from the factor's set, and for each the column of the update
@@ -97,6 +105,14 @@ bool SparseContactSolver::needs_factorization(const std::vector<char> &set) {
 // More rows apart than a low-rank update of from's factor would take (a modification's estimate
 // is no measure here: on the strips under a moving load, 320 rows estimated under half a
 // factorization took a whole one).
+double SparseContactSolver::paths_seconds(const std::vector<char> &to) {
+  if (inverse_order_.empty() || factor_set_.size() != to.size() || values_set_.size() != to.size() ||
+      !measured_costs() || cholesky_.supernodal() || modifications_ >= kMaxModifications)
+    return HUGE_VAL;
+  const double seconds = cholesky_.paths_entries(columns_of_differing_rows(factor_set_, to)) * kSecondsPerPathEntry;
+  return seconds <= kModifyShare * flops_ * kSecondsPerFlopSimplicial ? seconds : HUGE_VAL;
+}
+
 bool SparseContactSolver::far_apart(const std::vector<char> &from, const std::vector<char> &to) {
   const SparseContactStructure &s = *structure_;
   int k = 0;
@@ -204,6 +220,96 @@ bool SparseContactSolver::modify_factor(const std::vector<char> &active, SparseC
   factorized_ = factor_set_ = active;
   modifications_++;
   result.modifications++;
+  return true;
+}
+
+std::vector<int> SparseContactSolver::columns_of_differing_rows(const std::vector<char> &from,
+                                                                const std::vector<char> &to) const {
+  const SparseContactStructure &s = *structure_;
+  std::vector<int> columns;
+  std::vector<char> seen(size_t(s.n_unknowns), 0);
+  for (int r = 0; r < s.rows(); ++r)
+    if (s.row_is_inequality[r] && bool(from[r]) != bool(to[r]))
+      for (int p = s.row_start[r]; p < s.row_start[r + 1]; ++p)
+        if (!seen[size_t(s.column[p])]) seen[size_t(s.column[p])] = 1, columns.push_back(s.column[p]);
+  return columns;
+}
+
+// matrix_'s values of `active`, computed afresh where a row that differs from values_set_ has
+// terms, as factorize_afresh computes them (H's value, then each held row's P_r c_ri c_rj in the
+// rows' order: the same sums to the bit). Adding and taking away the differing rows' terms instead
+// left each such entry with the round-off of P_r c_r^2, some 10^3 times H's: the strips' load
+// history with the window jumping by its width (4001 contact nodes) then ended 3.5e-10 of p from
+// a fresh solve instead of 3e-12.
+void SparseContactSolver::set_values(const std::vector<char> &active) {
+  const SparseContactStructure &s = *structure_;
+  if (column_rows_start_.empty()) {  // C by columns (its rows' indices), once
+    column_rows_start_.assign(size_t(s.n_unknowns) + 1, 0);
+    for (int p = 0; p < s.row_start[s.rows()]; ++p) column_rows_start_[size_t(s.column[p]) + 1]++;
+    for (int c = 0; c < s.n_unknowns; ++c) column_rows_start_[size_t(c) + 1] += column_rows_start_[size_t(c)];
+    column_rows_.resize(size_t(s.row_start[s.rows()]));
+    std::vector<int> at(column_rows_start_.begin(), column_rows_start_.end() - 1);
+    for (int r = 0; r < s.rows(); ++r)
+      for (int p = s.row_start[r]; p < s.row_start[r + 1]; ++p) column_rows_[size_t(at[size_t(s.column[p])]++)] = r;
+  }
+  // The entries the differing rows have terms in, and the rows with terms there (those sharing
+  // a column with a differing row), ascending.
+  std::vector<char> marked(matrix_.values.size(), 0), row_marked(size_t(s.rows()), 0);
+  std::vector<int> entries, rows;
+  for (int r = 0; r < s.rows(); ++r) {
+    if (!s.row_is_inequality[r] || bool(active[r]) == bool(values_set_[r])) continue;
+    for (int p = s.row_start[r]; p < s.row_start[r + 1]; ++p) {
+      for (int q = s.row_start[r]; q < s.row_start[r + 1]; ++q) {
+        if (s.column[q] < s.column[p]) continue;
+        const int at = position(s.column[p], s.column[q]);
+        if (!marked[size_t(at)]) marked[size_t(at)] = 1, entries.push_back(at);
+      }
+      const int c = s.column[p];
+      for (int k = column_rows_start_[size_t(c)]; k < column_rows_start_[size_t(c) + 1]; ++k)
+        if (!row_marked[size_t(column_rows_[size_t(k)])]) row_marked[size_t(column_rows_[size_t(k)])] = 1, rows.push_back(column_rows_[size_t(k)]);
+    }
+  }
+  std::sort(rows.begin(), rows.end());
+  for (int at : entries) matrix_.values[size_t(at)] = 0;
+  size_t k = 0;  // H's entries in add_blocks_of_h's order (block_position_: matrix_ is in the factor's order)
+  for (size_t b = 0; b < s.blocks.size(); ++b)
+    for (int c = 0; c < s.blocks[b].n; ++c)
+      s.blocks[b].for_each_in_column(c, [&](int, double value) {
+        const int at = block_position_[k++];
+        if (marked[size_t(at)]) matrix_.values[size_t(at)] += value;
+      });
+  for (int r : rows) {
+    if (s.row_is_inequality[r] && !active[r]) continue;
+    for (int p = s.row_start[r]; p < s.row_start[r + 1]; ++p)
+      for (int q = s.row_start[r]; q < s.row_start[r + 1]; ++q)
+        if (s.column[q] >= s.column[p]) {
+          const int at = position(s.column[p], s.column[q]);
+          if (marked[size_t(at)]) matrix_.values[size_t(at)] += weight_[r] * s.value[p] * s.value[q];
+        }
+  }
+  values_set_ = active;
+}
+
+bool SparseContactSolver::refactorize_paths(const std::vector<char> &active, SparseContactResult &result) {
+  if (inverse_order_.empty() || factor_set_.size() != active.size() || values_set_.size() != active.size())
+    return false;
+  const std::vector<int> changed = columns_of_differing_rows(factor_set_, active);
+  if (changed.empty()) {
+    update_ = {}, factorized_ = active;
+    return true;
+  }
+  const double start = now();
+  set_values(active);
+  update_ = {}, factorized_.clear(), factor_set_.clear();
+  const bool done = cholesky_.refactorize_paths(matrix_, changed);
+  result.t_factor += now() - start;
+  if (!done) return false;
+  // Counted as a modification in place: its answers are refined the same way (a factorization
+  // afresh where the refinement stops short), and kMaxModifications of them in a row, the factor
+  // is computed afresh (the rows off the paths keep the round-off of modifications before).
+  factorized_ = factor_set_ = active;
+  modifications_++;
+  result.modifications++, result.path_refactorizations++;
   return true;
 }
 

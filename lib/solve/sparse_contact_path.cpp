@@ -712,10 +712,10 @@ bool Model::solve_sparse(std::vector<LoadSolve> &loads, std::vector<double> &lam
   progress(MC_LOG_PHASE,
            "active-set solve (sparse): %s, %d iterations, %d factorizations, %d factor updates, %d conjugate-gradient "
            "steps, residual %.3g, %.3g s (factorizations and updates %.3g s, solves %.3g s; %d of the updates "
-           "modified the factor in place)%s",
+           "modified the factor in place, %d of them by computing its rows on the changed paths afresh)%s",
            result.outcome == SparseContactOutcome::solved ? "solved" : "not converged", result.iterations,
            result.factorizations, result.updates + result.modifications, result.cg_steps, result.violation,
-           now() - start, result.t_factor, result.t_solve, result.modifications,
+           now() - start, result.t_factor, result.t_solve, result.modifications, result.path_refactorizations,
            split_solves_note(cs.solver.split_top_share(), threads_, cs.solver.split_factorizations()).c_str());
   if (result.outcome == SparseContactOutcome::modes_not_held) {
     const std::string unheld = unheld_modes_description();
