@@ -134,6 +134,7 @@ void SparseCholesky::factorize(const SymmetricCsc &a) {
   if (n_ == 0) return;
   if (!d.factor) fail(MC_ERROR_INTERNAL, "factorize before analyze");
   cholmod_sparse s = d.view(a);
+  d.modified.clear();
   {
     CholmodWithoutOpenMpTeam serial_openmp;
     if (d.factor->is_super && d.factor->xtype == CHOLMOD_PATTERN) {
@@ -167,6 +168,7 @@ void SparseCholesky::factorize_ordered(const SymmetricCsc &a_pp) {
   if (!d.factor || d.factor->is_super) fail(MC_ERROR_INTERNAL, "factorize_ordered without a simplicial analysis");
   if (a_pp.n != n_) fail(MC_ERROR_INTERNAL, "factorize_ordered: %d unknowns, the analysis has %d", a_pp.n, n_);
   cholmod_sparse s = d.view(a_pp);
+  d.modified.clear();
   factorize_rows(s);
   report_failed_pivot(a_pp.n);
 }
@@ -206,6 +208,7 @@ void SparseCholesky::keep_aside() {
   }
   if (d.aside) cholmod_free_factor(&d.aside, &d.common);
   d.aside = d.factor;
+  d.modified_aside = std::move(d.modified), d.modified.clear();
   d.factor = cholmod_copy_factor(d.symbolic, &d.common);
   if (!d.factor) std::swap(d.factor, d.aside);  // (nothing moved: the check below reports it)
   d.check("copying the analysis");
@@ -215,12 +218,16 @@ void SparseCholesky::swap_aside() {
   Impl &d = *impl_;
   if (!d.aside) fail(MC_ERROR_INTERNAL, "swap_aside without a factor aside");
   std::swap(d.factor, d.aside);
+  std::swap(d.modified, d.modified_aside);
 }
 
 void SparseCholesky::release_aside() {
   Impl &d = *impl_;
   if (d.aside) cholmod_free_factor(&d.aside, &d.common);
+  d.modified_aside.clear();
 }
+
+bool SparseCholesky::modified_in_place() const { return impl_->modified.count > 0; }
 
 bool SparseCholesky::supernodal() const { return impl_->factor && impl_->factor->is_super; }
 
@@ -277,6 +284,12 @@ bool SparseCholesky::modify(bool add, int k, const int *colptr, const int *rows,
     }
   }
   for (int j : visited) d.on_path[size_t(j)] = 0;
+  // The columns the modification changed: those on the paths from each of C's rows.
+  visited.clear();
+  for (int q = 0; q < nnz; ++q)
+    for (int j = i[size_t(q)]; j >= 0 && !d.on_path[size_t(j)]; j = d.parent[size_t(j)])
+      d.on_path[size_t(j)] = 1, visited.push_back(j);
+  for (int j : visited) d.on_path[size_t(j)] = 0, d.modified.mark(j, n_);
   return positive;
 }
 

@@ -50,13 +50,19 @@ public:
   bool modify(bool add, int k, const int *colptr, const int *rows, const double *values);
   // The factor of a matrix that differs from the factorized one in the columns `changed` (a's
   // numbering) only, by computing afresh the rows of L on their elimination-tree paths (no
-  // other row of L changes: a row depends on A's column and on its descendants' rows), from
+  // other row of L changes: a row depends on A's column and on its descendants' rows) and on
+  // those of the columns modified in place since the factorization (modified_in_place is then
+  // false: the factor is as a factorization of a_pp leaves it), from
   // a_pp as factorize_ordered takes it; LL^T or LDL^T as the factor is (simplicial only). What
   // it costs does not grow with the number of rows of C that changed, as a modification's
   // does: only with their paths' union (paths_entries). Returns false if the factor is not one
   // this can recompute or a pivot is not positive: then it is no factor, and the caller
   // factorizes afresh (sparse_cholesky_paths.cpp).
   bool refactorize_paths(const SymmetricCsc &a_pp, const std::vector<int> &changed);
+  // Whether a column of the factor was modified in place (modify) since its factorization and
+  // has not been computed afresh since (refactorize_paths computes a column afresh with its row:
+  // the column's rows are the row's ancestors, all on the paths).
+  bool modified_in_place() const;
   // The entries of L in the columns on those paths (HUGE_VAL where there is no simplicial factor).
   double paths_entries(const std::vector<int> &changed);
   bool supernodal() const;

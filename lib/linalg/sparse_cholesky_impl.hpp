@@ -62,6 +62,21 @@ struct SparseCholesky::Impl {
   // -1 at a root), and a marker per column.
   std::vector<int> inverse_perm, parent;
   std::vector<char> on_path;
+  // The columns of each factor (the one at hand, the one aside) modified in place since its
+  // numeric factorization and not computed afresh since (refactorize_paths), and their count:
+  // where none is, the factor is as a factorization leaves it.
+  struct Modified {
+    std::vector<char> column;
+    long count = 0;
+    void clear() { column.clear(), count = 0; }
+    void mark(int j, int n) {
+      if (column.empty()) column.assign(size_t(n), 0);
+      if (!column[size_t(j)]) column[size_t(j)] = 1, ++count;
+    }
+    void unmark(int j) {
+      if (!column.empty() && column[size_t(j)]) column[size_t(j)] = 0, --count;
+    }
+  } modified, modified_aside;
   // The split of a simplicial factor's solves over two threads, made at the first solve after an
   // analysis (subtree_solve.hpp); none (plan_made, no plan) where it would not pay.
   std::unique_ptr<SubtreeSolvePlan> plan;
@@ -69,7 +84,10 @@ struct SparseCholesky::Impl {
   // The workspace of the second thread's rows in a factorization by halves (its own: CHOLMOD's
   // workspace is per common), freed after each.
   cholmod_common second;
-  void forget_tree() { inverse_perm.clear(), parent.clear(), on_path.clear(), plan.reset(), plan_made = false; }
+  void forget_tree() {
+    inverse_perm.clear(), parent.clear(), on_path.clear(), plan.reset(), plan_made = false;
+    modified.clear(), modified_aside.clear();
+  }
   // The elimination tree of a simplicial numeric factor: each column's parent is its smallest
   // off-diagonal row. Every factor of one analysis shares it (their patterns are the analysis's:
   // an update or downdate of a row whose terms the analysed pattern holds adds no fill).

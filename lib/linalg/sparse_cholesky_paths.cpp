@@ -34,6 +34,11 @@ std::vector<int> SparseCholesky::changed_in_factor_order(const std::vector<int> 
   std::vector<int> start;
   start.reserve(changed.size());
   for (int c : changed) start.push_back(d.inverse_perm[size_t(c)]);
+  // And the columns modified in place since the factorization: computed afresh with the others
+  // (their paths share most of the changed columns' on a load history), so that the factor is
+  // then as a factorization leaves it.
+  for (size_t j = 0; d.modified.count > 0 && j < d.modified.column.size(); ++j)
+    if (d.modified.column[j]) start.push_back(int(j));
   return start;
 }
 
@@ -105,6 +110,7 @@ bool SparseCholesky::refactorize_paths(const SymmetricCsc &a_pp, const std::vect
       return false;
     }
     lx[lp[k]] = ll ? std::sqrt(pivot) : pivot;
+    d.modified.unmark(k);  // (its column is now all computed afresh: its rows are k's ancestors, in rows)
   }
   return true;
 }

@@ -304,11 +304,10 @@ bool SparseContactSolver::refactorize_paths(const std::vector<char> &active, Spa
   const bool done = cholesky_.refactorize_paths(matrix_, changed);
   result.t_factor += now() - start;
   if (!done) return false;
-  // Counted as a modification in place: its answers are refined the same way (a factorization
-  // afresh where the refinement stops short), and kMaxModifications of them in a row, the factor
-  // is computed afresh (the rows off the paths keep the round-off of modifications before).
+  // The columns modified in place before were computed afresh too: the factor is as a
+  // factorization leaves it (no drift to cap: on the load history no step factorizes for it).
   factorized_ = factor_set_ = active;
-  modifications_++;
+  modifications_ = cholesky_.modified_in_place() ? modifications_ + 1 : 0;
   result.modifications++, result.path_refactorizations++;
   return true;
 }
