@@ -2,8 +2,6 @@
 #include "support/error.hpp"
 #include "support/stopwatch.hpp"
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <pthread.h>
 #include <set>
@@ -173,9 +171,7 @@ double SparseContactSolver::solve_on_active_set(const std::vector<double> &load,
     return double(std::max(worst / std::max(largest, 1e-300L), gap_worst / std::max(gap_size, 1e-300L)));
   };
   std::vector<double> rf, rt;
-  double TR=now();
   double current = residuals(rf, rt);
-  if (getenv("TRACE")) fprintf(stderr,"TRACE   refine start: residual %.2e (residual %.3f s) cg so far %d\n",current,now()-TR,result.cg_steps);
   for (int step = 0; step < kMaxRefinements && current > kRoundOffResidual; ++step) {
     std::vector<double> dx(s.n_unknowns, 0.0), dl(nrows, 0.0);
     krylov(rf, rt, dx, dl, 0.0);
@@ -185,7 +181,6 @@ double SparseContactSolver::solve_on_active_set(const std::vector<double> &load,
     std::swap(x, x_new), std::swap(lambda, l_new);
     std::vector<double> rf_new, rt_new;
     const double refined = residuals(rf_new, rt_new);
-    if (getenv("TRACE")) fprintf(stderr,"TRACE   refine step %d: residual %.2e cg so far %d t %.3f\n",step,refined,result.cg_steps,now()-TR);
     if (!(refined < 0.5 * current)) {  // no gain: keep what we had
       std::swap(x, x_new), std::swap(lambda, l_new);
       break;
@@ -304,9 +299,7 @@ SparseContactResult SparseContactSolver::solve(const std::vector<double> &load, 
       result.cycled = it > 1;
       return result;
     }
-    double T0=now(); int f0=result.factorizations,u0=result.updates,m0=result.modifications,c0=result.cg_steps;
     if (factorized_ != active) factorize(active, result);
-    double T1=now();
     // The sets on the way are judged by the Krylov solve alone (the signs of forces and gaps,
     // far above its error); refined only a set that looks final, then judged again. On Hertz
     // forced onto this path refining every set took 86 of 125 CG steps.
@@ -325,7 +318,6 @@ SparseContactResult SparseContactSolver::solve(const std::vector<double> &load, 
       violation = complementarity(target, active, x, lambda, gap, violating, lambda_ref);
     }
     result.violation = violation;
-    if (getenv("TRACE")) fprintf(stderr,"TRACE it %d active %d viol %zu factor %.3f solve %.3f f%d u%d m%d cg%d\n",it,n_active,violating.size(),T1-T0,now()-T1,result.factorizations-f0,result.updates-u0,result.modifications-m0,result.cg_steps-c0);
     if (observe) observe({it, n_active, int(violating.size()), violation, true});
     if (violating.empty()) {
       judge_the_start();
