@@ -236,12 +236,7 @@ bool SparseCholesky::modify(bool add, int k, const int *colptr, const int *rows,
   if (n_ == 0 || k == 0) return true;
   if (!d.factor || d.factor->xtype == CHOLMOD_PATTERN) fail(MC_ERROR_INTERNAL, "modify before factorize");
   // CHOLMOD takes C in the factor's order (rows permuted by L->Perm), each column sorted.
-  if (d.inverse_perm.empty()) {
-    const int *perm = static_cast<const int *>(d.factor->Perm);
-    d.inverse_perm.resize(static_cast<size_t>(n_));
-    for (int i = 0; i < n_; ++i) d.inverse_perm[size_t(perm[i])] = i;
-  }
-  const std::vector<int> &inverse = d.inverse_perm;
+  const std::vector<int> &inverse = d.inverse_permutation(n_);
   const int nnz = colptr[k];
   std::vector<int> p(colptr, colptr + k + 1), i(static_cast<size_t>(nnz));
   std::vector<double> x(static_cast<size_t>(nnz));
@@ -265,31 +260,21 @@ bool SparseCholesky::modify(bool add, int k, const int *colptr, const int *rows,
   }
   d.check("update/downdate");
   // A simplicial LDL^T now: D is each column's first entry. Only the columns on the elimination-
-  // tree paths from each column of C's first row changed (an update or downdate walks them):
-  // their pivots are checked, not all n.
+  // tree paths from C's rows changed (an update or downdate walks them): their pivots are
+  // checked, not all n, and they are marked modified in place (refactorize_paths).
   const int *lp = static_cast<const int *>(d.factor->p);
   const double *lx = static_cast<const double *>(d.factor->x);
   d.elimination_tree();
   if (d.on_path.empty()) d.on_path.assign(static_cast<size_t>(n_), 0);
   std::vector<int> visited;
-  bool positive = true;
-  for (int c = 0; c < k && positive; ++c) {
-    if (p[size_t(c)] == p[size_t(c) + 1]) continue;
-    for (int j = i[size_t(p[size_t(c)])]; j >= 0 && !d.on_path[size_t(j)]; j = d.parent[size_t(j)]) {
-      d.on_path[size_t(j)] = 1, visited.push_back(j);
-      if (!(lx[lp[j]] > 0) || !std::isfinite(lx[lp[j]])) {
-        positive = false;
-        break;
-      }
-    }
-  }
-  for (int j : visited) d.on_path[size_t(j)] = 0;
-  // The columns the modification changed: those on the paths from each of C's rows.
-  visited.clear();
   for (int q = 0; q < nnz; ++q)
     for (int j = i[size_t(q)]; j >= 0 && !d.on_path[size_t(j)]; j = d.parent[size_t(j)])
       d.on_path[size_t(j)] = 1, visited.push_back(j);
-  for (int j : visited) d.on_path[size_t(j)] = 0, d.modified.mark(j, n_);
+  bool positive = true;
+  for (int j : visited) {
+    d.on_path[size_t(j)] = 0, d.modified.mark(j, n_);
+    positive = positive && lx[lp[j]] > 0 && std::isfinite(lx[lp[j]]);
+  }
   return positive;
 }
 

@@ -91,6 +91,15 @@ struct SparseCholesky::Impl {
   // The elimination tree of a simplicial numeric factor: each column's parent is its smallest
   // off-diagonal row. Every factor of one analysis shares it (their patterns are the analysis's:
   // an update or downdate of a row whose terms the analysed pattern holds adds no fill).
+  // The inverse of the factor's permutation (every factor of one analysis shares it).
+  const std::vector<int> &inverse_permutation(int n) {
+    if (inverse_perm.empty()) {
+      const int *perm = static_cast<const int *>(factor->Perm);
+      inverse_perm.resize(static_cast<size_t>(n));
+      for (int i = 0; i < n; ++i) inverse_perm[size_t(perm[i])] = i;
+    }
+    return inverse_perm;
+  }
   const std::vector<int> &elimination_tree() {
     if (!parent.empty()) return parent;
     const int n = int(factor->n);

@@ -26,14 +26,10 @@ std::vector<int> columns_on_paths(const std::vector<int> &parent, const std::vec
 
 std::vector<int> SparseCholesky::changed_in_factor_order(const std::vector<int> &changed) {
   Impl &d = *impl_;
-  if (d.inverse_perm.empty()) {
-    const int *perm = static_cast<const int *>(d.factor->Perm);
-    d.inverse_perm.resize(static_cast<size_t>(n_));
-    for (int i = 0; i < n_; ++i) d.inverse_perm[size_t(perm[i])] = i;
-  }
+  const std::vector<int> &inverse = d.inverse_permutation(n_);
   std::vector<int> start;
   start.reserve(changed.size());
-  for (int c : changed) start.push_back(d.inverse_perm[size_t(c)]);
+  for (int c : changed) start.push_back(inverse[size_t(c)]);
   // And the columns modified in place since the factorization: computed afresh with the others
   // (their paths share most of the changed columns' on a load history), so that the factor is
   // then as a factorization leaves it.

@@ -188,14 +188,14 @@ void SparseContactSolver::factorize(const std::vector<char> &active, SparseConta
     std::swap(factor_set_, aside_set_), std::swap(modifications_, aside_modifications_);
     update_ = {}, factorized_ = factor_set_;
   }
-  // A simplicial factor is modified in place (a few milliseconds for a few rows, against a solve
-  // per row for the low-rank update); a supernodal one is updated (sparse_factor_update.cpp).
-  // A simplicial factor in the matrix's order: the rows on the changed columns' paths computed
+  // A simplicial factor in the matrix's order: its rows on the changed columns' paths computed
   // afresh where that costs less than a modification (many rows changed, near each other: their
-  // paths share most of their columns), then a modification in place (a few rows), then the
-  // low-rank update (a supernodal factor); else a factorization.
-  if (paths_seconds(active) < modify_seconds(factor_set_, modifications_, active)) {
-    if (refactorize_paths(active, result)) return;
+  // paths share most of their columns); else modified in place (a few milliseconds for a few
+  // rows, against a solve per row for the low-rank update); a supernodal one is updated
+  // (sparse_factor_update.cpp); else a factorization.
+  std::vector<int> changed;
+  if (paths_seconds(active, changed) < modify_seconds(factor_set_, modifications_, active)) {
+    if (refactorize_paths(active, changed, result)) return;
     if (factor_set_.empty()) {  // (the factor was touched, and is no factor now)
       factorize_afresh(active, result);
       return;

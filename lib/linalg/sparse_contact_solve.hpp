@@ -135,14 +135,15 @@ private:
   bool update_from_factor(const std::vector<char> &active, SparseContactResult &result);
   void factorize_afresh(const std::vector<char> &active, SparseContactResult &result);  // never an update
   bool modify_factor(const std::vector<char> &active, SparseContactResult &result);
-  // H_P of `active` from the factor at hand, its rows on the paths of the columns that the
-  // differing rows touch computed afresh (SparseCholesky::refactorize_paths); matrix_'s values
-  // brought to `active` first. False: not done (the factor is then factorized afresh if it was
-  // touched).
-  bool refactorize_paths(const std::vector<char> &active, SparseContactResult &result);
+  // H_P of `active` from the factor at hand, its rows on the paths of the columns `changed` (those
+  // the differing rows touch, from paths_seconds) computed afresh (SparseCholesky::
+  // refactorize_paths); matrix_'s values brought to `active` first. False: not done (the factor
+  // is then factorized afresh if it was touched).
+  bool refactorize_paths(const std::vector<char> &active, const std::vector<int> &changed, SparseContactResult &result);
   // What refactorize_paths to `to` would take (seconds, kSecondsPerPathEntry), HUGE_VAL where it
-  // is not done or would cost more than half a factorization (as a modification).
-  double paths_seconds(const std::vector<char> &to);
+  // is not done, cannot cost less than a modification, or would cost more than half a
+  // factorization (as a modification); `changed`: the columns it recomputes from (else empty).
+  double paths_seconds(const std::vector<char> &to, std::vector<int> &changed);
   // The columns (unknowns) that the rows where `to` differs from `from` touch.
   std::vector<int> columns_of_differing_rows(const std::vector<char> &from, const std::vector<char> &to) const;
   // What modifying the factor of the rows `from` (modified `modifications` times since its

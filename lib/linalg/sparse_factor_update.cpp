@@ -105,11 +105,21 @@ bool SparseContactSolver::needs_factorization(const std::vector<char> &set) {
 // More rows apart than a low-rank update of from's factor would take (a modification's estimate
 // is no measure here: on the strips under a moving load, 320 rows estimated under half a
 // factorization took a whole one).
-double SparseContactSolver::paths_seconds(const std::vector<char> &to) {
+double SparseContactSolver::paths_seconds(const std::vector<char> &to, std::vector<int> &changed) {
+  changed.clear();
   if (inverse_order_.empty() || factor_set_.size() != to.size() || values_set_.size() != to.size() ||
-      !measured_costs() || cholesky_.supernodal() || modifications_ >= kMaxModifications)
+      !measured_costs() || cholesky_.supernodal())
     return HUGE_VAL;
-  const double seconds = cholesky_.paths_entries(columns_of_differing_rows(factor_set_, to)) * kSecondsPerPathEntry;
+  // The paths' union holds each differing row's own path, so it costs at least 1/k of a
+  // modification of those k rows (modify_seconds: the sum of their paths) times
+  // kSecondsPerPathEntry / kSecondsPerTouchedEntry: up to that many rows a modification costs
+  // less whatever the paths, and they are not walked (the few rows of most iterations).
+  const SparseContactStructure &s = *structure_;
+  int k = 0;
+  for (int r = 0; r < s.rows(); ++r) k += s.row_is_inequality[r] && bool(factor_set_[r]) != bool(to[r]);
+  if (k * kSecondsPerTouchedEntry <= kSecondsPerPathEntry) return HUGE_VAL;
+  changed = columns_of_differing_rows(factor_set_, to);
+  const double seconds = cholesky_.paths_entries(changed) * kSecondsPerPathEntry;
   return seconds <= kModifyShare * flops_ * kSecondsPerFlopSimplicial ? seconds : HUGE_VAL;
 }
 
@@ -290,10 +300,10 @@ void SparseContactSolver::set_values(const std::vector<char> &active) {
   values_set_ = active;
 }
 
-bool SparseContactSolver::refactorize_paths(const std::vector<char> &active, SparseContactResult &result) {
+bool SparseContactSolver::refactorize_paths(const std::vector<char> &active, const std::vector<int> &changed,
+                                            SparseContactResult &result) {
   if (inverse_order_.empty() || factor_set_.size() != active.size() || values_set_.size() != active.size())
     return false;
-  const std::vector<int> changed = columns_of_differing_rows(factor_set_, active);
   if (changed.empty()) {
     update_ = {}, factorized_ = active;
     return true;
