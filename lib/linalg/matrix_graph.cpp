@@ -86,33 +86,47 @@ std::vector<int> split_in_two(const MatrixGraph &g) {
   return part;
 }
 
-std::vector<int> elimination_tree(const SymmetricCsc &a, const int *perm) {
+SymbolicFactor::SymbolicFactor(const SymmetricCsc &a, const int *perm) {
   const int n = a.n;
   std::vector<int> position(static_cast<size_t>(n));
   for (int k = 0; k < n; ++k) position[size_t(perm[k])] = k;
-  // Each off-diagonal entry as (later, earlier) in the order, grouped by the later.
-  std::vector<int> start(size_t(n) + 1, 0);
+  // Each off-diagonal entry as (later, earlier) in the order, grouped by the later: row k of the
+  // ordered matrix's lower triangle.
+  start_.assign(size_t(n) + 1, 0);
   for (int j = 0; j < n; ++j)
     for (int p = a.colptr[j]; p < a.colptr[j + 1]; ++p)
-      if (a.rows[p] != j) ++start[size_t(std::max(position[size_t(j)], position[size_t(a.rows[p])])) + 1];
-  for (int k = 0; k < n; ++k) start[size_t(k) + 1] += start[size_t(k)];
-  std::vector<int> earlier(static_cast<size_t>(start[size_t(n)])), fill(start.begin(), start.end() - 1);
+      if (a.rows[p] != j) ++start_[size_t(std::max(position[size_t(j)], position[size_t(a.rows[p])])) + 1];
+  for (int k = 0; k < n; ++k) start_[size_t(k) + 1] += start_[size_t(k)];
+  earlier_.resize(static_cast<size_t>(start_[size_t(n)]));
+  std::vector<int> fill(start_.begin(), start_.end() - 1);
   for (int j = 0; j < n; ++j)
     for (int p = a.colptr[j]; p < a.colptr[j + 1]; ++p)
       if (a.rows[p] != j) {
         const int x = position[size_t(j)], y = position[size_t(a.rows[p])];
-        earlier[size_t(fill[size_t(std::max(x, y))]++)] = std::min(x, y);
+        earlier_[size_t(fill[size_t(std::max(x, y))]++)] = std::min(x, y);
       }
-  std::vector<int> parent(static_cast<size_t>(n), -1), ancestor(static_cast<size_t>(n), -1);
-  for (int k = 0; k < n; ++k)
-    for (int q = start[size_t(k)]; q < start[size_t(k) + 1]; ++q)
-      for (int r = earlier[size_t(q)]; r != -1 && r != k;) {
-        const int next = ancestor[size_t(r)];
-        ancestor[size_t(r)] = k;
+  parent.assign(static_cast<size_t>(n), -1);
+  count.assign(static_cast<size_t>(n), 1);  // the diagonal
+  ancestor_.assign(static_cast<size_t>(n), -1), mark_.assign(static_cast<size_t>(n), -1);
+}
+
+void SymbolicFactor::rows(int first, int last) {
+  for (int k = first; k < last; ++k) {
+    const int *begin = earlier_.data() + start_[size_t(k)], *end = earlier_.data() + start_[size_t(k) + 1];
+    // 1. Liu's algorithm: row k's entries make k the parent of the roots of their subtrees.
+    for (const int *q = begin; q < end; ++q)
+      for (int r = *q; r != -1 && r != k;) {
+        const int next = ancestor_[size_t(r)];
+        ancestor_[size_t(r)] = k;
         if (next == -1) parent[size_t(r)] = k;
         r = next;
       }
-  return parent;
+    // 2. Row k of L: the row subtree, the columns on the tree paths from row k's entries up to k
+    //    (each column below k has its parent by now). Each visited once per row: L(k, j) != 0.
+    mark_[size_t(k)] = k;
+    for (const int *q = begin; q < end; ++q)
+      for (int j = *q; mark_[size_t(j)] != k; j = parent[size_t(j)]) mark_[size_t(j)] = k, ++count[size_t(j)];
+  }
 }
 
 }  // namespace mc

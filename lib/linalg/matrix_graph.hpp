@@ -36,10 +36,21 @@ int pseudo_peripheral_node(const MatrixGraph &g, int seed, const std::vector<cha
 // when the separator would not leave each half a quarter of the nodes.
 std::vector<int> split_in_two(const MatrixGraph &g);
 
-// The elimination tree of the Cholesky factor of P A P^T (a: the upper triangle by columns; perm:
-// the order, perm[k] = the unknown eliminated k-th): each column's parent (-1 at a root), in
-// the factor's order (Liu's algorithm with path compression; O(nnz) memory for the pattern
-// sorted by the later of each entry's two positions).
-std::vector<int> elimination_tree(const SymmetricCsc &a, const int *perm);
+// The symbolic Cholesky factor of P A P^T (a: the upper triangle by columns; perm: the order,
+// perm[k] = the unknown eliminated k-th), in the factor's order: the elimination tree (each
+// column's parent, -1 at a root; Liu's algorithm with path compression) and the column counts of
+// L, the diagonal included (each row's subtree walked once: O(nnz(L)) time, O(nnz(A)) memory).
+// Made row by row: rows(first, last) once the rows its rows name are done, so that two ranges
+// whose rows name no column of the other (two halves of a split order) may run at once.
+class SymbolicFactor {
+ public:
+  SymbolicFactor(const SymmetricCsc &a, const int *perm);  // the ordered matrix's rows, nothing counted
+  void rows(int first, int last);
+  std::vector<int> parent, count;
+
+ private:
+  std::vector<int> start_, earlier_;  // row k's columns before k: earlier_[start_[k] .. start_[k + 1])
+  std::vector<int> ancestor_, mark_;
+};
 
 }  // namespace mc

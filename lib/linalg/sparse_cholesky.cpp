@@ -45,6 +45,7 @@ void SparseCholesky::analyze(const SymmetricCsc &a, const std::vector<int> &inte
   if (d.symbolic) cholmod_free_factor(&d.symbolic, &d.common);
   if (d.aside) cholmod_free_factor(&d.aside, &d.common);
   d.forget_tree();
+  d.counts_made_here = false;
   n_ = a.n;
   analyzed_ = true;
   split_factorizations_ = 0;

@@ -7,6 +7,7 @@
 // (design note "Solving the QP fast").
 #pragma once
 #include "bodies/assembly.hpp"
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -131,6 +132,7 @@ private:
   bool solve_by_subtrees(double *x) const;
   std::vector<int> order_in_halves(const SymmetricCsc &a, const std::vector<int> &part);
   bool analyze_in_halves(const SymmetricCsc &a);
+  void in_two_threads(const std::function<void()> &main, const std::function<void()> &second) const;
   void factorize_rows(cholmod_sparse_struct &upper);
   void report_failed_pivot(int n);
   std::vector<int> changed_in_factor_order(const std::vector<int> &changed);

@@ -81,6 +81,9 @@ struct SparseCholesky::Impl {
   // analysis (subtree_solve.hpp); none (plan_made, no plan) where it would not pay.
   std::unique_ptr<SubtreeSolvePlan> plan;
   bool plan_made = false;
+  // The symbolic factor was made by analyze_in_halves, not by cholmod_analyze: its column counts
+  // are checked at each factorization.
+  bool counts_made_here = false;
   // The workspace of the second thread's rows in a factorization by halves (its own: CHOLMOD's
   // workspace is per common), freed after each.
   cholmod_common second;

@@ -137,30 +137,47 @@ void SparseContactSolver::order_as_factor() {
         const int slot = next[size_t(std::max(a, b))]++;
         ordered.rows[size_t(slot)] = std::min(a, b), origin[size_t(slot)] = q;
       }
-    // 2. Each column sorted, and where each entry went.
-    std::vector<std::pair<int, int>> column;
-    for (int c = 0; c < n; ++c) {
-      column.clear();
-      for (int k = ordered.colptr[c]; k < ordered.colptr[c + 1]; ++k) column.emplace_back(ordered.rows[size_t(k)], origin[size_t(k)]);
-      std::sort(column.begin(), column.end());
-      for (size_t k = 0; k < column.size(); ++k) {
-        ordered.rows[size_t(ordered.colptr[c]) + k] = column[k].first;
-        where[size_t(column[k].second)] = ordered.colptr[c] + int(k);
-      }
-    }
+    // 2. Each column sorted, and where each entry went: the columns in two ranges of about as
+    //    many entries, one per thread.
+    const int middle = int(std::upper_bound(ordered.colptr.begin(), ordered.colptr.end(), ordered.colptr[size_t(n)] / 2) -
+                           ordered.colptr.begin()) - 1;
+    run_in_pairs(
+        [&](size_t part) {
+          std::vector<std::pair<int, int>> column;
+          for (int c = part == 0 ? 0 : middle; c < (part == 0 ? middle : n); ++c) {
+            column.clear();
+            for (int k = ordered.colptr[c]; k < ordered.colptr[c + 1]; ++k)
+              column.emplace_back(ordered.rows[size_t(k)], origin[size_t(k)]);
+            std::sort(column.begin(), column.end());
+            for (size_t k = 0; k < column.size(); ++k) {
+              ordered.rows[size_t(ordered.colptr[c]) + k] = column[k].first;
+              where[size_t(column[k].second)] = ordered.colptr[c] + int(k);
+            }
+          }
+        },
+        true);
   }
   // 3. H's entries, in the order add_blocks_of_h reads them: their places in the ordered pattern
-  //    (found by walking the block's column and the pattern's, both sorted).
-  for (size_t b = 0; b < s.blocks.size(); ++b) {
-    const int o = s.block_offset[b];
-    for (int c = 0; c < s.blocks[b].n; ++c) {
-      int at = matrix_.colptr[o + c];
-      s.blocks[b].for_each_in_column(c, [&](int i, double) {
-        while (matrix_.rows[size_t(at)] != o + i) ++at;
-        block_position_.push_back(where[size_t(at)]);
-      });
+  //    (found by walking the block's column and the pattern's, both sorted); each block's on a
+  //    thread of its own where there are two.
+  std::vector<std::vector<int>> positions(s.blocks.size());
+  auto place_blocks = [&](size_t first) {
+    for (size_t b = first; b < s.blocks.size(); b += 2) {
+      const int o = s.block_offset[b];
+      for (int c = 0; c < s.blocks[b].n; ++c) {
+        int at = matrix_.colptr[o + c];
+        s.blocks[b].for_each_in_column(c, [&](int i, double) {
+          while (matrix_.rows[size_t(at)] != o + i) ++at;
+          positions[b].push_back(where[size_t(at)]);
+        });
+      }
     }
-  }
+  };
+  run_in_pairs(place_blocks, s.blocks.size() > 1);
+  size_t total = 0;
+  for (const std::vector<int> &p : positions) total += p.size();
+  block_position_.reserve(total);
+  for (std::vector<int> &p : positions) block_position_.insert(block_position_.end(), p.begin(), p.end()), std::vector<int>().swap(p);
   block_position_.shrink_to_fit();
   ordered.values.assign(nnz, 0.0);
   matrix_ = std::move(ordered);

@@ -3,6 +3,7 @@
 #include "support/stopwatch.hpp"
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <pthread.h>
 #include <set>
 #include <system_error>
@@ -85,14 +86,31 @@ void SparseContactSolver::apply_dt(const std::vector<double> &y, std::vector<dou
 
 void SparseContactSolver::run_in_pairs(const std::function<void(size_t)> &task, bool worth_a_thread) const {
   if (threads_ > 1 && worth_a_thread) {
+    // What the second thread throws (an allocation that failed) is thrown here after the join.
+    std::exception_ptr failed;
+    std::thread second;
     try {
-      std::thread second(task, size_t(1));
+      second = std::thread([&] {
+        try {
+          task(1);
+        } catch (...) {
+          failed = std::current_exception();
+        }
+      });
+    } catch (const std::system_error &) {  // no thread to be had: in turn
+    }
+    if (second.joinable()) {
       // The library's second thread has one name wherever it runs (model.cpp's body threads).
       pthread_setname_np(second.native_handle(), "mc-body2");
-      task(0);
+      try {
+        task(0);
+      } catch (...) {
+        second.join();
+        throw;
+      }
       second.join();
+      if (failed) std::rethrow_exception(failed);
       return;
-    } catch (const std::system_error &) {  // no thread to be had: in turn
     }
   }
   task(0), task(1);
