@@ -245,18 +245,51 @@ void SparseContactSolver::add_blocks_of_h() {
       s.blocks[b].for_each_in_column(c, [&](int, double value) { matrix_.values[size_t(block_position_[k++])] += value; });
 }
 
-void SparseContactSolver::factorize_afresh(const std::vector<char> &active, SparseContactResult &result) {
-  const double start = now();
+// Each held row's c_r^T P_r c_r into matrix_'s values (H_P's other terms), rows in order, each
+// entry's term w_r c_ri c_rj with i before j in the unknowns' order (as set_values recomputes
+// them). In the factor's order the row's entries are sorted by their places there, so that the
+// places of a column's terms are found by one walk down that column (a search per term took
+// 0.04 s of a factorization on the strips at 16001 contact nodes).
+void SparseContactSolver::add_rows_terms(const std::vector<char> &active) {
   const SparseContactStructure &s = *structure_;
-  std::fill(matrix_.values.begin(), matrix_.values.end(), 0.0);
-  add_blocks_of_h();
+  if (inverse_order_.empty()) {
+    for (int r = 0; r < s.rows(); ++r) {
+      if (s.row_is_inequality[r] && !active[r]) continue;
+      for (int p = s.row_start[r]; p < s.row_start[r + 1]; ++p)
+        for (int q = s.row_start[r]; q < s.row_start[r + 1]; ++q)
+          if (s.column[q] >= s.column[p])
+            matrix_.values[size_t(position(s.column[p], s.column[q]))] += weight_[r] * s.value[p] * s.value[q];
+    }
+    return;
+  }
+  struct Term {
+    int place, column;  // in the factor's order, in the unknowns'
+    double value;
+    bool operator<(const Term &o) const { return place < o.place; }
+  };
+  std::vector<Term> row;
   for (int r = 0; r < s.rows(); ++r) {
     if (s.row_is_inequality[r] && !active[r]) continue;
+    row.clear();
     for (int p = s.row_start[r]; p < s.row_start[r + 1]; ++p)
-      for (int q = s.row_start[r]; q < s.row_start[r + 1]; ++q)
-        if (s.column[q] >= s.column[p])
-          matrix_.values[size_t(position(s.column[p], s.column[q]))] += weight_[r] * s.value[p] * s.value[q];
+      row.push_back({inverse_order_[size_t(s.column[p])], s.column[p], s.value[p]});
+    std::sort(row.begin(), row.end());
+    for (size_t b = 0; b < row.size(); ++b) {
+      int at = matrix_.colptr[row[b].place];
+      for (size_t a = 0; a <= b; ++a) {
+        while (matrix_.rows[size_t(at)] != row[a].place) ++at;
+        const Term &first = row[a].column <= row[b].column ? row[a] : row[b], &second = &first == &row[a] ? row[b] : row[a];
+        matrix_.values[size_t(at)] += weight_[r] * first.value * second.value;
+      }
+    }
   }
+}
+
+void SparseContactSolver::factorize_afresh(const std::vector<char> &active, SparseContactResult &result) {
+  const double start = now();
+  std::fill(matrix_.values.begin(), matrix_.values.end(), 0.0);
+  add_blocks_of_h();
+  add_rows_terms(active);
   // (Not over the factor of every row kept aside: a re-solve's restart, solve().)
   if (keep_aside_ && !factor_set_.empty() && measured_costs() && cholesky_.can_keep_aside() &&
       !aside_holds_every_row()) {

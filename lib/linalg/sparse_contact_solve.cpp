@@ -137,18 +137,19 @@ double SparseContactSolver::solve_on_active_set(const std::vector<double> &load,
   // solution of the stored system to about eps times its condition less (classical mixed-
   // precision refinement; docs/notes/interface-solver.md).
   auto residuals = [&](std::vector<double> &rf, std::vector<double> &rt) {
-    std::vector<long double> sum(s.n_unknowns, 0.0L), size(s.n_unknowns, 0.0L);
+    // (Each term's size is summed in double: it only scales the residual.)
+    std::vector<long double> sum(s.n_unknowns, 0.0L);
+    std::vector<double> size(s.n_unknowns, 0.0);
     for (int i = 0; i < s.n_unknowns; ++i) sum[i] = load[i], size[i] = std::fabs(load[i]);
     for (int r = 0; r < nrows; ++r)
       if (!s.row_is_inequality[r] || factorized_[r])
         for (int p = s.row_start[r]; p < s.row_start[r + 1]; ++p) {
-          const long double term = (long double)s.value[p] * lambda[r];
-          sum[s.column[p]] -= term, size[s.column[p]] += std::fabs(term);
+          sum[s.column[p]] -= (long double)s.value[p] * lambda[r], size[s.column[p]] += std::fabs(s.value[p] * lambda[r]);
         }
     for (const Coupling &c : coupling_)  // D_r = C_r + coefficient C_other
       for (int p = s.row_start[c.other]; p < s.row_start[c.other + 1]; ++p) {
         const long double term = (long double)c.coefficient * s.value[p] * lambda[c.row];
-        sum[s.column[p]] -= term, size[s.column[p]] += std::fabs(term);
+        sum[s.column[p]] -= term, size[s.column[p]] += double(std::fabs(term));
       }
     // H x, block by block: each block's unknowns are its own, so the odd blocks (body 2's) may
     // run on a second thread, each sum in the same order either way.
@@ -157,12 +158,8 @@ double SparseContactSolver::solve_on_active_set(const std::vector<double> &load,
         const int o = s.block_offset[b];
         for (int j = 0; j < s.blocks[b].n; ++j)
           s.blocks[b].for_each_in_column(j, [&](int i, double value) {
-            const long double a = (long double)value * x[o + j];
-            sum[o + i] -= a, size[o + i] += std::fabs(a);
-            if (i != j) {
-              const long double c = (long double)value * x[o + i];
-              sum[o + j] -= c, size[o + j] += std::fabs(c);
-            }
+            sum[o + i] -= (long double)value * x[o + j], size[o + i] += std::fabs(value * x[o + j]);
+            if (i != j) sum[o + j] -= (long double)value * x[o + i], size[o + j] += std::fabs(value * x[o + i]);
           });
       }
     };
@@ -171,7 +168,7 @@ double SparseContactSolver::solve_on_active_set(const std::vector<double> &load,
     long double worst = 0, largest = 0;
     for (int i = 0; i < s.n_unknowns; ++i) {
       rf[i] = double(sum[i]);
-      worst = std::max(worst, std::fabs(sum[i])), largest = std::max(largest, size[i]);
+      worst = std::max(worst, std::fabs(sum[i])), largest = std::max(largest, (long double)size[i]);
     }
     rt.assign(nrows, 0.0);
     long double gap_worst = 0, gap_size = 0;

@@ -194,6 +194,7 @@ private:
   void set_values(const std::vector<char> &active);  // matrix_'s values of `active` (refactorize_paths)
   std::vector<int> column_rows_start_, column_rows_;  // C by columns: each unknown's rows (set_values)
   void order_as_factor();
+  void add_rows_terms(const std::vector<char> &active);
   void add_blocks_of_h();
   std::vector<double> weight_;       // P, one per row
   SparseCholesky cholesky_;
