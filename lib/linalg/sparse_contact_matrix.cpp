@@ -31,14 +31,16 @@ void SparseContactSolver::analyze(const SparseContactStructure &s, int ordering)
   std::vector<int> block_of(n, -1);
   for (size_t b = 0; b < s.blocks.size(); ++b)
     for (int c = 0; c < s.blocks[b].n; ++c) block_of[s.block_offset[b] + c] = int(b);
-  std::vector<int> mark(n, -1);
   matrix_ = SymmetricCsc{};
   matrix_.n = n;
   matrix_.colptr.assign(n + 1, 0);
-  for (int pass = 0; pass < 2; ++pass) {
-    std::fill(mark.begin(), mark.end(), -1);
-    for (int j = 0; j < n; ++j) {
-      int top = matrix_.colptr[j];
+  // Columns [first, last) of a pass (0: each column's count into colptr[j + 1]; 1: its rows,
+  // sorted), with a marker of its own: the columns in two ranges of about as many unknowns, one
+  // per thread.
+  auto columns = [&](int pass, int first, int last) {
+    std::vector<int> mark(n, -1);
+    for (int j = first; j < last; ++j) {
+      int top = pass == 0 ? 0 : matrix_.colptr[j];
       auto keep = [&](int i) {
         if (mark[i] == j) return;
         mark[i] = j;
@@ -55,15 +57,18 @@ void SparseContactSolver::analyze(const SparseContactStructure &s, int ordering)
         for (int p = s.row_start[r]; p < s.row_start[r + 1]; ++p)
           if (s.column[p] <= j) keep(s.column[p]);
       }
-      if (pass == 0) matrix_.colptr[j + 1] = top - matrix_.colptr[j];
+      if (pass == 0) matrix_.colptr[j + 1] = top;
       else std::sort(matrix_.rows.begin() + matrix_.colptr[j], matrix_.rows.begin() + top);
     }
+  };
+  for (int pass = 0; pass < 2; ++pass) {
+    run_in_pairs([&](size_t part) { part == 0 ? columns(pass, 0, n / 2) : columns(pass, n / 2, n); }, true);
     if (pass == 0) {
       for (int j = 0; j < n; ++j) matrix_.colptr[j + 1] += matrix_.colptr[j];
       matrix_.rows.resize(size_t(matrix_.colptr[n]));
     }
   }
-  std::vector<int>().swap(ct_row), std::vector<int>().swap(mark), std::vector<int>().swap(block_of);
+  std::vector<int>().swap(ct_row), std::vector<int>().swap(block_of);
   matrix_.values.assign(matrix_.rows.size(), 0.0);
   // 2. H's diagonal, for P's weights.
   std::vector<double> diagonal(n, 0.0);
