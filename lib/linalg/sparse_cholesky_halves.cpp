@@ -129,19 +129,11 @@ std::vector<int> SparseCholesky::order_in_halves(const SymmetricCsc &a, const st
   };
   {
     CholmodWithoutOpenMpTeam serial_openmp;
-    bool ran = false;
-    if (threads_ > 1) try {
-        std::thread second([&] {
-          CholmodWithoutOpenMpTeam its_own;
-          order_half(1, &d.second);
-        });
-        pthread_setname_np(second.native_handle(), "mc-body2");
-        order_half(0, &d.common);
-        second.join();
-        ran = true;
-      } catch (const std::system_error &) {
-      }
-    if (!ran) order_half(0, &d.common), order_half(1, &d.second);
+    in_two_threads([&] { order_half(0, &d.common); },
+                   [&] {
+                     CholmodWithoutOpenMpTeam its_own;
+                     order_half(1, &d.second);
+                   });
   }
   cholmod_free_work(&d.second);
   if (d.second.status == CHOLMOD_OUT_OF_MEMORY) d.common.status = CHOLMOD_OUT_OF_MEMORY;
@@ -200,19 +192,11 @@ void SparseCholesky::factorize_rows(cholmod_sparse &upper) {
       for (const SubtreeSolvePlan::Range &r : d.plan->ranges(part))
         cholmod_rowfac(&upper, nullptr, beta, size_t(r.first), size_t(r.second), factor, common);
     };
-    bool ran = false;
-    try {
-      std::thread second([&] {
-        CholmodWithoutOpenMpTeam its_own;
-        rows_of(1, &half_one, &d.second);
-      });
-      pthread_setname_np(second.native_handle(), "mc-body2");
-      rows_of(0, f, &d.common);
-      second.join();
-      ran = true;
-    } catch (const std::system_error &) {
-    }
-    if (!ran) rows_of(0, f, &d.common), rows_of(1, &half_one, &d.second);
+    in_two_threads([&] { rows_of(0, f, &d.common); },
+                   [&] {
+                     CholmodWithoutOpenMpTeam its_own;
+                     rows_of(1, &half_one, &d.second);
+                   });
     f->minor = std::min(f->minor, half_one.minor);
     if (d.second.status == CHOLMOD_OUT_OF_MEMORY) d.common.status = CHOLMOD_OUT_OF_MEMORY;
     if (f->minor == size_t(n)) rows_of(2, f, &d.common);
