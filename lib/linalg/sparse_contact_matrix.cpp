@@ -62,7 +62,8 @@ void SparseContactSolver::analyze(const SparseContactStructure &s, int ordering)
     }
   };
   for (int pass = 0; pass < 2; ++pass) {
-    run_in_pairs([&](size_t part) { part == 0 ? columns(pass, 0, n / 2) : columns(pass, n / 2, n); }, true);
+    run_in_pairs([&](size_t part) { part == 0 ? columns(pass, 0, n / 2) : columns(pass, n / 2, n); },
+                 n >= kResidualThreadsFromUnknowns);
     if (pass == 0) {
       for (int j = 0; j < n; ++j) matrix_.colptr[j + 1] += matrix_.colptr[j];
       matrix_.rows.resize(size_t(matrix_.colptr[n]));
@@ -160,7 +161,7 @@ void SparseContactSolver::order_as_factor() {
             }
           }
         },
-        true);
+        n >= kResidualThreadsFromUnknowns);
   }
   // 3. H's entries, in the order add_blocks_of_h reads them: their places in the ordered pattern
   //    (found by walking the block's column and the pattern's, both sorted); each block's on a
@@ -178,7 +179,7 @@ void SparseContactSolver::order_as_factor() {
       }
     }
   };
-  run_in_pairs(place_blocks, s.blocks.size() > 1);
+  run_in_pairs(place_blocks, s.blocks.size() > 1 && n >= kResidualThreadsFromUnknowns);
   size_t total = 0;
   for (const std::vector<int> &p : positions) total += p.size();
   block_position_.reserve(total);

@@ -202,7 +202,8 @@ private:
   // task(0) and task(1): at once on two threads where threads_ allows and worth_a_thread, else
   // in turn (the tasks must not share what they write).
   void run_in_pairs(const std::function<void(size_t)> &task, bool worth_a_thread) const;
-  // The residuals' H x on two threads (a block each) from this many unknowns.
+  // The residuals' H x, and the analysis's pattern and placing of H_P, on two threads from this
+  // many unknowns.
   static constexpr int kResidualThreadsFromUnknowns = 20000;
   std::vector<char> factorized_;     // the active set H_P is of (empty: none)
   std::vector<char> factor_set_;     // the active set of the Cholesky factor (differs by update_)
