@@ -161,8 +161,12 @@ typedef struct job {
   int resolve;  /* also a re-solve after a load change (results of the re-solve) */
   int nx;       /* the strips' cells along their length (solve_strips; 0: 250) */
   int split;    /* what the strips' log said of the split (note_split_solves) */
+  int sparse;   /* Hertz: the sparse interface solver forced, its log read as the strips' */
+  int64_t ran;  /* Hertz: MC_INFO_INTERFACE_SOLVER after the (last) solve */
   results r;
 } job;
+
+static void note_split_solves(void *user, mc_log_level level, const char *message);
 
 static void *solve_hertz(void *arg) {
   job *j = arg;
@@ -170,6 +174,10 @@ static void *solve_hertz(void *arg) {
   j->r.status = MC_ERROR_INTERNAL;
   if (hertz_scene_build(&scene, j->h1, 1.37 * j->h1, 0)) return NULL;
   mc_model *m = hertz_model(&scene, j->method, j->threads);
+  if (j->sparse) {
+    mc_set_option_int(m, MC_OPTION_INTERFACE_SOLVER, MC_INTERFACE_SPARSE);
+    mc_set_log_callback(m, note_split_solves, &j->split);
+  }
   mc_int nodes[2] = {scene.body[0].n_nodes, scene.body[1].n_nodes}, cells[2] = {scene.body[0].n_cells, scene.body[1].n_cells};
   mc_status s = mc_solve(m);
   if (!s && j->resolve) {
@@ -181,6 +189,7 @@ static void *solve_hertz(void *arg) {
     free(t);
   }
   if (!s) s = read_results(m, nodes, cells, &j->r);
+  if (!s) s = mc_get_info_int(m, MC_INFO_INTERFACE_SOLVER, &j->ran);
   snprintf(j->r.message, sizeof j->r.message, "%s", mc_errmsg(m));
   j->r.status = s;
   mc_destroy(m);
@@ -344,6 +353,37 @@ START_TEST(split_solves_do_not_depend_on_threads) {
   }
   assert_same_results(&serial.r, &threaded.r, "split strips");
   results_free(&serial.r), results_free(&threaded.r);
+}
+END_TEST
+
+/* The same for a supernodal factor (lib/linalg/supernodal_solve.hpp): Hertz forced onto the
+   sparse path, whose H_P CHOLMOD factors supernodal; its solves split by subtrees of the
+   supernodal tree on one thread or two, a re-solve through low-rank updates of the factor too. */
+START_TEST(split_supernodal_solves_do_not_depend_on_threads) {
+  job serial = {.h1 = 0.01, .method = MC_METHOD_MORTAR, .threads = 1, .resolve = 1, .sparse = 1};
+  job threaded = serial;
+  threaded.threads = 2;
+  solve_hertz(&serial), solve_hertz(&threaded);
+  ck_assert_msg(serial.r.status == MC_OK && threaded.r.status == MC_OK, "%s / %s", serial.r.message, threaded.r.message);
+  ck_assert_msg(serial.split == 1 && threaded.split == 1, "the supernodal solves were not split (serial %d, threaded %d)",
+                serial.split, threaded.split);
+  /* (the sparse path's own answers: not the condensed path's, which takes over where the sparse
+     path's iteration fails) */
+  ck_assert_msg(serial.ran == MC_INTERFACE_SPARSE && threaded.ran == MC_INTERFACE_SPARSE,
+                "the sparse path handed over (serial ran %d, threaded %d)", (int)serial.ran, (int)threaded.ran);
+  assert_same_results(&serial.r, &threaded.r, "split supernodal Hertz");
+  /* and right: the condensed path's answer (its own factorizations and solves, CHOLMOD's) */
+  job condensed = {.h1 = 0.01, .method = MC_METHOD_MORTAR, .threads = 1, .resolve = 1};
+  solve_hertz(&condensed);
+  ck_assert_msg(condensed.r.status == MC_OK && condensed.r.n_contact == serial.r.n_contact, "%s", condensed.r.message);
+  double pmax = 0, dp = 0;
+  for (mc_int i = 0; i < serial.r.n_contact; ++i) pmax = fmax(pmax, fabs(condensed.r.pressure[i]));
+  for (mc_int i = 0; i < serial.r.n_contact; ++i) dp = fmax(dp, fabs(serial.r.pressure[i] - condensed.r.pressure[i]) / pmax);
+  const double du = relative_difference(serial.r.u[0], condensed.r.u[0], serial.r.n_u[0]);
+  printf("split supernodal Hertz (h1 = 0.01, re-solve): the same results on 1 and 2 threads; against the condensed "
+         "path: pressure %.2g, body 1's u %.2g (relative)\n", dp, du);
+  ck_assert_msg(dp <= 1e-9 && du <= 1e-9, "split supernodal Hertz against the condensed path: pressure %.3g, u %.3g", dp, du);
+  results_free(&serial.r), results_free(&threaded.r), results_free(&condensed.r);
 }
 END_TEST
 
@@ -585,6 +625,7 @@ int main(void) {
   tcase_add_test(tc, two_host_threads_match_serial);
   tcase_add_test(tc, threads_are_those_the_header_promises);
   tcase_add_test(tc, split_solves_do_not_depend_on_threads);
+  tcase_add_test(tc, split_supernodal_solves_do_not_depend_on_threads);
   tcase_add_test(tc, threads_stay_within_the_cores);
   tcase_add_test(tc, blas_count_is_one_through_a_two_thread_solve);
   tcase_add_test(tc, errors_on_body_threads_reach_the_caller);

@@ -81,10 +81,13 @@ public:
   std::vector<double> path_entries() const;
   // x <- A^-1 x, for nrhs right-hand sides stored one after the other (n each). A single one
   // with a simplicial factor of kSubtreeSolveFromEntries entries or more is solved by subtrees of
-  // the elimination tree (subtree_solve.hpp), on two threads when set_threads asks for them.
+  // the elimination tree (subtree_solve.hpp), on two threads when set_threads asks for them; with
+  // a supernodal one too where split_supernodal_solves() asked for it (supernodal_solve.hpp; the
+  // sparse path's H_P: a body's supernodal factor keeps CHOLMOD's solve).
   void solve(double *x, int nrhs = 1) const;
   // Threads a solve may use (1: the calling thread alone); the answer does not depend on it.
   void set_threads(int threads) { threads_ = threads; }
+  void split_supernodal_solves() { split_supernodal_ = true; }
   static constexpr double kSubtreeSolveFromEntries = 2e5;
   // Halves from as many unknowns as two bodies of the size from which MC_OPTION_THREADS = 0 gives
   // two threads (30000 each): below, one thread gains nothing from them and pays their fill (the
@@ -127,11 +130,13 @@ private:
   std::unique_ptr<Impl> impl_;
   int n_ = 0;
   int threads_ = 1;
+  bool split_supernodal_ = false;
   int split_factorizations_ = 0;
   bool analyzed_ = false;
   bool solve_by_subtrees(double *x) const;
   std::vector<int> order_in_halves(const SymmetricCsc &a, const std::vector<int> &part);
   bool analyze_in_halves(const SymmetricCsc &a);
+  bool solve_supernodal_by_subtrees(double *x) const;
   void in_two_threads(const std::function<void()> &main, const std::function<void()> &second) const;
   void factorize_rows(cholmod_sparse_struct &upper);
   void report_failed_pivot(int n);

@@ -223,7 +223,8 @@ void SparseCholesky::factorize_rows(cholmod_sparse &upper) {
 bool SparseCholesky::solve_by_subtrees(double *x) const {
   Impl &d = *impl_;
   const cholmod_factor *f = d.factor;
-  if (!f || f->is_super || f->xtype == CHOLMOD_PATTERN) return false;
+  if (!f || f->xtype == CHOLMOD_PATTERN) return false;
+  if (f->is_super) return solve_supernodal_by_subtrees(x);
   SimplicialFactor view;
   view.n = n_;
   view.p = static_cast<const int *>(f->p), view.i = static_cast<const int *>(f->i);
@@ -249,7 +250,40 @@ bool SparseCholesky::solve_by_subtrees(double *x) const {
   return true;
 }
 
+// A supernodal factor's solve split where split_supernodal_solves() asked for it (the sparse
+// path's H_P where CHOLMOD chose a supernodal factor), whatever the threads: its halves in turn on
+// one, so that the answer does not depend on MC_OPTION_THREADS.
+bool SparseCholesky::solve_supernodal_by_subtrees(double *x) const {
+  Impl &d = *impl_;
+  const cholmod_factor *f = d.factor;
+  if (!split_supernodal_) return false;
+  SupernodalFactor view;
+  view.n = n_, view.nsuper = int(f->nsuper);
+  view.super = static_cast<const int *>(f->super), view.pi = static_cast<const int *>(f->pi);
+  view.px = static_cast<const int *>(f->px), view.s_rows = static_cast<const int *>(f->s);
+  view.x = static_cast<const double *>(f->x);
+  if (!d.super_plan_made) {
+    d.super_plan_made = true;
+    if (double(d.common.lnz) >= kSubtreeSolveFromEntries) {
+      auto plan = std::make_unique<SupernodalSolvePlan>(view);
+      if (plan->worthwhile()) d.super_plan = std::move(plan);
+    }
+  }
+  if (!d.super_plan) return false;
+  const int *perm = static_cast<const int *>(f->Perm);
+  std::vector<double> y(static_cast<size_t>(n_));
+  for (int k = 0; k < n_; ++k) y[size_t(k)] = x[perm[k]];
+  d.super_plan->solve(view, y.data(), threads_ > 1);
+  for (int k = 0; k < n_; ++k) x[perm[k]] = y[size_t(k)];
+  return true;
+}
+
 double SparseCholesky::split_top_share() const {
+  if (impl_->factor && impl_->factor->is_super) {
+    if (!impl_->super_plan) return -1;
+    const SubtreeSolvePlan &p = impl_->super_plan->plan();
+    return p.top_entries() / std::max(1.0, p.top_entries() + p.half_entries(0) + p.half_entries(1));
+  }
   const SubtreeSolvePlan *plan = impl_->plan.get();
   if (!plan) return -1;
   return plan->top_entries() / std::max(1.0, plan->top_entries() + plan->half_entries(0) + plan->half_entries(1));

@@ -4,6 +4,7 @@
 #pragma once
 #include "linalg/sparse_cholesky.hpp"
 #include "linalg/subtree_solve.hpp"
+#include "linalg/supernodal_solve.hpp"
 #include "support/error.hpp"
 #include <cholmod.h>
 #include <cstring>
@@ -81,6 +82,10 @@ struct SparseCholesky::Impl {
   // analysis (subtree_solve.hpp); none (plan_made, no plan) where it would not pay.
   std::unique_ptr<SubtreeSolvePlan> plan;
   bool plan_made = false;
+  // The same for a supernodal factor (supernodal_solve.hpp), made at its first solve with two
+  // threads to split it over.
+  std::unique_ptr<SupernodalSolvePlan> super_plan;
+  bool super_plan_made = false;
   // The symbolic factor was made by analyze_in_halves, not by cholmod_analyze: its column counts
   // are checked at each factorization.
   bool counts_made_here = false;
@@ -88,6 +93,7 @@ struct SparseCholesky::Impl {
   // workspace is per common), freed after each.
   cholmod_common second;
   void forget_tree() {
+    super_plan.reset(), super_plan_made = false;
     inverse_perm.clear(), parent.clear(), on_path.clear(), plan.reset(), plan_made = false;
     modified.clear(), modified_aside.clear();
   }

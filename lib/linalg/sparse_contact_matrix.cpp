@@ -99,7 +99,8 @@ void SparseContactSolver::analyze(const SparseContactStructure &s, int ordering)
     else if (norm2 > 0) weight_[r] = kAugmentation * mean_diagonal / norm2;
     else weight_[r] = 1;  // an empty row: never coupled, never active
   }
-  // 4. Ordering and symbolic factorization.
+  // 4. Ordering and symbolic factorization; a supernodal factor's solves split too.
+  cholesky_.split_supernodal_solves();
   cholesky_.analyze(matrix_, {}, ordering, true);
   // 5. H_P kept in the factor's order where the factor is simplicial (factorize_ordered).
   order_as_factor();
